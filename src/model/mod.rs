@@ -1,0 +1,25 @@
+//! The physics of shared MODEL.md: coefficients and indices, one asperity, the
+//! load and area integrals, the separation solve, Archard wear, and the
+//! dimensional layer that ties them to a [`Scene`]. No I/O.
+
+pub mod asperity;
+pub mod coefficients;
+pub mod gauss;
+pub mod integrals;
+pub mod scaled;
+mod scene;
+pub mod sensitivity;
+pub mod separation;
+pub mod special;
+pub mod wear;
+
+pub use coefficients::{Coefficients, Transition};
+pub use integrals::{Integrals, Model, Quadrature};
+pub use scaled::Scaled;
+pub use scene::{Scene, WearArea};
+pub use sensitivity::{sensitivities, Sensitivity, SensitivityParameter};
+pub use separation::{
+    find_pull_off, landscape, pull_off_of, solve_separation, solve_separation_with, CriticalPoint,
+    Landscape, PullOff, SeparationOutcome,
+};
+pub use wear::{evaluate, Evaluation, EvaluationOptions, Indices, Regime, Status};

@@ -1,0 +1,55 @@
+//! The dimensional description of one contact (a "scene"), in SI units.
+
+use serde::Serialize;
+
+/// Which real area wears (paper eq. 13): all contacts, or only the plastic
+/// ("welded") junctions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum WearArea {
+    /// Every contact wears: `A_r` is the total real area.
+    #[default]
+    Total,
+    /// Only plastic junctions wear: `A_rp`.
+    Plastic,
+}
+
+/// One contact between a rough, softer body `a` and a counterface `b`.
+///
+/// All fields are SI. `f64::INFINITY` is allowed where a limit makes sense:
+/// `youngs_modulus_b` (a rigid counterface) and `hardness` (no plasticity).
+/// `work_of_adhesion = 0` means no adhesion. Construct through
+/// [`crate::problem`] to get validation; the model assumes a validated scene.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Scene {
+    /// E1, Young's modulus of the rough body a (Pa), > 0, finite.
+    pub youngs_modulus_a: f64,
+    /// ν1, Poisson ratio of body a, in (-1, 0.5].
+    pub poisson_ratio_a: f64,
+    /// E2, Young's modulus of the counterface b (Pa), > 0, may be +inf (rigid).
+    pub youngs_modulus_b: f64,
+    /// ν2, Poisson ratio of body b, in (-1, 0.5].
+    pub poisson_ratio_b: f64,
+    /// H, hardness of the softer body (Pa), > 0, may be +inf (no plasticity).
+    pub hardness: f64,
+    /// γ, work of adhesion (J/m² = N/m), ≥ 0 (0: no adhesion).
+    pub work_of_adhesion: f64,
+    /// Z0, equilibrium interatomic distance (m), > 0; only for the Tabor parameter.
+    pub interatomic_distance: f64,
+    /// σ, standard deviation of asperity heights (m), > 0.
+    pub sigma: f64,
+    /// R, asperity tip radius (m), > 0.
+    pub asperity_radius: f64,
+    /// N, asperities per unit nominal area (1/m²), > 0.
+    pub asperity_density: f64,
+    /// W, normal load (N); positive is compressive, negative pulls the bodies apart.
+    pub load: f64,
+    /// A_n, nominal contact area (m²), > 0.
+    pub nominal_area: f64,
+    /// L, sliding distance (m), ≥ 0.
+    pub sliding_distance: f64,
+    /// k, dimensionless Archard wear coefficient, ≥ 0.
+    pub wear_coefficient: f64,
+    /// Which real area wears.
+    pub wear_area: WearArea,
+}

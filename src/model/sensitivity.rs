@@ -1,0 +1,145 @@
+//! Sensitivities of the wear rate as elasticities `d ln(wear rate) / d ln x`,
+//! by central finite differences in ln x with Richardson extrapolation.
+//!
+//! Step rule: x → x·e^{±δ} and x·e^{±2δ}, δ = 1e-4. The evaluator is accurate to
+//! about η = 1e-13 relative, so the rounding error of a central difference is
+//! ≈ η/δ = 1e-9 while the truncation error is O(δ²) = 1e-8·|f'''|; Richardson's
+//! combination `D = D₁ + (D₁ - D₂)/3` removes the δ² term, and `|D₁ - D₂|/3 + 2η/δ`
+//! estimates what is left.
+
+use serde::Serialize;
+
+use super::scene::Scene;
+use super::wear::{evaluate, EvaluationOptions, Status};
+
+/// The relative step δ in ln x.
+pub const LOG_STEP: f64 = 1e-4;
+
+/// Relative accuracy assumed of one wear-rate evaluation in the error estimate.
+pub const EVALUATION_ACCURACY: f64 = 1e-13;
+
+/// A scene parameter the wear rate can be differentiated against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SensitivityParameter {
+    /// E1, Young's modulus of the rough body a.
+    YoungsModulus,
+    /// H.
+    Hardness,
+    /// γ.
+    WorkOfAdhesion,
+    /// σ.
+    Sigma,
+    /// R.
+    AsperityRadius,
+}
+
+impl SensitivityParameter {
+    /// All five, in report order.
+    pub const ALL: [SensitivityParameter; 5] = [
+        SensitivityParameter::YoungsModulus,
+        SensitivityParameter::Hardness,
+        SensitivityParameter::WorkOfAdhesion,
+        SensitivityParameter::Sigma,
+        SensitivityParameter::AsperityRadius,
+    ];
+
+    /// The problem-file key.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SensitivityParameter::YoungsModulus => "youngs_modulus",
+            SensitivityParameter::Hardness => "hardness",
+            SensitivityParameter::WorkOfAdhesion => "work_of_adhesion",
+            SensitivityParameter::Sigma => "sigma",
+            SensitivityParameter::AsperityRadius => "asperity_radius",
+        }
+    }
+
+    fn get(self, scene: &Scene) -> f64 {
+        match self {
+            SensitivityParameter::YoungsModulus => scene.youngs_modulus_a,
+            SensitivityParameter::Hardness => scene.hardness,
+            SensitivityParameter::WorkOfAdhesion => scene.work_of_adhesion,
+            SensitivityParameter::Sigma => scene.sigma,
+            SensitivityParameter::AsperityRadius => scene.asperity_radius,
+        }
+    }
+
+    fn set(self, scene: &mut Scene, value: f64) {
+        match self {
+            SensitivityParameter::YoungsModulus => scene.youngs_modulus_a = value,
+            SensitivityParameter::Hardness => scene.hardness = value,
+            SensitivityParameter::WorkOfAdhesion => scene.work_of_adhesion = value,
+            SensitivityParameter::Sigma => scene.sigma = value,
+            SensitivityParameter::AsperityRadius => scene.asperity_radius = value,
+        }
+    }
+}
+
+/// One elasticity with its error estimate, or the reason there is none.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Sensitivity {
+    /// Which parameter.
+    pub parameter: SensitivityParameter,
+    /// d ln(wear rate) / d ln x; None where it is not defined.
+    pub elasticity: Option<f64>,
+    /// Estimated absolute error of the elasticity.
+    pub error: Option<f64>,
+    /// Why there is no value, when there is none.
+    pub note: Option<String>,
+}
+
+/// The elasticities of the wear rate with respect to E1, H, γ, σ and R.
+pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensitivity> {
+    let options = EvaluationOptions {
+        pull_off: false,
+        quadrature,
+    };
+    let ln_wear = |sc: &Scene| -> Option<f64> {
+        let ev = evaluate(sc, &options);
+        (ev.status == Status::Ok && ev.log10_wear_rate.is_finite())
+            .then(|| ev.log10_wear_rate * std::f64::consts::LN_10)
+    };
+    let base_ok = ln_wear(scene).is_some();
+    SensitivityParameter::ALL
+        .iter()
+        .map(|&p| {
+            let x = p.get(scene);
+            let none = |why: &str| Sensitivity {
+                parameter: p,
+                elasticity: None,
+                error: None,
+                note: Some(why.to_string()),
+            };
+            if !base_ok {
+                return none("no wear at the scene (separated or zero wear)");
+            }
+            if x.is_infinite() {
+                return none("the parameter is infinite in this scene");
+            }
+            if x == 0.0 {
+                return none("the parameter is zero in this scene (its limit)");
+            }
+            let at = |j: f64| {
+                let mut sc = scene.clone();
+                p.set(&mut sc, x * (j * LOG_STEP).exp());
+                ln_wear(&sc)
+            };
+            match (at(1.0), at(-1.0), at(2.0), at(-2.0)) {
+                (Some(f1), Some(m1), Some(f2), Some(m2)) => {
+                    let d1 = (f1 - m1) / (2.0 * LOG_STEP);
+                    let d2 = (f2 - m2) / (4.0 * LOG_STEP);
+                    let value = d1 + (d1 - d2) / 3.0;
+                    let error = (d1 - d2).abs() / 3.0 + 2.0 * EVALUATION_ACCURACY / LOG_STEP;
+                    Sensitivity {
+                        parameter: p,
+                        elasticity: Some(value),
+                        error: Some(error),
+                        note: None,
+                    }
+                }
+                _ => none("the contact separates within the finite-difference step"),
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,523 @@
+//! The separation h for a given load, and the pull-off load of the rough surface
+//! (MODEL.md §4).
+//!
+//! Write the asperity load law as p(Δ) = p_c(Δ) + J·1[Δ > Δc], where p_c is
+//! continuous and increasing on the loading branch (p_c(0) = -c_a c_d/3 ≤ 0) and
+//! J is the load jump at the elastic–plastic transition. Then
+//!
+//! ```text
+//! P̄'(h)/φ(h) = -p_c(0) - ∫_0^∞ p_c'(x) e^{-hx-x²/2} dx - J e^{-hΔc-Δc²/2},   φ(h) = e^{-h²/2}
+//! ```
+//!
+//! The first two terms increase with h. When J ≥ 0 the last one does too, so
+//! P̄' changes sign at most once: P̄ falls to a single minimum (the pull-off, with
+//! adhesion) and then rises to 0⁻. Every load then has one root on the falling
+//! branch, and no scan is needed. When J < 0 (strong adhesion, soft asperities)
+//! the last term is a bump of width ~1 around h = -Δc that can add a local
+//! maximum and minimum; there the critical points are isolated by a sign scan of
+//! P̄' (step 1/8 across the bump, 1 elsewhere, on an interval outside which the
+//! sign of P̄' is proven), and roots are then found on monotone pieces.
+
+use std::cmp::Ordering;
+
+use super::integrals::{Integrals, Model};
+use super::scaled::Scaled;
+
+const MAX_EVALUATIONS: usize = 4000;
+
+/// How the separation solve ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SeparationOutcome {
+    /// An equilibrium at separation h (over σ) on the branch MODEL.md §4 names.
+    Contact {
+        /// h = d/σ.
+        separation: f64,
+        /// Model evaluations spent.
+        evaluations: usize,
+    },
+    /// The load pulls the surfaces apart: tensile beyond the pull-off, or any
+    /// non-compressive load without adhesion.
+    Separated {
+        /// Model evaluations spent.
+        evaluations: usize,
+    },
+    /// The search ran out of evaluations (not expected; reported, not hidden).
+    NotConverged {
+        /// The best estimate of h.
+        separation: f64,
+        /// Model evaluations spent.
+        evaluations: usize,
+    },
+}
+
+/// A critical point of P̄(h).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CriticalPoint {
+    /// Where P̄' = 0.
+    pub separation: f64,
+    /// P̄ there.
+    pub load: Scaled,
+    /// True for a local minimum, false for a local maximum.
+    pub is_minimum: bool,
+}
+
+/// The critical points of P̄(h), ascending in h. Between two of them (and
+/// beyond the ends) P̄ is monotone; far left it grows without bound.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Landscape {
+    /// The local extrema, ascending in h.
+    pub critical_points: Vec<CriticalPoint>,
+    /// Model evaluations spent finding them.
+    pub evaluations: usize,
+}
+
+/// The pull-off load of the rough surface: the most negative local minimum of P̄.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PullOff {
+    /// Where the minimum lies.
+    pub separation: f64,
+    /// P̄ there (negative; may be far below the smallest f64).
+    pub load: Scaled,
+    /// Model evaluations spent.
+    pub evaluations: usize,
+    /// How many local minima P̄ has.
+    pub local_minima: usize,
+}
+
+struct Counter<'a> {
+    model: &'a Model,
+    evaluations: usize,
+}
+
+impl Counter<'_> {
+    fn at(&mut self, h: f64) -> Integrals {
+        self.evaluations += 1;
+        self.model.at(h)
+    }
+}
+
+/// The sign-carrying mantissa of P̄'(h): continuous in h.
+fn slope(at: &Integrals) -> f64 {
+    at.dload_dh_elastic + at.dload_dh_plastic
+}
+
+/// The critical points of P̄ (see the module docs for the method).
+pub fn landscape(model: &Model) -> Landscape {
+    let mut ev = Counter {
+        model,
+        evaluations: 0,
+    };
+    let c = model.coefficients;
+    let jump = model.transition.jump;
+    if !c.has_adhesion() && jump >= 0.0 {
+        // P̄' < 0 everywhere: no critical point.
+        return Landscape {
+            critical_points: Vec::new(),
+            evaluations: 0,
+        };
+    }
+    // Right end: P̄' > 0 beyond the point where the increasing terms alone are
+    // positive, i.e. where P̄'/φ + (-J)⁺ e^{-hΔc-Δc²/2} > 0 … with J ≥ 0 simply P̄' > 0.
+    let dc = model.transition.critical_interference;
+    let neg_jump = (-jump).max(0.0);
+    let increasing_part = |at: &Integrals| -> f64 {
+        let h = at.separation;
+        // P̄'/φ(h) as Scaled, minus the decreasing bump term.
+        let f = Scaled::new(slope(at), at.scale_exponent - 0.5 * h * h);
+        let bump = if neg_jump > 0.0 {
+            Scaled::new(neg_jump, h * dc + 0.5 * dc * dc)
+        } else {
+            Scaled::ZERO
+        };
+        f.sub(bump).signum()
+    };
+    // The large-h expansion puts the minimum near h ≈ p'(0)/|p(0)| = (3/2) c_d^{-1/3}/c_a.
+    let guess = if c.has_adhesion() {
+        (1.5 / (c.c_d.cbrt() * c.c_a)).clamp(0.5, 1e6)
+    } else {
+        1.0
+    };
+    let mut right = ev.at(guess);
+    let mut step = guess.max(1.0);
+    while increasing_part(&right) <= 0.0 && ev.evaluations < MAX_EVALUATIONS {
+        right = ev.at(right.separation + step);
+        step *= 2.0;
+    }
+    // Left end: P̄' < 0 for every h below it.
+    let mut left_h = if neg_jump > 0.0 {
+        // For h ≤ -Δc: P̄' ≤ (|p(0)| + |J|) φ(u_c) - c_p √(π/2), negative once
+        // φ(u_c) < c_p √(π/2) / (|p(0)| + |J|).
+        let ratio = (-c.load_at_touch() + neg_jump) / (c.c_p * super::special::SQRT_HALF_PI);
+        let u_left = if ratio > 1.0 {
+            -(2.0 * ratio.ln()).sqrt()
+        } else {
+            0.0
+        };
+        (u_left - dc).min(right.separation - 1.0)
+    } else {
+        right.separation - step.max(1.0)
+    };
+    let mut left = ev.at(left_h);
+    let mut step = 1.0_f64;
+    while slope(&left) >= 0.0 && ev.evaluations < MAX_EVALUATIONS {
+        left_h -= step.max(0.25 * left_h.abs());
+        step *= 2.0;
+        left = ev.at(left_h);
+    }
+    // Sign changes of P̄' on [left, right].
+    let mut brackets: Vec<(Integrals, Integrals)> = Vec::new();
+    if neg_jump == 0.0 {
+        brackets.push((left, right));
+    } else {
+        let bump_lo = -dc - 9.0;
+        let bump_hi = -dc + 9.0;
+        let mut prev = left;
+        while prev.separation < right.separation && ev.evaluations < MAX_EVALUATIONS {
+            let h = prev.separation;
+            let fine = h >= bump_lo - 1.0 && h <= bump_hi;
+            let next_h = (h + if fine { 0.125 } else { 1.0 }).min(right.separation);
+            let next = if next_h == right.separation {
+                right
+            } else {
+                ev.at(next_h)
+            };
+            if (slope(&prev) < 0.0) != (slope(&next) < 0.0) {
+                brackets.push((prev, next));
+            }
+            prev = next;
+        }
+    }
+    let mut critical_points: Vec<CriticalPoint> = brackets
+        .into_iter()
+        .map(|(a, b)| {
+            let is_minimum = slope(&a) < 0.0;
+            let at = refine_critical(&mut ev, a, b);
+            CriticalPoint {
+                separation: at.separation,
+                load: at.load(),
+                is_minimum,
+            }
+        })
+        .collect();
+    critical_points.sort_by(|a, b| a.separation.total_cmp(&b.separation));
+    Landscape {
+        critical_points,
+        evaluations: ev.evaluations,
+    }
+}
+
+/// Zero of the slope mantissa in [a, b] (opposite signs at the ends): Illinois
+/// regula falsi, which keeps the bracket.
+fn refine_critical(ev: &mut Counter, a: Integrals, b: Integrals) -> Integrals {
+    let (mut xa, mut ga) = (a.separation, slope(&a));
+    let (mut xb, mut gb) = (b.separation, slope(&b));
+    let mut best = if ga.abs() < gb.abs() { a } else { b };
+    let mut side = 0;
+    for _ in 0..200 {
+        if xb - xa <= 4.0 * f64::EPSILON * xa.abs().max(xb.abs()).max(1.0) {
+            break;
+        }
+        let mut x = xb - gb * (xb - xa) / (gb - ga);
+        if !(x > xa && x < xb) {
+            x = 0.5 * (xa + xb);
+        }
+        let at = ev.at(x);
+        let gx = slope(&at);
+        if gx.abs() <= slope(&best).abs() {
+            best = at;
+        }
+        if gx == 0.0 {
+            break;
+        }
+        if (gx < 0.0) == (ga < 0.0) {
+            xa = x;
+            ga = gx;
+            if side == -1 {
+                gb *= 0.5;
+            }
+            side = -1;
+        } else {
+            xb = x;
+            gb = gx;
+            if side == 1 {
+                ga *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    best
+}
+
+/// The pull-off of the rough surface from its landscape: the most negative
+/// local minimum. None without adhesion (P̄ > 0 everywhere then).
+pub fn pull_off_of(landscape: &Landscape) -> Option<PullOff> {
+    let minima = landscape
+        .critical_points
+        .iter()
+        .filter(|c| c.is_minimum && c.load.signum() < 0.0);
+    let count = landscape
+        .critical_points
+        .iter()
+        .filter(|c| c.is_minimum)
+        .count();
+    minima
+        .fold(None::<&CriticalPoint>, |best, c| match best {
+            Some(b) if b.load.sub(c.load).signum() <= 0.0 => Some(b),
+            _ => Some(c),
+        })
+        .map(|c| PullOff {
+            separation: c.separation,
+            load: c.load,
+            evaluations: landscape.evaluations,
+            local_minima: count,
+        })
+}
+
+/// The pull-off of the rough surface (None without adhesion).
+pub fn find_pull_off(model: &Model) -> Option<PullOff> {
+    pull_off_of(&landscape(model))
+}
+
+/// The separation h at which P̄(h) equals `target`, by MODEL.md §4's rule:
+/// a compressive target takes the largest root; a tensile (or zero) one the
+/// largest root below the pull-off minimum; beyond the pull-off, `Separated`.
+pub fn solve_separation(model: &Model, target: f64) -> SeparationOutcome {
+    solve_separation_with(model, target, None)
+}
+
+/// As [`solve_separation`], reusing a landscape already computed for this model.
+pub fn solve_separation_with(
+    model: &Model,
+    target: f64,
+    known: Option<&Landscape>,
+) -> SeparationOutcome {
+    let mut ev = Counter {
+        model,
+        evaluations: 0,
+    };
+    let c = model.coefficients;
+    if target <= 0.0 && !c.has_adhesion() {
+        return SeparationOutcome::Separated { evaluations: 0 };
+    }
+    if target > 0.0 && model.transition.jump >= 0.0 {
+        // One falling branch carries every positive load: any h with P̄ < target
+        // bounds the root from above (module docs).
+        let mut h = if target < 1.0 {
+            (-2.0 * target.ln()).sqrt()
+        } else {
+            1.0 - (target / 2.0).powf(2.0 / 3.0)
+        };
+        let mut step = 1.0_f64;
+        let mut hi = ev.at(h);
+        while hi.load().cmp_f64(target) != Ordering::Less && ev.evaluations < MAX_EVALUATIONS {
+            h += step.max(0.25 * h.abs());
+            step *= 2.0;
+            hi = ev.at(h);
+        }
+        return bracket_and_solve(&mut ev, target, hi, None);
+    }
+    let computed;
+    let land = match known {
+        Some(l) => l,
+        None => {
+            computed = landscape(model);
+            ev.evaluations += computed.evaluations;
+            &computed
+        }
+    };
+    let cps = &land.critical_points;
+    // The largest h bound for the root: +∞ for a compressive target, the
+    // pull-off minimum for a tensile one.
+    let limit = if target > 0.0 {
+        cps.len()
+    } else {
+        match pull_off_of(land) {
+            None => {
+                return SeparationOutcome::Separated {
+                    evaluations: ev.evaluations,
+                }
+            }
+            Some(po) => {
+                if po.load.cmp_f64(target) == Ordering::Greater {
+                    return SeparationOutcome::Separated {
+                        evaluations: ev.evaluations,
+                    };
+                }
+                cps.iter()
+                    .position(|c| c.separation == po.separation)
+                    .unwrap_or(cps.len())
+            }
+        }
+    };
+    // Walk the monotone pieces from the right: piece i lies between critical
+    // points i-1 and i (piece 0 is unbounded on the left, piece len on the right).
+    for i in (0..=limit).rev() {
+        let right = if i < cps.len() { Some(cps[i]) } else { None };
+        let left = if i > 0 { Some(cps[i - 1]) } else { None };
+        let hi_load = right.map(|r| r.load);
+        let lo_load = left.map(|l| l.load);
+        // Does the target lie in the range of this monotone piece?
+        let below_right = hi_load.is_none_or(|l| l.cmp_f64(target) != Ordering::Greater);
+        let above_left = lo_load.is_none_or(|l| l.cmp_f64(target) != Ordering::Less);
+        // A piece falls from its left end to its right end when its right end is
+        // a minimum (or there is none and it is the far-left piece).
+        let falling = right.is_none_or(|r| r.is_minimum) && left.is_none_or(|l| !l.is_minimum);
+        if !falling {
+            // Rising pieces run from a minimum to a maximum (or to 0⁻ at +∞): a
+            // compressive target cannot lie there, since P̄ < 0 right of the
+            // last minimum … except between a compressive min and max.
+            if let (Some(l), Some(r)) = (left, right) {
+                let in_range = l.load.cmp_f64(target) != Ordering::Greater
+                    && r.load.cmp_f64(target) != Ordering::Less;
+                if in_range {
+                    let a = ev.at(l.separation);
+                    let b = ev.at(r.separation);
+                    return solve_in_bracket(&mut ev, target, b, a);
+                }
+            }
+            continue;
+        }
+        if below_right && above_left {
+            let hi = match right {
+                Some(r) => ev.at(r.separation),
+                None => ev.at(cps.last().map_or(0.0, |c| c.separation) + 1.0),
+            };
+            let lo = left.map(|l| ev.at(l.separation));
+            return bracket_and_solve(&mut ev, target, hi, lo);
+        }
+    }
+    SeparationOutcome::NotConverged {
+        separation: cps.first().map_or(0.0, |c| c.separation),
+        evaluations: ev.evaluations,
+    }
+}
+
+/// Given hi with P̄(hi) ≤ target on a falling piece (and optionally lo with
+/// P̄(lo) ≥ target), finds lo by stepping left if needed and solves.
+fn bracket_and_solve(
+    ev: &mut Counter,
+    target: f64,
+    hi: Integrals,
+    lo: Option<Integrals>,
+) -> SeparationOutcome {
+    let lo = match lo {
+        Some(lo) => lo,
+        None => {
+            let mut step = 1.0_f64;
+            let mut h = hi.separation;
+            loop {
+                // Newton from hi for a first guess, widened until it brackets.
+                let newton = newton_step(target, &hi).filter(|d| *d > 0.0 && d.is_finite());
+                let width = newton.map_or(step, |d| (1.25 * d).max(step * 1e-3).min(step));
+                h -= width.max(1e-3 * h.abs());
+                let at = ev.at(h);
+                if at.load().cmp_f64(target) != Ordering::Less || ev.evaluations >= MAX_EVALUATIONS
+                {
+                    break at;
+                }
+                step *= 2.0;
+            }
+        }
+    };
+    solve_in_bracket(ev, target, lo, hi)
+}
+
+/// The root of P̄ = target between `lo` (P̄ ≥ target) and `hi` (P̄ ≤ target) on a
+/// monotone piece (either order of h): safeguarded Newton (in ln P̄ where both
+/// are positive) with bisection, to a few ulps in h.
+fn solve_in_bracket(
+    ev: &mut Counter,
+    target: f64,
+    mut lo: Integrals,
+    mut hi: Integrals,
+) -> SeparationOutcome {
+    let mut last_gaps = [f64::INFINITY; 2];
+    loop {
+        let (a, b) = (lo.separation, hi.separation);
+        let gap = (b - a).abs();
+        let tol = 2.0 * f64::EPSILON * a.abs().max(b.abs()).max(1.0);
+        let done = |x: &Integrals| x.load().cmp_f64(target) == Ordering::Equal;
+        if gap <= 2.0 * tol || done(&lo) || done(&hi) {
+            let best = if miss(target, &lo) <= miss(target, &hi) {
+                lo
+            } else {
+                hi
+            };
+            return SeparationOutcome::Contact {
+                separation: best.separation,
+                evaluations: ev.evaluations,
+            };
+        }
+        if ev.evaluations >= MAX_EVALUATIONS {
+            return SeparationOutcome::NotConverged {
+                separation: 0.5 * (a + b),
+                evaluations: ev.evaluations,
+            };
+        }
+        let mid = 0.5 * (a + b);
+        let slow = gap > 0.5 * last_gaps[1];
+        last_gaps = [gap, last_gaps[0]];
+        let from = if miss(target, &lo) <= miss(target, &hi) {
+            &lo
+        } else {
+            &hi
+        };
+        let (min, max) = (a.min(b), a.max(b));
+        let x = match newton_step(target, from) {
+            Some(d) if !slow => {
+                let x = from.separation - d;
+                // Brent's rule: move at least `tol` off the current end.
+                if (x - from.separation).abs() < tol {
+                    from.separation + tol * (mid - from.separation).signum()
+                } else {
+                    x
+                }
+            }
+            _ => mid,
+        };
+        let x = if x > min && x < max { x } else { mid };
+        if x <= min || x >= max {
+            let best = if miss(target, &lo) <= miss(target, &hi) {
+                lo
+            } else {
+                hi
+            };
+            return SeparationOutcome::Contact {
+                separation: best.separation,
+                evaluations: ev.evaluations,
+            };
+        }
+        let at = ev.at(x);
+        if at.load().cmp_f64(target) == Ordering::Less {
+            hi = at;
+        } else {
+            lo = at;
+        }
+    }
+}
+
+/// How far a point's load is from the target (in ln terms when both are positive).
+fn miss(target: f64, at: &Integrals) -> f64 {
+    let l = at.load();
+    if target > 0.0 && l.signum() > 0.0 {
+        (l.ln_abs() - target.ln()).abs()
+    } else {
+        l.sub(Scaled::from_f64(target)).value().abs()
+    }
+}
+
+/// Newton's step `(P̄ - T)/P̄'` (in ln P̄ when both are positive, which is nearly
+/// quadratic in h where P̄ ~ e^{-h²/2}); None where it is meaningless.
+fn newton_step(target: f64, at: &Integrals) -> Option<f64> {
+    let load = at.load();
+    let slope = at.dload_dh();
+    if slope.mantissa == 0.0 {
+        return None;
+    }
+    let step = if target > 0.0 && load.signum() > 0.0 {
+        (load.ln_abs() - target.ln()) / slope.ratio(load)
+    } else {
+        load.sub(Scaled::from_f64(target)).ratio(slope)
+    };
+    step.is_finite().then_some(step)
+}

@@ -1,0 +1,121 @@
+//! Gaussian tail moments, the closed-form building blocks of MODEL.md §4.
+//!
+//! `T_n(u) = ∫_0^∞ x^n e^{-(u+x)²/2} dx` for n = 0, 1. Each is returned as a
+//! mantissa scaled by `e^{κ(u)}`, κ(u) = max(u, 0)²/2, so the functions stay
+//! representable for any u (they decay like `e^{-u²/2}` for large u).
+
+use std::f64::consts::{FRAC_1_SQRT_2, PI};
+
+/// √(π/2).
+pub const SQRT_HALF_PI: f64 = 1.253_314_137_315_500_3;
+
+/// The scale exponent κ(u) = max(u, 0)²/2 used throughout the model.
+#[inline]
+pub fn kappa(u: f64) -> f64 {
+    if u > 0.0 {
+        0.5 * u * u
+    } else {
+        0.0
+    }
+}
+
+/// `T_0(u) e^{κ(u)}`, where `T_0(u) = ∫_0^∞ e^{-(u+x)²/2} dx = √(π/2) erfc(u/√2)`.
+///
+/// Uses erfcx for u > 0 (no underflow, no cancellation) and erfc for u ≤ 0
+/// (where erfc(u/√2) lies in [1, 2)).
+#[inline]
+pub fn tail0(u: f64) -> f64 {
+    if u > 0.0 {
+        SQRT_HALF_PI * puruspe::erfcx(u * FRAC_1_SQRT_2)
+    } else {
+        SQRT_HALF_PI * puruspe::erfc(u * FRAC_1_SQRT_2)
+    }
+}
+
+/// Above this u, [`tail1`] uses its asymptotic series; below, `1 - u T_0`
+/// (whose cancellation costs at most u² ulps ≈ 3e-14 relative at u = 12).
+const TAIL1_SERIES_FROM: f64 = 12.0;
+
+/// `T_1(u) e^{κ(u)}`, where `T_1(u) = ∫_0^∞ x e^{-(u+x)²/2} dx = e^{-u²/2} - u T_0(u)`.
+///
+/// This is the non-dimensional real area Ā(h) = √(2π) F_1(h) of
+/// Greenwood–Williamson. For u ≥ 12 it sums the asymptotic series
+/// `Σ_k (-1)^k (2k+1)!! / u^{2k+2}`, whose truncation error after 20 terms is
+/// below 1e-18 relative there.
+#[inline]
+pub fn tail1(u: f64) -> f64 {
+    if u <= 0.0 {
+        (-0.5 * u * u).exp() - u * tail0(u)
+    } else if u < TAIL1_SERIES_FROM {
+        1.0 - u * tail0(u)
+    } else {
+        let r = 1.0 / (u * u);
+        // r(1 - 3r(1 - 5r(1 - 7r(…)))) by Horner, innermost term k = 20.
+        let mut inner = 1.0;
+        for k in (1..=20).rev() {
+            inner = 1.0 - (2 * k + 1) as f64 * r * inner;
+        }
+        r * inner
+    }
+}
+
+/// The Gaussian density without its normalisation, `e^{-u²/2}`, scaled by `e^{κ(u)}`.
+#[inline]
+pub fn gauss_scaled(u: f64) -> f64 {
+    if u > 0.0 {
+        1.0
+    } else {
+        (-0.5 * u * u).exp()
+    }
+}
+
+/// √(2π).
+pub const SQRT_TWO_PI: f64 = 2.506_628_274_631_000_7;
+
+/// Ensures the constants above are what their names say (checked in tests).
+pub fn constants_consistent() -> bool {
+    ((PI / 2.0).sqrt() - SQRT_HALF_PI).abs() < 1e-16 && ((2.0 * PI).sqrt() - SQRT_TWO_PI).abs() < 1e-15
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn constants() {
+        assert!(constants_consistent());
+    }
+
+    #[test]
+    fn tail0_at_zero_is_half_gaussian_mass() {
+        // T0(0) = √(π/2) exactly (half of ∫ e^{-x²/2}).
+        assert!((tail0(0.0) - SQRT_HALF_PI).abs() < 1e-16);
+        // T0(-∞) → √(2π).
+        assert!((tail0(-40.0) - SQRT_TWO_PI).abs() < 1e-15);
+    }
+
+    #[test]
+    fn tail1_series_matches_subtraction_at_the_switch() {
+        // Both forms are valid at u = 12; the subtraction loses ≈ u² ulps.
+        let u = TAIL1_SERIES_FROM;
+        let direct = 1.0 - u * tail0(u);
+        let series = {
+            let r = 1.0 / (u * u);
+            let mut s = 0.0;
+            let mut term = r;
+            for k in 0..30 {
+                s += term;
+                term *= -(2.0 * k as f64 + 3.0) * r;
+            }
+            s
+        };
+        assert!((tail1(u) / series - 1.0).abs() < 1e-15);
+        assert!((direct / series - 1.0).abs() < 1e-13);
+    }
+
+    #[test]
+    fn tail1_at_zero_is_one() {
+        // T1(0) = ∫ x e^{-x²/2} = 1.
+        assert!((tail1(0.0) - 1.0).abs() < 1e-16);
+    }
+}

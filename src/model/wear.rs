@@ -1,0 +1,379 @@
+//! The dimensional layer: from a [`Scene`] (SI) to indices, separation, real
+//! areas, contacts, pull-off and Archard wear (MODEL.md §1–3, eqs. 13, 15, 16).
+
+use std::f64::consts::PI;
+
+use serde::Serialize;
+
+use super::integrals::{Model, Quadrature};
+use super::scaled::Scaled;
+use super::scene::{Scene, WearArea};
+use super::separation::{landscape, pull_off_of, solve_separation_with, PullOff, SeparationOutcome};
+use super::special::SQRT_TWO_PI;
+use super::Coefficients;
+
+/// What an evaluation computes beyond the separation and areas.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EvaluationOptions {
+    /// Find the pull-off force (a search over h; skipped when false unless the
+    /// load is tensile, where the separation solve needs it anyway).
+    pub pull_off: bool,
+    /// Quadrature settings of the elastic integral.
+    pub quadrature: Quadrature,
+}
+
+impl Default for EvaluationOptions {
+    fn default() -> Self {
+        EvaluationOptions {
+            pull_off: true,
+            quadrature: Quadrature::default(),
+        }
+    }
+}
+
+/// The outcome of an evaluation: not an error in any case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// The surfaces are in contact at equilibrium under the load.
+    Ok,
+    /// The load pulls the surfaces apart: no equilibrium in contact.
+    Separated,
+    /// The separation search did not converge (reported, never hidden).
+    NotConverged,
+}
+
+impl Status {
+    /// The status word used in reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Ok => "ok",
+            Status::Separated => "separated",
+            Status::NotConverged => "not_converged",
+        }
+    }
+}
+
+/// The four dimensionless indices of MODEL.md §2.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Indices {
+    /// θ = K σ^{3/2} R^{1/2} / (γ R) (Fuller–Tabor); ∞ without adhesion.
+    pub elastic_adhesion_index: f64,
+    /// λ = π² R H⁴ σ / (18 K² γ²) (Johnson); ∞ without adhesion or plasticity.
+    pub plastic_adhesion_index: f64,
+    /// ψ = (E/H)(σ/R)^{1/2} (Greenwood–Williamson); 0 without plasticity.
+    pub plasticity_index: f64,
+    /// φ0 = (R γ² / (E² Z0³))^{1/3} (Tabor/Muller); 0 without adhesion.
+    pub tabor_parameter: f64,
+}
+
+/// Regime classification from the indices.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Regime {
+    /// "JKR" (φ0 > 3), "transition" (0.3 ≤ φ0 ≤ 3), "DMT" (φ0 < 0.3) or "none" (γ = 0).
+    pub adhesion_model: &'static str,
+    /// True when θ ≤ 10: adhesion matters for elastic asperities.
+    pub elastic_adhesion_matters: bool,
+    /// True when λ ≤ 0.125: adhesion matters for plastic asperities.
+    pub plastic_adhesion_matters: bool,
+    /// "elastic" (ψ < 0.6), "elastic-plastic" (0.6 ≤ ψ ≤ 1) or "plastic" (ψ > 1).
+    pub deformation: &'static str,
+}
+
+/// Everything one evaluation of a scene says, in SI units.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Evaluation {
+    /// ok, separated or not_converged.
+    pub status: Status,
+    /// Conditions the designer must know (outside the model's assumptions, …).
+    pub warnings: Vec<String>,
+    /// Informational remarks (regime, underflowed values, …).
+    pub notes: Vec<String>,
+    /// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹ (Pa).
+    pub equivalent_modulus: f64,
+    /// The indices θ, λ, ψ, φ0.
+    pub indices: Indices,
+    /// Regime classification.
+    pub regime: Regime,
+    /// Δc·σ: the actual interference at which an asperity turns plastic (m); ∞ without plasticity.
+    pub critical_interference: f64,
+    /// The force one unit of P̄ stands for over the nominal area: K N R^{1/2} σ^{3/2} A_n / √(2π) (N).
+    pub load_scale: f64,
+    /// P̄, the load in model units.
+    pub nondimensional_load: f64,
+    /// d, the mean-plane separation (m); None when separated.
+    pub separation: Option<f64>,
+    /// h = d/σ; None when separated.
+    pub nondimensional_separation: Option<f64>,
+    /// A_r = A_n π N R σ Ā / √(2π) (m²): every contact counted as πRδ (the paper's measure).
+    pub real_area: f64,
+    /// log10 of A_r (finite even where A_r underflows; -inf when there is no contact).
+    pub log10_real_area: f64,
+    /// Real area of elastic contacts (m²).
+    pub elastic_real_area: f64,
+    /// Real area of plastic junctions A_rp (m²).
+    pub plastic_real_area: f64,
+    /// A_r / A_n.
+    pub real_area_fraction: f64,
+    /// A_rp / A_r (0 when there is no contact).
+    pub plastic_area_fraction: f64,
+    /// Expected number of asperities in contact.
+    pub contact_count: f64,
+    /// Expected number of plastic junctions.
+    pub plastic_contact_count: f64,
+    /// W / A_r (Pa); None when there is no real area.
+    pub mean_real_pressure: Option<f64>,
+    /// Share of the load carried by elastic asperities (N).
+    pub elastic_load: f64,
+    /// Share of the load carried by plastic asperities (N).
+    pub plastic_load: f64,
+    /// Magnitude of the most tensile load the rough contact sustains (N); None when not computed.
+    pub pull_off_force: Option<f64>,
+    /// log10 of the pull-off force (finite even where it underflows).
+    pub log10_pull_off_force: Option<f64>,
+    /// The separation at pull-off (m).
+    pub pull_off_separation: Option<f64>,
+    /// The JKR pull-off of one asperity, 1.5πγR (N), for comparison.
+    pub asperity_pull_off_force: f64,
+    /// Which area wears.
+    pub wear_area: WearArea,
+    /// V = k A L (m³), eq. 13.
+    pub wear_volume: f64,
+    /// V/L = k A (m³/m).
+    pub wear_rate: f64,
+    /// log10 of the wear rate (finite even where it underflows; -inf without contact).
+    pub log10_wear_rate: f64,
+    /// Model evaluations the separation and pull-off searches spent.
+    pub evaluations: usize,
+}
+
+/// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹; E2 = ∞ is a rigid counterface.
+pub fn equivalent_modulus(scene: &Scene) -> f64 {
+    let compliance = |e: f64, nu: f64| if e.is_infinite() { 0.0 } else { (1.0 - nu * nu) / e };
+    1.0 / (compliance(scene.youngs_modulus_a, scene.poisson_ratio_a)
+        + compliance(scene.youngs_modulus_b, scene.poisson_ratio_b))
+}
+
+/// The load-law coefficients of a scene, computed directly (never via θ and λ)
+/// so that γ = 0 and H = ∞ are exact.
+pub fn coefficients(scene: &Scene) -> Coefficients {
+    let k = 4.0 / 3.0 * equivalent_modulus(scene);
+    let (r, s) = (scene.asperity_radius, scene.sigma);
+    // c_a² = 6π/θ = 6π γ R^{1/2} / (K σ^{3/2}).
+    let c_a = (6.0 * PI * scene.work_of_adhesion * r.sqrt() / (k * s * s.sqrt())).sqrt();
+    // c_h = π R^{1/2} H / (K σ^{1/2}).
+    let c_h = PI * r.sqrt() * scene.hardness / (k * s.sqrt());
+    Coefficients::new(c_a, c_h)
+}
+
+/// θ, λ, ψ, φ0 of a scene (logs where powers could overflow).
+pub fn indices(scene: &Scene) -> Indices {
+    let e = equivalent_modulus(scene);
+    let k = 4.0 / 3.0 * e;
+    let (r, s, g, h) = (
+        scene.asperity_radius,
+        scene.sigma,
+        scene.work_of_adhesion,
+        scene.hardness,
+    );
+    let z0 = scene.interatomic_distance;
+    let ln_lambda = 2.0 * PI.ln() + r.ln() + 4.0 * h.ln() + s.ln()
+        - 18f64.ln()
+        - 2.0 * k.ln()
+        - 2.0 * g.ln();
+    let ln_tabor = (r.ln() + 2.0 * g.ln() - 2.0 * e.ln() - 3.0 * z0.ln()) / 3.0;
+    Indices {
+        elastic_adhesion_index: k * s * s.sqrt() / (g * r.sqrt()),
+        plastic_adhesion_index: ln_lambda.exp(),
+        plasticity_index: (e / h) * (s / r).sqrt(),
+        tabor_parameter: ln_tabor.exp(),
+    }
+}
+
+fn regime(idx: &Indices, has_adhesion: bool) -> Regime {
+    let phi = idx.tabor_parameter;
+    Regime {
+        adhesion_model: if !has_adhesion {
+            "none"
+        } else if phi > 3.0 {
+            "JKR"
+        } else if phi >= 0.3 {
+            "transition"
+        } else {
+            "DMT"
+        },
+        elastic_adhesion_matters: idx.elastic_adhesion_index <= 10.0,
+        plastic_adhesion_matters: idx.plastic_adhesion_index <= 0.125,
+        deformation: if idx.plasticity_index < 0.6 {
+            "elastic"
+        } else if idx.plasticity_index <= 1.0 {
+            "elastic-plastic"
+        } else {
+            "plastic"
+        },
+    }
+}
+
+/// Evaluates a validated scene. Never fails: every outcome is a [`Status`].
+pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
+    let e = equivalent_modulus(scene);
+    let k = 4.0 / 3.0 * e;
+    let coeffs = coefficients(scene);
+    let model = Model::with_quadrature(coeffs, options.quadrature);
+    let idx = indices(scene);
+    let reg = regime(&idx, coeffs.has_adhesion());
+    let (r, s, n, an) = (
+        scene.asperity_radius,
+        scene.sigma,
+        scene.asperity_density,
+        scene.nominal_area,
+    );
+    let load_scale = k * n * r.sqrt() * s * s.sqrt() * an / SQRT_TWO_PI;
+    let area_scale = an * PI * n * r * s / SQRT_TWO_PI;
+    let count_scale = an * n / SQRT_TWO_PI;
+    let target = scene.load / load_scale;
+
+    let mut warnings = Vec::new();
+    let mut notes = Vec::new();
+    if coeffs.has_adhesion() && idx.tabor_parameter < 3.0 {
+        warnings.push(format!(
+            "Tabor parameter φ0 = {:.3} < 3: the elastic asperities are outside the JKR regime the model assumes ({} regime)",
+            idx.tabor_parameter,
+            if idx.tabor_parameter < 0.3 { "DMT" } else { "JKR–DMT transition" }
+        ));
+    }
+    if reg.elastic_adhesion_matters {
+        notes.push(format!(
+            "elastic adhesion index θ = {:.4} ≤ 10: adhesion matters for elastic asperities",
+            idx.elastic_adhesion_index
+        ));
+    }
+    if reg.plastic_adhesion_matters {
+        notes.push(format!(
+            "plastic adhesion index λ = {:.4} ≤ 0.125: adhesion matters for plastic asperities",
+            idx.plastic_adhesion_index
+        ));
+    }
+    if model.transition.jump < 0.0 {
+        notes.push(
+            "the load drops when an asperity turns plastic (λ^{3/2}/θ < 0.0098): the load–separation curve can have several branches; the one reached by loading is used"
+                .to_string(),
+        );
+    }
+
+    // The critical points of P̄(h): needed for the pull-off, for a tensile load,
+    // and where the load law jumps down (several branches).
+    let need_landscape = coeffs.has_adhesion()
+        && (options.pull_off || scene.load <= 0.0 || model.transition.jump < 0.0);
+    let land = need_landscape.then(|| landscape(&model));
+    let mut evaluations = land.as_ref().map_or(0, |l| l.evaluations);
+    let pull_off: Option<PullOff> = land.as_ref().and_then(pull_off_of);
+    let outcome = solve_separation_with(&model, target, land.as_ref());
+    let (status, h) = match outcome {
+        SeparationOutcome::Contact {
+            separation,
+            evaluations: ev,
+        } => {
+            evaluations += ev;
+            (Status::Ok, Some(separation))
+        }
+        SeparationOutcome::Separated { evaluations: ev } => {
+            evaluations += ev;
+            (Status::Separated, None)
+        }
+        SeparationOutcome::NotConverged {
+            separation,
+            evaluations: ev,
+        } => {
+            evaluations += ev;
+            warnings.push(format!(
+                "the separation search did not converge after {ev} evaluations; results are at the best estimate h = {separation:.6}"
+            ));
+            (Status::NotConverged, Some(separation))
+        }
+    };
+    if status == Status::Separated {
+        notes.push(if coeffs.has_adhesion() {
+            "the tensile load exceeds the pull-off force: the surfaces separate".to_string()
+        } else {
+            "without adhesion a load ≤ 0 cannot hold the surfaces in contact: they separate".to_string()
+        });
+    }
+
+    let (pull_off_force, log10_pull_off_force, pull_off_separation) = match &pull_off {
+        Some(p) if options.pull_off || scene.load <= 0.0 => {
+            let force = p.load.neg().scale(load_scale);
+            let value = force.value();
+            if value == 0.0 && force.mantissa != 0.0 {
+                notes.push(format!(
+                    "the pull-off force is below the smallest double: 10^{:.1} N; reported as 0",
+                    force.log10_abs()
+                ));
+            }
+            (Some(value.max(0.0)), Some(force.log10_abs()), Some(p.separation * s))
+        }
+        _ if !coeffs.has_adhesion() => (Some(0.0), None, None),
+        _ => (None, None, None),
+    };
+
+    let zero = Scaled::ZERO;
+    let at = h.map(|h| model.at(h));
+    let area = at.map_or(zero, |a| a.area());
+    let plastic_area = at.map_or(zero, |a| a.plastic_area());
+    let elastic_area = at.map_or(zero, |a| a.elastic_area());
+    let wear_area_scaled = match scene.wear_area {
+        WearArea::Total => area,
+        WearArea::Plastic => plastic_area,
+    }
+    .scale(area_scale * scene.wear_coefficient);
+    let real_area = area.scale(area_scale).value();
+    let plastic_real_area = plastic_area.scale(area_scale).value();
+    let wear_rate = wear_area_scaled.value();
+    if at.is_some() && real_area == 0.0 && area.mantissa != 0.0 {
+        notes.push(format!(
+            "the real area is below the smallest double: 10^{:.1} m²; reported as 0",
+            area.scale(area_scale).log10_abs()
+        ));
+    }
+    Evaluation {
+        status,
+        warnings,
+        notes,
+        equivalent_modulus: e,
+        indices: idx,
+        regime: reg,
+        critical_interference: model.critical_interference() * s,
+        load_scale,
+        nondimensional_load: target,
+        separation: h.map(|h| h * s),
+        nondimensional_separation: h,
+        real_area,
+        log10_real_area: area.scale(area_scale).log10_abs(),
+        elastic_real_area: elastic_area.scale(area_scale).value(),
+        plastic_real_area,
+        real_area_fraction: real_area / an,
+        plastic_area_fraction: if area.mantissa > 0.0 {
+            plastic_area.ratio(area)
+        } else {
+            0.0
+        },
+        contact_count: at.map_or(0.0, |a| a.contacts().scale(count_scale).value()),
+        plastic_contact_count: at.map_or(0.0, |a| a.plastic_contacts().scale(count_scale).value()),
+        mean_real_pressure: (real_area > 0.0).then(|| scene.load / real_area),
+        elastic_load: at.map_or(0.0, |a| {
+            Scaled::new(a.load_elastic, a.scale_exponent).scale(load_scale).value()
+        }),
+        plastic_load: at.map_or(0.0, |a| {
+            Scaled::new(a.load_plastic, a.scale_exponent).scale(load_scale).value()
+        }),
+        pull_off_force,
+        log10_pull_off_force,
+        pull_off_separation,
+        asperity_pull_off_force: 1.5 * PI * scene.work_of_adhesion * r,
+        wear_area: scene.wear_area,
+        wear_volume: wear_rate * scene.sliding_distance,
+        wear_rate,
+        log10_wear_rate: wear_area_scaled.log10_abs(),
+        evaluations,
+    }
+}
