@@ -70,7 +70,11 @@ mod tests {
         for &n in &ORDERS {
             let r = rule(n);
             for k in 0..(2 * n) {
-                let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
+                let exact = if k % 2 == 0 {
+                    2.0 / (k as f64 + 1.0)
+                } else {
+                    0.0
+                };
                 let got: f64 = r
                     .nodes
                     .iter()

@@ -61,7 +61,7 @@ impl Scaled {
     }
 
     /// The sum, kept at the larger of the two scales.
-    pub fn add(self, other: Scaled) -> Scaled {
+    pub fn plus(self, other: Scaled) -> Scaled {
         if self.mantissa == 0.0 {
             return other;
         }
@@ -76,12 +76,12 @@ impl Scaled {
     }
 
     /// The difference.
-    pub fn sub(self, other: Scaled) -> Scaled {
-        self.add(other.neg())
+    pub fn minus(self, other: Scaled) -> Scaled {
+        self.plus(other.negate())
     }
 
     /// The negation.
-    pub fn neg(self) -> Scaled {
+    pub fn negate(self) -> Scaled {
         Scaled::new(-self.mantissa, self.exponent)
     }
 
@@ -128,13 +128,13 @@ mod tests {
         // e^{-1000} + 2 e^{-1001}: both underflow as f64, the sum keeps its log.
         let a = Scaled::new(1.0, 1000.0);
         let b = Scaled::new(2.0, 1001.0);
-        let s = a.add(b);
+        let s = a.plus(b);
         let expected = (1.0 + 2.0 * (-1.0f64).exp()).ln() - 1000.0;
         assert!((s.ln_abs() - expected).abs() < 1e-12);
         assert_eq!(s.value(), 0.0);
         assert!((a.ratio(b) - 0.5 * 1f64.exp()).abs() < 1e-14);
         assert_eq!(a.cmp_f64(0.0), Ordering::Greater);
-        assert_eq!(a.neg().cmp_f64(-1e-300), Ordering::Greater);
+        assert_eq!(a.negate().cmp_f64(-1e-300), Ordering::Greater);
         assert_eq!(Scaled::new(3.0, 0.0).cmp_f64(2.0), Ordering::Greater);
         assert_eq!(Scaled::new(-3.0, 0.0).cmp_f64(-2.0), Ordering::Less);
         assert_eq!(Scaled::ZERO.cmp_f64(-1.0), Ordering::Greater);

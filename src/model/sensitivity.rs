@@ -98,7 +98,7 @@ pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensit
     let ln_wear = |sc: &Scene| -> Option<f64> {
         let ev = evaluate(sc, &options);
         (ev.status == Status::Ok && ev.log10_wear_rate.is_finite())
-            .then(|| ev.log10_wear_rate * std::f64::consts::LN_10)
+            .then_some(ev.log10_wear_rate * std::f64::consts::LN_10)
     };
     let base_ok = ln_wear(scene).is_some();
     SensitivityParameter::ALL

@@ -129,7 +129,7 @@ pub fn landscape(model: &Model) -> Landscape {
         } else {
             Scaled::ZERO
         };
-        f.sub(bump).signum()
+        f.minus(bump).signum()
     };
     // The large-h expansion puts the minimum near h ≈ p'(0)/|p(0)| = (3/2) c_d^{-1/3}/c_a.
     let guess = if c.has_adhesion() {
@@ -262,7 +262,7 @@ pub fn pull_off_of(landscape: &Landscape) -> Option<PullOff> {
         .count();
     minima
         .fold(None::<&CriticalPoint>, |best, c| match best {
-            Some(b) if b.load.sub(c.load).signum() <= 0.0 => Some(b),
+            Some(b) if b.load.minus(c.load).signum() <= 0.0 => Some(b),
             _ => Some(c),
         })
         .map(|c| PullOff {
@@ -502,7 +502,7 @@ fn miss(target: f64, at: &Integrals) -> f64 {
     if target > 0.0 && l.signum() > 0.0 {
         (l.ln_abs() - target.ln()).abs()
     } else {
-        l.sub(Scaled::from_f64(target)).value().abs()
+        l.minus(Scaled::from_f64(target)).value().abs()
     }
 }
 
@@ -517,7 +517,7 @@ fn newton_step(target: f64, at: &Integrals) -> Option<f64> {
     let step = if target > 0.0 && load.signum() > 0.0 {
         (load.ln_abs() - target.ln()) / slope.ratio(load)
     } else {
-        load.sub(Scaled::from_f64(target)).ratio(slope)
+        load.minus(Scaled::from_f64(target)).ratio(slope)
     };
     step.is_finite().then_some(step)
 }

@@ -7,7 +7,7 @@
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
 /// √(π/2).
-pub const SQRT_HALF_PI: f64 = 1.253_314_137_315_500_3;
+pub const SQRT_HALF_PI: f64 = 1.253_314_137_315_500_1;
 
 /// The scale exponent κ(u) = max(u, 0)²/2 used throughout the model.
 #[inline]
@@ -70,11 +70,12 @@ pub fn gauss_scaled(u: f64) -> f64 {
 }
 
 /// √(2π).
-pub const SQRT_TWO_PI: f64 = 2.506_628_274_631_000_7;
+pub const SQRT_TWO_PI: f64 = 2.506_628_274_631_000_2;
 
 /// Ensures the constants above are what their names say (checked in tests).
 pub fn constants_consistent() -> bool {
-    ((PI / 2.0).sqrt() - SQRT_HALF_PI).abs() < 1e-16 && ((2.0 * PI).sqrt() - SQRT_TWO_PI).abs() < 1e-15
+    ((PI / 2.0).sqrt() - SQRT_HALF_PI).abs() < 1e-16
+        && ((2.0 * PI).sqrt() - SQRT_TWO_PI).abs() < 1e-15
 }
 
 #[cfg(test)]

@@ -8,7 +8,9 @@ use serde::Serialize;
 use super::integrals::{Model, Quadrature};
 use super::scaled::Scaled;
 use super::scene::{Scene, WearArea};
-use super::separation::{landscape, pull_off_of, solve_separation_with, PullOff, SeparationOutcome};
+use super::separation::{
+    landscape, pull_off_of, solve_separation_with, PullOff, SeparationOutcome,
+};
 use super::special::SQRT_TWO_PI;
 use super::Coefficients;
 
@@ -149,7 +151,13 @@ pub struct Evaluation {
 
 /// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹; E2 = ∞ is a rigid counterface.
 pub fn equivalent_modulus(scene: &Scene) -> f64 {
-    let compliance = |e: f64, nu: f64| if e.is_infinite() { 0.0 } else { (1.0 - nu * nu) / e };
+    let compliance = |e: f64, nu: f64| {
+        if e.is_infinite() {
+            0.0
+        } else {
+            (1.0 - nu * nu) / e
+        }
+    };
     1.0 / (compliance(scene.youngs_modulus_a, scene.poisson_ratio_a)
         + compliance(scene.youngs_modulus_b, scene.poisson_ratio_b))
 }
@@ -177,10 +185,8 @@ pub fn indices(scene: &Scene) -> Indices {
         scene.hardness,
     );
     let z0 = scene.interatomic_distance;
-    let ln_lambda = 2.0 * PI.ln() + r.ln() + 4.0 * h.ln() + s.ln()
-        - 18f64.ln()
-        - 2.0 * k.ln()
-        - 2.0 * g.ln();
+    let ln_lambda =
+        2.0 * PI.ln() + r.ln() + 4.0 * h.ln() + s.ln() - 18f64.ln() - 2.0 * k.ln() - 2.0 * g.ln();
     let ln_tabor = (r.ln() + 2.0 * g.ln() - 2.0 * e.ln() - 3.0 * z0.ln()) / 3.0;
     Indices {
         elastic_adhesion_index: k * s * s.sqrt() / (g * r.sqrt()),
@@ -296,13 +302,14 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
         notes.push(if coeffs.has_adhesion() {
             "the tensile load exceeds the pull-off force: the surfaces separate".to_string()
         } else {
-            "without adhesion a load ≤ 0 cannot hold the surfaces in contact: they separate".to_string()
+            "without adhesion a load ≤ 0 cannot hold the surfaces in contact: they separate"
+                .to_string()
         });
     }
 
     let (pull_off_force, log10_pull_off_force, pull_off_separation) = match &pull_off {
         Some(p) if options.pull_off || scene.load <= 0.0 => {
-            let force = p.load.neg().scale(load_scale);
+            let force = p.load.negate().scale(load_scale);
             let value = force.value();
             if value == 0.0 && force.mantissa != 0.0 {
                 notes.push(format!(
@@ -310,7 +317,11 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
                     force.log10_abs()
                 ));
             }
-            (Some(value.max(0.0)), Some(force.log10_abs()), Some(p.separation * s))
+            (
+                Some(value.max(0.0)),
+                Some(force.log10_abs()),
+                Some(p.separation * s),
+            )
         }
         _ if !coeffs.has_adhesion() => (Some(0.0), None, None),
         _ => (None, None, None),
@@ -361,10 +372,14 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
         plastic_contact_count: at.map_or(0.0, |a| a.plastic_contacts().scale(count_scale).value()),
         mean_real_pressure: (real_area > 0.0).then(|| scene.load / real_area),
         elastic_load: at.map_or(0.0, |a| {
-            Scaled::new(a.load_elastic, a.scale_exponent).scale(load_scale).value()
+            Scaled::new(a.load_elastic, a.scale_exponent)
+                .scale(load_scale)
+                .value()
         }),
         plastic_load: at.map_or(0.0, |a| {
-            Scaled::new(a.load_plastic, a.scale_exponent).scale(load_scale).value()
+            Scaled::new(a.load_plastic, a.scale_exponent)
+                .scale(load_scale)
+                .value()
         }),
         pull_off_force,
         log10_pull_off_force,

@@ -1,0 +1,240 @@
+//! The command line: clap definitions and the wiring of problem → model → report.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::{bail, Result};
+use clap::{Parser, Subcommand, ValueEnum};
+
+use wearopt::model::{self, Coefficients, EvaluationOptions, Model, Quadrature, Status};
+use wearopt::report;
+
+/// Adhesive wear of rough micro-contacts (MEMS gears and hinges, NEMS switches,
+/// storage heads): evaluate the rough-surface adhesion model on a problem file.
+#[derive(Debug, Parser)]
+#[command(name = "wearopt", version, about, long_about = None)]
+#[command(
+    after_help = "Exit codes: 0 ok, 1 finished without a usable result, 2 bad input or usage."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum EvalFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum CurveFormat {
+    Csv,
+    Json,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Evaluate one scene: separation, real area, contacts, pull-off, wear, sensitivities.
+    #[command(
+        after_help = "Example:\n  wearopt eval problems/micro-gear.toml\n  wearopt eval problems/gold-switch.toml --format json"
+    )]
+    Eval {
+        /// The problem file (TOML).
+        file: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = EvalFormat::Text)]
+        format: EvalFormat,
+    },
+    /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
+    #[command(
+        after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh.\n\
+Example:\n  wearopt curve --theta 10 --lambda 0.125 --from -2 --to 4 --points 61\n  \
+wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json   (Greenwood-Williamson)"
+    )]
+    Curve {
+        /// Elastic adhesion index θ > 0 ("inf": no adhesion).
+        #[arg(long)]
+        theta: f64,
+        /// Plastic adhesion index λ > 0 ("inf": no plasticity).
+        #[arg(long)]
+        lambda: f64,
+        /// Hardness coefficient c_h = π R^{1/2} H / (K σ^{1/2}) > 0, used only with --theta inf
+        /// (θ and λ are both infinite without adhesion, so c_h cannot come from them).
+        #[arg(long, default_value_t = f64::INFINITY)]
+        hardness_coefficient: f64,
+        /// First separation h = d/σ.
+        #[arg(long, allow_hyphen_values = true)]
+        from: f64,
+        /// Last separation (inclusive).
+        #[arg(long, allow_hyphen_values = true)]
+        to: f64,
+        /// Number of points, 1 to 1,000,000 (1 gives --from alone).
+        #[arg(long)]
+        points: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = CurveFormat::Csv)]
+        format: CurveFormat,
+    },
+}
+
+/// An error that is the user's input, not ours: exit code 2.
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct UsageError(String);
+
+/// Runs the parsed command line.
+pub fn run(cli: Cli) -> Result<ExitCode> {
+    match cli.command {
+        Command::Eval { file, format } => eval(file, format),
+        Command::Curve {
+            theta,
+            lambda,
+            hardness_coefficient,
+            from,
+            to,
+            points,
+            format,
+        } => curve(
+            theta,
+            lambda,
+            hardness_coefficient,
+            from,
+            to,
+            points,
+            format,
+        ),
+    }
+}
+
+fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
+    let problem = wearopt::problem::load(&file)?;
+    let options = EvaluationOptions::default();
+    let evaluation = model::evaluate(&problem.scene, &options);
+    let sensitivities = model::sensitivities(&problem.scene, options.quadrature);
+    let r = report::eval::EvalReport {
+        name: &problem.name,
+        scene: &problem.scene,
+        input_notes: &problem.notes,
+        evaluation: &evaluation,
+        sensitivities: &sensitivities,
+    };
+    let out = match format {
+        EvalFormat::Text => report::eval::text(&r),
+        EvalFormat::Json => report::eval::json(&r),
+    };
+    print!("{out}");
+    Ok(match evaluation.status {
+        Status::Ok | Status::Separated => ExitCode::SUCCESS,
+        Status::NotConverged => ExitCode::from(1),
+    })
+}
+
+fn usage(msg: String) -> anyhow::Error {
+    UsageError(msg).into()
+}
+
+#[allow(clippy::too_many_arguments)]
+fn curve(
+    theta: f64,
+    lambda: f64,
+    c_h: f64,
+    from: f64,
+    to: f64,
+    points: usize,
+    format: CurveFormat,
+) -> Result<ExitCode> {
+    if theta.is_nan() || theta <= 0.0 {
+        return Err(usage(format!(
+            "--theta {theta}: must be > 0 (or inf for no adhesion)"
+        )));
+    }
+    if lambda.is_nan() || lambda <= 0.0 {
+        return Err(usage(format!(
+            "--lambda {lambda}: must be > 0 (or inf for no plasticity)"
+        )));
+    }
+    if c_h.is_nan() || c_h <= 0.0 {
+        return Err(usage(format!(
+            "--hardness-coefficient {c_h}: must be > 0 (or inf for no plasticity)"
+        )));
+    }
+    if !from.is_finite() || !to.is_finite() {
+        return Err(usage(format!(
+            "--from {from} --to {to}: separations must be finite"
+        )));
+    }
+    if from > to {
+        return Err(usage(format!(
+            "--from {from} is above --to {to}: give an increasing range"
+        )));
+    }
+    if !(1..=1_000_000).contains(&points) {
+        return Err(usage(format!("--points {points}: must lie in 1..=1000000")));
+    }
+    if points > 1 && from == to {
+        return Err(usage(format!(
+            "--from and --to are both {from}: with --points {points} the range must not be empty"
+        )));
+    }
+    let coefficients = if theta.is_infinite() {
+        Coefficients::new(0.0, c_h)
+    } else if lambda.is_infinite() {
+        Coefficients::from_indices_or_limits(theta, lambda, c_h)
+    } else {
+        Coefficients::from_indices(theta, lambda)
+    };
+    if coefficients.c_a.is_nan() || coefficients.c_h.is_nan() {
+        bail!("coefficients are undefined for θ = {theta}, λ = {lambda}");
+    }
+    let m = Model::with_quadrature(coefficients, Quadrature::default());
+    let dc = m.critical_interference();
+    let rows: Vec<report::curve::CurveRow> = (0..points)
+        .map(|i| {
+            let h = if points == 1 {
+                from
+            } else {
+                from + (to - from) * (i as f64) / ((points - 1) as f64)
+            };
+            let at = m.at(h);
+            report::curve::CurveRow {
+                h,
+                load: at.load().value(),
+                area: at.area().value(),
+                plastic_area: at.plastic_area().value(),
+                critical_interference: dc,
+                dload_dh: at.dload_dh().value(),
+            }
+        })
+        .collect();
+    let out = match format {
+        CurveFormat::Csv => report::curve::csv(&rows),
+        CurveFormat::Json => report::curve::json(&rows),
+    };
+    print!("{out}");
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The exit code for an error: 2 for bad input and usage, 1 otherwise.
+pub fn exit_code(err: &anyhow::Error) -> u8 {
+    if err
+        .downcast_ref::<wearopt::problem::ProblemError>()
+        .is_some()
+        || err.downcast_ref::<UsageError>().is_some()
+    {
+        2
+    } else {
+        1
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

@@ -1,0 +1,1243 @@
+//! Problem files: the TOML schema, units, the material catalogue and validation with
+//! precise errors.
+//!
+//! Loading has two stages. [`raw`] deserializes the file as written (serde, unknown keys
+//! denied, every value `Spanned` so it knows its line); [`Problem::from_raw`] then reads
+//! units, looks up materials, fills defaults, checks ranges and cross-field rules, and
+//! builds the [`Scene`] and [`Study`]. Every refusal is a [`ProblemError`] whose one-line
+//! message names the file, the line, the dotted key, the value as written and what would
+//! be accepted:
+//!
+//! ```text
+//! problems/x.toml:7: contact.load = "10 uQ": unknown unit "uQ"; expected a force such as "10 uN", "2 mN" or a number in newtons
+//! ```
+//!
+//! The schema (all values SI numbers or strings with units, see [`units`]):
+//!
+//! ```toml
+//! name = "Polysilicon micro-gear hub"   # optional; default: the file stem
+//!
+//! [contact]
+//! load = "10 uN"                  # W, any finite force; > 0 presses, < 0 pulls
+//! nominal_area = "1000 um^2"      # A_n > 0
+//! sliding_distance = "1 m"        # L >= 0
+//! wear_coefficient = 1e-4         # k in [0, 1]
+//! wear_area = "total"             # or "plastic" (default "total")
+//!
+//! [bodies]
+//! a = { material = "polysilicon" }                            # rough, softer body
+//! b = { youngs_modulus = "160 GPa", poisson_ratio = 0.22 }    # or "inf": rigid
+//!
+//! [interface]
+//! hardness = "10 GPa"             # H > 0 or "inf"; default: body a's catalogue value
+//! work_of_adhesion = "0.1 J/m^2"  # γ >= 0
+//! interatomic_distance = "0.3 nm" # Z0 > 0 (default 0.3 nm)
+//!
+//! [roughness]
+//! sigma = "5 nm"
+//! asperity_radius = "1 um"
+//! asperity_density = "10 um^-2"
+//! ```
+//!
+//! and optionally `[design]`, `[objective]`, `[[constraint]]`, `[pareto]` and
+//! `[optimizer]` (see [`Study`]).
+
+pub mod catalogue;
+mod error;
+mod locate;
+pub mod raw;
+mod study;
+pub mod units;
+
+use std::ops::Range;
+use std::path::Path;
+use std::time::Duration;
+
+use serde::Serialize;
+use toml::Spanned;
+
+pub use error::{edit_distance, suggest, Location, ProblemError};
+pub use study::{
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
+    Objective, OptimizerSettings, ParetoDirection, ParetoSpec, SettingsError, Study,
+};
+
+use crate::model::{Scene, WearArea};
+use catalogue::Material;
+use error::line_of;
+use raw::{RawBody, RawBound, RawInteger, RawProblem, RawQuantity};
+use units::{format_number, format_quantity, parse_quantity, Dimension};
+
+/// Z0 when the file does not give `interface.interatomic_distance`: 0.3 nm.
+pub const DEFAULT_INTERATOMIC_DISTANCE: f64 = 0.3e-9;
+
+/// A validated problem: one scene and what to do with it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Problem {
+    /// `name`, or the file stem.
+    pub name: String,
+    /// The contact, in SI units.
+    pub scene: Scene,
+    /// Design variables, objective, constraints, Pareto front, optimiser settings.
+    pub study: Study,
+    /// Things the loader decided for the user, to show beside the results (values taken
+    /// from the catalogue, overrides, implausible but accepted values).
+    pub notes: Vec<String>,
+}
+
+/// Reads and validates a problem file. The file must be UTF-8; its path (as given) is
+/// the origin named in error messages.
+pub fn load(path: &Path) -> Result<Problem, ProblemError> {
+    let origin = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|io| ProblemError::Io {
+        path: origin.clone(),
+        io,
+    })?;
+    let text = match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => {
+            let good = e.utf8_error().valid_up_to();
+            let prefix = std::str::from_utf8(&e.as_bytes()[..good]).unwrap_or("");
+            return Err(ProblemError::NotUtf8 {
+                at: Location {
+                    origin,
+                    line: Some(line_of(prefix, good)),
+                },
+                byte: good,
+            });
+        }
+    };
+    parse(&text, &origin)
+}
+
+/// Parses and validates problem-file text. `origin` names the file in messages and
+/// gives the default `name` (its stem).
+pub fn parse(text: &str, origin: &str) -> Result<Problem, ProblemError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let located = |span: Option<Range<usize>>| Location {
+        origin: origin.to_string(),
+        line: span.map(|s| line_of(text, s.start)),
+    };
+    // The span-preserving document: syntax errors, emptiness, and later the paths of
+    // serde errors.
+    let tree = toml::de::DeTable::parse(text).map_err(|e| ProblemError::Syntax {
+        at: located(e.span()),
+        message: one_line(e.message()),
+    })?;
+    if tree.get_ref().is_empty() {
+        return Err(ProblemError::Empty { at: located(None) });
+    }
+    let raw: RawProblem = toml::from_str(text).map_err(|e| serde_error(&e, text, origin, &tree))?;
+    Problem::from_raw(raw, text, origin)
+}
+
+/// Collapses a multi-line parser message into one line.
+fn one_line(message: &str) -> String {
+    message.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The text of the backtick-quoted names in a serde message, in order.
+fn backticked(message: &str) -> Vec<String> {
+    message
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .map(str::to_string)
+        .collect()
+}
+
+/// Maps a deserialization error (unknown key, wrong type) to a [`ProblemError`] with a
+/// dotted key.
+fn serde_error(
+    err: &toml::de::Error,
+    text: &str,
+    origin: &str,
+    tree: &Spanned<toml::de::DeTable<'_>>,
+) -> ProblemError {
+    let message = one_line(err.message());
+    let span = err.span();
+    let at = Location {
+        origin: origin.to_string(),
+        line: span.as_ref().map(|s| line_of(text, s.start)),
+    };
+    let hit = span.as_ref().and_then(|s| locate::find(tree, s));
+    let written = span.as_ref().map(|s| written(text, s)).unwrap_or_default();
+    if let Some(rest) = message.strip_prefix("unknown field ") {
+        let names = backticked(rest);
+        let name = names.first().cloned().unwrap_or_default();
+        let valid: Vec<String> = names.into_iter().skip(1).collect();
+        let table = match &hit {
+            Some(h) if h.is_key => locate::render(&h.path[..h.path.len() - 1]),
+            Some(h) => locate::render(&h.path),
+            None => String::new(),
+        };
+        let key = if table.is_empty() {
+            name.clone()
+        } else {
+            format!("{table}.{name}")
+        };
+        let suggestion = suggest(&name, valid.iter().map(String::as_str)).map(str::to_string);
+        return ProblemError::UnknownKey {
+            at,
+            key,
+            suggestion,
+            valid,
+        };
+    }
+    let key = hit
+        .map(|h| locate::render(&h.path))
+        .unwrap_or_else(|| "(document)".to_string());
+    if let Some(rest) = message
+        .strip_prefix("invalid type: ")
+        .or_else(|| message.strip_prefix("invalid value: "))
+    {
+        return ProblemError::WrongType {
+            at,
+            key,
+            value: written,
+            message: rest.to_string(),
+        };
+    }
+    ProblemError::WrongType {
+        at,
+        key,
+        value: written,
+        message,
+    }
+}
+
+/// The source text of a span, on one line and at most 80 characters.
+fn written(text: &str, span: &Range<usize>) -> String {
+    let raw = text.get(span.clone()).unwrap_or("").trim();
+    let flat = one_line(raw);
+    if flat.chars().count() > 80 {
+        let cut: String = flat.chars().take(77).collect();
+        format!("{cut}...")
+    } else {
+        flat
+    }
+}
+
+/// The accepted range of a dimensional value, and how to say it.
+#[derive(Debug, Clone, Copy)]
+struct Accept {
+    dim: Dimension,
+    lo: f64,
+    lo_open: bool,
+    hi: f64,
+    hi_open: bool,
+    /// `+inf` is allowed, and what it means.
+    inf: Option<&'static str>,
+    /// What the value is, for the message.
+    why: Option<&'static str>,
+}
+
+impl Accept {
+    fn any(dim: Dimension) -> Self {
+        Accept {
+            dim,
+            lo: f64::NEG_INFINITY,
+            lo_open: true,
+            hi: f64::INFINITY,
+            hi_open: true,
+            inf: None,
+            why: None,
+        }
+    }
+    fn positive(dim: Dimension) -> Self {
+        Accept {
+            lo: 0.0,
+            ..Self::any(dim)
+        }
+    }
+    fn non_negative(dim: Dimension) -> Self {
+        Accept {
+            lo: 0.0,
+            lo_open: false,
+            ..Self::any(dim)
+        }
+    }
+    fn interval(dim: Dimension, lo: f64, lo_open: bool, hi: f64, hi_open: bool) -> Self {
+        Accept {
+            lo,
+            lo_open,
+            hi,
+            hi_open,
+            ..Self::any(dim)
+        }
+    }
+    fn or_inf(self, meaning: &'static str) -> Self {
+        Accept {
+            inf: Some(meaning),
+            ..self
+        }
+    }
+    fn why(self, why: &'static str) -> Self {
+        Accept {
+            why: Some(why),
+            ..self
+        }
+    }
+
+    fn with_unit(&self, x: f64) -> String {
+        let unit = self.dim.si_unit();
+        if unit.is_empty() {
+            format_number(x)
+        } else {
+            format!("{} {unit}", format_number(x))
+        }
+    }
+
+    fn describe(&self) -> String {
+        let mut s = match (self.lo.is_finite(), self.hi.is_finite()) {
+            (true, true) => {
+                let unit = self.dim.si_unit();
+                format!(
+                    "must be in {}{}, {}{}{}",
+                    if self.lo_open { "(" } else { "[" },
+                    format_number(self.lo),
+                    format_number(self.hi),
+                    if self.hi_open { ")" } else { "]" },
+                    if unit.is_empty() {
+                        String::new()
+                    } else {
+                        format!(" {unit}")
+                    }
+                )
+            }
+            (true, false) => format!(
+                "must be {} {}",
+                if self.lo_open { ">" } else { ">=" },
+                self.with_unit(self.lo)
+            ),
+            (false, true) => format!(
+                "must be {} {}",
+                if self.hi_open { "<" } else { "<=" },
+                self.with_unit(self.hi)
+            ),
+            (false, false) => "must be a finite number".to_string(),
+        };
+        if let Some(meaning) = self.inf {
+            s.push_str(&format!(", or \"inf\" for {meaning}"));
+        }
+        let why = match self.why {
+            Some(w) => Some(w.to_string()),
+            None if self.lo == 0.0 && self.lo_open && !self.hi.is_finite() => {
+                Some(format!("a positive {}", self.dim.name()))
+            }
+            None => None,
+        };
+        if let Some(why) = why {
+            s.push_str(&format!(" ({why})"));
+        }
+        s
+    }
+
+    fn check(&self, x: f64) -> Result<(), String> {
+        if x == f64::INFINITY && self.inf.is_some() {
+            return Ok(());
+        }
+        if x.is_infinite() {
+            return Err(format!("{}; infinity is not allowed here", self.describe()));
+        }
+        let above = if self.lo_open {
+            x > self.lo
+        } else {
+            x >= self.lo
+        };
+        let below = if self.hi_open {
+            x < self.hi
+        } else {
+            x <= self.hi
+        };
+        if above && below {
+            Ok(())
+        } else {
+            Err(self.describe())
+        }
+    }
+}
+
+/// Stage two's state: the source text (for lines and values as written) and the notes
+/// collected on the way.
+struct Reader<'a> {
+    text: &'a str,
+    origin: &'a str,
+    notes: Vec<String>,
+}
+
+impl Reader<'_> {
+    fn at(&self, span: Option<&Range<usize>>) -> Location {
+        Location {
+            origin: self.origin.to_string(),
+            line: span.map(|s| line_of(self.text, s.start)),
+        }
+    }
+
+    fn invalid(&self, key: &str, span: &Range<usize>, reason: impl Into<String>) -> ProblemError {
+        ProblemError::InvalidValue {
+            at: self.at(Some(span)),
+            key: key.to_string(),
+            value: written(self.text, span),
+            reason: reason.into(),
+        }
+    }
+
+    fn missing(&self, key: &str, table: Option<&Range<usize>>, hint: &str) -> ProblemError {
+        ProblemError::MissingKey {
+            at: self.at(table),
+            key: key.to_string(),
+            hint: hint.to_string(),
+        }
+    }
+
+    /// A required value, or a [`ProblemError::MissingKey`] at the table's line.
+    fn required<'r, T>(
+        &self,
+        value: &'r Option<Spanned<T>>,
+        key: &str,
+        table: Option<&Range<usize>>,
+        hint: &str,
+    ) -> Result<&'r Spanned<T>, ProblemError> {
+        value.as_ref().ok_or_else(|| self.missing(key, table, hint))
+    }
+
+    /// A dimensional value in SI units, checked against its accepted range.
+    fn quantity(
+        &self,
+        key: &str,
+        value: &Spanned<RawQuantity>,
+        accept: Accept,
+    ) -> Result<f64, ProblemError> {
+        let x = parse_quantity(value.get_ref().as_input(), accept.dim)
+            .map_err(|e| self.invalid(key, &value.span(), e.to_string()))?;
+        accept
+            .check(x)
+            .map_err(|reason| self.invalid(key, &value.span(), reason))?;
+        Ok(x)
+    }
+
+    fn optional_quantity(
+        &self,
+        key: &str,
+        value: &Option<Spanned<RawQuantity>>,
+        accept: Accept,
+    ) -> Result<Option<f64>, ProblemError> {
+        value
+            .as_ref()
+            .map(|v| self.quantity(key, v, accept))
+            .transpose()
+    }
+
+    /// An integer in `lo..=hi`.
+    fn integer(
+        &self,
+        key: &str,
+        value: &Spanned<RawInteger>,
+        lo: i64,
+        hi: i64,
+        why: &str,
+    ) -> Result<i64, ProblemError> {
+        let x = value.get_ref().0;
+        if (lo..=hi).contains(&x) {
+            Ok(x)
+        } else {
+            let range = if hi == i64::MAX {
+                format!(">= {lo}")
+            } else {
+                format!("in {lo}..={hi}")
+            };
+            Err(self.invalid(
+                key,
+                &value.span(),
+                format!("must be an integer {range} ({why})"),
+            ))
+        }
+    }
+
+    /// One of a closed set of names, with a suggestion when it is a near miss.
+    fn named<T: Named>(&self, key: &str, value: &Spanned<String>) -> Result<T, ProblemError> {
+        let name = value.get_ref();
+        T::from_name(name).ok_or_else(|| {
+            let names = T::names();
+            let hint = suggest(name, names.iter().copied())
+                .map(|s| format!("; did you mean \"{s}\"?"))
+                .unwrap_or_default();
+            self.invalid(
+                key,
+                &value.span(),
+                format!("unknown value{hint} (one of: {})", names.join(", ")),
+            )
+        })
+    }
+
+    /// A catalogue material, with the nearest name and the list when it is unknown.
+    /// `or_constants`: the key may be replaced by explicit elastic constants (a body).
+    fn material(
+        &self,
+        key: &str,
+        value: &Spanned<String>,
+        or_constants: bool,
+    ) -> Result<&'static Material, ProblemError> {
+        catalogue::lookup(value.get_ref()).ok_or_else(|| {
+            let hint = catalogue::suggest(value.get_ref())
+                .map(|s| format!("; did you mean \"{s}\"?"))
+                .unwrap_or_default();
+            let alternative = if or_constants {
+                "; or give youngs_modulus and poisson_ratio instead"
+            } else {
+                ""
+            };
+            self.invalid(
+                key,
+                &value.span(),
+                format!(
+                    "unknown material{hint} (catalogue: {}{alternative})",
+                    catalogue::names().join(", ")
+                ),
+            )
+        })
+    }
+}
+
+/// One body's elastic constants after catalogue look-up and overrides.
+struct Body {
+    youngs_modulus: f64,
+    poisson_ratio: f64,
+    material: Option<&'static Material>,
+}
+
+impl Reader<'_> {
+    fn body(
+        &mut self,
+        key: &str,
+        raw: &Spanned<RawBody>,
+        rigid_allowed: bool,
+    ) -> Result<Body, ProblemError> {
+        let span = raw.span();
+        let raw = raw.get_ref();
+        let material = raw
+            .material
+            .as_ref()
+            .map(|m| self.material(&format!("{key}.material"), m, true))
+            .transpose()?;
+        let mut e_accept = Accept::positive(Dimension::Pressure).why("a positive Young's modulus");
+        if rigid_allowed {
+            e_accept = e_accept.or_inf("a rigid counterface");
+        }
+        let nu_accept =
+            Accept::interval(Dimension::Dimensionless, -1.0, true, 0.5, false).why("Poisson ratio");
+        let how = "give material = \"polysilicon\" (or another catalogue name), or both youngs_modulus and poisson_ratio";
+        let youngs_modulus = match (&raw.youngs_modulus, material) {
+            (Some(v), m) => {
+                let e = self.quantity(&format!("{key}.youngs_modulus"), v, e_accept)?;
+                if let Some(m) = m {
+                    self.notes.push(format!(
+                        "{key}: youngs_modulus {} overrides the catalogue value {} for {}",
+                        format_quantity(e, Dimension::Pressure),
+                        format_quantity(m.youngs_modulus, Dimension::Pressure),
+                        m.name
+                    ));
+                }
+                e
+            }
+            (None, Some(m)) => m.youngs_modulus,
+            (None, None) => {
+                return Err(self.missing(&format!("{key}.youngs_modulus"), Some(&span), how))
+            }
+        };
+        let poisson_ratio = match (&raw.poisson_ratio, material) {
+            (Some(v), m) => {
+                let nu = self.quantity(&format!("{key}.poisson_ratio"), v, nu_accept)?;
+                if let Some(m) = m {
+                    self.notes.push(format!(
+                        "{key}: poisson_ratio {} overrides the catalogue value {} for {}",
+                        format_number(nu),
+                        format_number(m.poisson_ratio),
+                        m.name
+                    ));
+                }
+                nu
+            }
+            (None, Some(m)) => m.poisson_ratio,
+            (None, None) => {
+                return Err(self.missing(&format!("{key}.poisson_ratio"), Some(&span), how))
+            }
+        };
+        Ok(Body {
+            youngs_modulus,
+            poisson_ratio,
+            material,
+        })
+    }
+}
+
+const CONTACT_HINT: &str =
+    "add a [contact] table with load, nominal_area, sliding_distance and wear_coefficient";
+const BODIES_HINT: &str =
+    "add a [bodies] table, e.g. a = { material = \"polysilicon\" } and b = { material = \"polysilicon\" }";
+const INTERFACE_HINT: &str =
+    "add an [interface] table with work_of_adhesion (and hardness unless body a is a catalogue material)";
+const ROUGHNESS_HINT: &str =
+    "add a [roughness] table with sigma, asperity_radius and asperity_density";
+
+impl Problem {
+    /// Stage two: units, catalogue look-ups, defaults, ranges and cross-field checks.
+    /// `text` is the source `raw` was read from (for line numbers and values as
+    /// written); `origin` names it in messages.
+    pub fn from_raw(raw: RawProblem, text: &str, origin: &str) -> Result<Problem, ProblemError> {
+        let mut r = Reader {
+            text,
+            origin,
+            notes: Vec::new(),
+        };
+
+        let name = match &raw.name {
+            Some(n) if n.get_ref().trim().is_empty() => {
+                return Err(r.invalid(
+                    "name",
+                    &n.span(),
+                    "must not be empty (or leave it out to use the file name)",
+                ))
+            }
+            Some(n) => n.get_ref().trim().to_string(),
+            None => Path::new(origin)
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_else(|| origin.to_string()),
+        };
+
+        // [contact]
+        let contact = r.required(&raw.contact, "table [contact]", None, CONTACT_HINT)?;
+        let cspan = contact.span();
+        let c = contact.get_ref();
+        let load = r.quantity(
+            "contact.load",
+            r.required(
+                &c.load,
+                "contact.load",
+                Some(&cspan),
+                "the normal load, e.g. load = \"10 uN\" (positive presses the bodies together)",
+            )?,
+            Accept::any(Dimension::Force).why("positive compressive, negative tensile"),
+        )?;
+        let nominal_area = r.quantity(
+            "contact.nominal_area",
+            r.required(
+                &c.nominal_area,
+                "contact.nominal_area",
+                Some(&cspan),
+                "the nominal contact area, e.g. nominal_area = \"1000 um^2\"",
+            )?,
+            Accept::positive(Dimension::Area),
+        )?;
+        let sliding_distance = r.quantity(
+            "contact.sliding_distance",
+            r.required(
+                &c.sliding_distance,
+                "contact.sliding_distance",
+                Some(&cspan),
+                "the sliding distance, e.g. sliding_distance = \"1 m\"",
+            )?,
+            Accept::non_negative(Dimension::Length).why("a sliding distance"),
+        )?;
+        let wear_coefficient = r.quantity(
+            "contact.wear_coefficient",
+            r.required(
+                &c.wear_coefficient,
+                "contact.wear_coefficient",
+                Some(&cspan),
+                "the dimensionless Archard wear coefficient k in [0, 1], e.g. wear_coefficient = 1e-4",
+            )?,
+            Accept::interval(Dimension::Dimensionless, 0.0, false, 1.0, false)
+                .why("the dimensionless Archard wear coefficient"),
+        )?;
+        let wear_area = match &c.wear_area {
+            None => WearArea::default(),
+            Some(w) => match w.get_ref().as_str() {
+                "total" => WearArea::Total,
+                "plastic" => WearArea::Plastic,
+                other => {
+                    let hint = suggest(other, ["total", "plastic"])
+                        .map(|s| format!("; did you mean \"{s}\"?"))
+                        .unwrap_or_default();
+                    return Err(r.invalid(
+                        "contact.wear_area",
+                        &w.span(),
+                        format!("unknown value{hint} (one of: total, plastic)"),
+                    ));
+                }
+            },
+        };
+
+        // [bodies]
+        let bodies = r.required(&raw.bodies, "table [bodies]", None, BODIES_HINT)?;
+        let bspan = bodies.span();
+        let a = r.required(
+            &bodies.get_ref().a,
+            "bodies.a",
+            Some(&bspan),
+            "the rough, softer body, e.g. a = { material = \"polysilicon\" }",
+        )?;
+        let b = r.required(
+            &bodies.get_ref().b,
+            "bodies.b",
+            Some(&bspan),
+            "the counterface, e.g. b = { material = \"polysilicon\" } or b = { youngs_modulus = \"inf\", poisson_ratio = 0.3 }",
+        )?;
+        let body_a = r.body("bodies.a", a, false)?;
+        let body_b = r.body("bodies.b", b, true)?;
+
+        // [interface]
+        let interface = r.required(&raw.interface, "table [interface]", None, INTERFACE_HINT)?;
+        let ispan = interface.span();
+        let i = interface.get_ref();
+        let hardness = match (&i.hardness, body_a.material) {
+            (Some(h), _) => r.quantity(
+                "interface.hardness",
+                h,
+                Accept::positive(Dimension::Pressure)
+                    .or_inf("no plasticity")
+                    .why("hardness of the softer body"),
+            )?,
+            (None, Some(m)) => {
+                r.notes.push(format!(
+                    "hardness taken from catalogue: {}, {}",
+                    m.name,
+                    format_quantity(m.hardness, Dimension::Pressure)
+                ));
+                m.hardness
+            }
+            (None, None) => {
+                return Err(r.missing(
+                    "interface.hardness",
+                    Some(&ispan),
+                    "required because body a is not a catalogue material; e.g. hardness = \"10 GPa\", or \"inf\" for no plasticity",
+                ))
+            }
+        };
+        let work_of_adhesion = r.quantity(
+            "interface.work_of_adhesion",
+            r.required(
+                &i.work_of_adhesion,
+                "interface.work_of_adhesion",
+                Some(&ispan),
+                "the work of adhesion, e.g. work_of_adhesion = \"0.1 J/m^2\" (0 for no adhesion)",
+            )?,
+            Accept::non_negative(Dimension::SurfaceEnergy).why("0 means no adhesion"),
+        )?;
+        let interatomic_distance = r
+            .optional_quantity(
+                "interface.interatomic_distance",
+                &i.interatomic_distance,
+                Accept::positive(Dimension::Length),
+            )?
+            .unwrap_or(DEFAULT_INTERATOMIC_DISTANCE);
+
+        if let Some(m) = body_a.material {
+            let (lo, hi) = m.work_of_adhesion;
+            if work_of_adhesion > 0.0
+                && (work_of_adhesion < lo / 10.0 || work_of_adhesion > hi * 10.0)
+            {
+                r.notes.push(format!(
+                    "work_of_adhesion {} is far outside the typical range {}-{} J/m^2 for {} (catalogue)",
+                    format_quantity(work_of_adhesion, Dimension::SurfaceEnergy),
+                    format_number(lo),
+                    format_number(hi),
+                    m.name
+                ));
+            }
+        }
+        if let (Some(ma), Some(mb)) = (body_a.material, body_b.material) {
+            if mb.hardness < ma.hardness {
+                r.notes.push(format!(
+                    "body b ({}, H = {}) is softer than body a ({}, H = {}); the model takes a as the rough, softer body",
+                    mb.name,
+                    format_quantity(mb.hardness, Dimension::Pressure),
+                    ma.name,
+                    format_quantity(ma.hardness, Dimension::Pressure)
+                ));
+            }
+        }
+
+        // [roughness]
+        let roughness = r.required(&raw.roughness, "table [roughness]", None, ROUGHNESS_HINT)?;
+        let rspan = roughness.span();
+        let g = roughness.get_ref();
+        let sigma = r.quantity(
+            "roughness.sigma",
+            r.required(
+                &g.sigma,
+                "roughness.sigma",
+                Some(&rspan),
+                "the standard deviation of asperity heights, e.g. sigma = \"5 nm\"",
+            )?,
+            Accept::positive(Dimension::Length),
+        )?;
+        let asperity_radius = r.quantity(
+            "roughness.asperity_radius",
+            r.required(
+                &g.asperity_radius,
+                "roughness.asperity_radius",
+                Some(&rspan),
+                "the asperity tip radius, e.g. asperity_radius = \"1 um\"",
+            )?,
+            Accept::positive(Dimension::Length),
+        )?;
+        let asperity_density = r.quantity(
+            "roughness.asperity_density",
+            r.required(
+                &g.asperity_density,
+                "roughness.asperity_density",
+                Some(&rspan),
+                "asperities per unit area, e.g. asperity_density = \"10 um^-2\"",
+            )?,
+            Accept::positive(Dimension::InverseArea),
+        )?;
+
+        let scene = Scene {
+            youngs_modulus_a: body_a.youngs_modulus,
+            poisson_ratio_a: body_a.poisson_ratio,
+            youngs_modulus_b: body_b.youngs_modulus,
+            poisson_ratio_b: body_b.poisson_ratio,
+            hardness,
+            work_of_adhesion,
+            interatomic_distance,
+            sigma,
+            asperity_radius,
+            asperity_density,
+            load,
+            nominal_area,
+            sliding_distance,
+            wear_coefficient,
+            wear_area,
+        };
+
+        let study = r.study(&raw, &scene)?;
+        Ok(Problem {
+            name,
+            scene,
+            study,
+            notes: r.notes,
+        })
+    }
+}
+
+/// The accepted values of a design variable's bounds.
+fn design_accept(q: DesignQuantity) -> Accept {
+    let dim = q.dimension();
+    match q {
+        DesignQuantity::PoissonRatio => {
+            Accept::interval(dim, -1.0, true, 0.5, false).why("Poisson ratio")
+        }
+        DesignQuantity::WorkOfAdhesion => Accept::non_negative(dim),
+        _ => Accept::positive(dim),
+    }
+}
+
+impl Reader<'_> {
+    fn study(&mut self, raw: &RawProblem, scene: &Scene) -> Result<Study, ProblemError> {
+        let mut study = Study::default();
+
+        // [design]
+        if let Some(design) = &raw.design {
+            let d = design.get_ref();
+            let mut placed = Vec::new();
+            for &q in DesignQuantity::ALL {
+                let bound = match q {
+                    DesignQuantity::YoungsModulus => &d.youngs_modulus,
+                    DesignQuantity::PoissonRatio => &d.poisson_ratio,
+                    DesignQuantity::Hardness => &d.hardness,
+                    DesignQuantity::WorkOfAdhesion => &d.work_of_adhesion,
+                    DesignQuantity::Sigma => &d.sigma,
+                    DesignQuantity::AsperityRadius => &d.asperity_radius,
+                    DesignQuantity::AsperityDensity => &d.asperity_density,
+                };
+                if let Some(bound) = bound {
+                    placed.push((bound.span().start, self.design_variable(q, bound, scene)?));
+                }
+            }
+            // File order, as the user wrote them.
+            placed.sort_by_key(|(start, _)| *start);
+            study.design = placed.into_iter().map(|(_, v)| v).collect();
+            if let Some(list) = &d.materials {
+                if list.get_ref().is_empty() {
+                    return Err(self.invalid(
+                        "design.materials",
+                        &list.span(),
+                        format!(
+                            "empty list; name at least one catalogue material ({}) or remove the key",
+                            catalogue::names().join(", ")
+                        ),
+                    ));
+                }
+                for item in list.get_ref() {
+                    let m = self.material("design.materials", item, false)?;
+                    if study.materials.iter().any(|n| n == m.name) {
+                        return Err(self.invalid(
+                            "design.materials",
+                            &item.span(),
+                            format!("{} is listed twice", m.name),
+                        ));
+                    }
+                    study.materials.push(m.name.to_string());
+                }
+            }
+        }
+
+        // [objective]
+        if let Some(objective) = &raw.objective {
+            let minimize = self.required(
+                &objective.get_ref().minimize,
+                "objective.minimize",
+                Some(&objective.span()),
+                &format!(
+                    "what to make small, one of: {}",
+                    Objective::names().join(", ")
+                ),
+            )?;
+            study.objective = Some(self.named("objective.minimize", minimize)?);
+            if !study.has_design() {
+                return Err(self.invalid(
+                    "objective.minimize",
+                    &minimize.span(),
+                    "nothing to optimise: add a [design] table with at least one variable, e.g. sigma = { min = \"1 nm\", max = \"20 nm\" }",
+                ));
+            }
+        }
+
+        // [[constraint]]
+        for (index, constraint) in raw.constraint.iter().enumerate() {
+            study.constraints.push(self.constraint(index, constraint)?);
+        }
+
+        // [pareto]
+        if let Some(pareto) = &raw.pareto {
+            let p = pareto.get_ref();
+            let adhesion_raw = self.required(
+                &p.adhesion,
+                "pareto.adhesion",
+                Some(&pareto.span()),
+                &format!(
+                    "the adhesion measure of the front, one of: {}",
+                    AdhesionMeasure::names().join(", ")
+                ),
+            )?;
+            let adhesion: AdhesionMeasure = self.named("pareto.adhesion", adhesion_raw)?;
+            let points = match &p.points {
+                None => ParetoSpec::DEFAULT_POINTS,
+                Some(v) => self.integer(
+                    "pareto.points",
+                    v,
+                    ParetoSpec::MIN_POINTS as i64,
+                    ParetoSpec::MAX_POINTS as i64,
+                    "points on the Pareto front",
+                )? as usize,
+            };
+            let direction = match &p.direction {
+                None => ParetoDirection::Low,
+                Some(v) => self.named("pareto.direction", v)?,
+            };
+            if !study.has_design() {
+                return Err(self.invalid(
+                    "pareto.adhesion",
+                    &adhesion_raw.span(),
+                    "a front needs something to vary: add a [design] table with at least one variable",
+                ));
+            }
+            if adhesion == AdhesionMeasure::WorkOfAdhesion
+                && !study
+                    .design
+                    .iter()
+                    .any(|v| v.name == DesignQuantity::WorkOfAdhesion)
+            {
+                return Err(self.invalid(
+                    "pareto.adhesion",
+                    &adhesion_raw.span(),
+                    format!(
+                        "trading against work_of_adhesion needs it among the design variables: add work_of_adhesion = {} to [design]",
+                        DesignQuantity::WorkOfAdhesion.example_bounds()
+                    ),
+                ));
+            }
+            study.pareto = Some(ParetoSpec {
+                adhesion,
+                points,
+                direction,
+            });
+        }
+
+        // [optimizer]
+        if let Some(optimizer) = &raw.optimizer {
+            study.optimizer = self.optimizer(optimizer)?;
+        }
+        Ok(study)
+    }
+
+    fn design_variable(
+        &self,
+        q: DesignQuantity,
+        bound: &Spanned<RawBound>,
+        scene: &Scene,
+    ) -> Result<DesignVariable, ProblemError> {
+        let key = format!("design.{}", q.as_str());
+        let example = format!(
+            "a design variable needs both bounds, e.g. {} = {}",
+            q.as_str(),
+            q.example_bounds()
+        );
+        let b = bound.get_ref();
+        let accept = design_accept(q);
+        let min_raw =
+            self.required(&b.min, &format!("{key}.min"), Some(&bound.span()), &example)?;
+        let max_raw =
+            self.required(&b.max, &format!("{key}.max"), Some(&bound.span()), &example)?;
+        let min = self.quantity(&format!("{key}.min"), min_raw, accept)?;
+        let max = self.quantity(&format!("{key}.max"), max_raw, accept)?;
+        let dim = q.dimension();
+        if min >= max {
+            return Err(self.invalid(
+                &key,
+                &bound.span(),
+                format!(
+                    "min must be < max (min is {}, max is {})",
+                    format_quantity(min, dim),
+                    format_quantity(max, dim)
+                ),
+            ));
+        }
+        let value = q.get(scene);
+        if !(min..=max).contains(&value) {
+            return Err(self.invalid(
+                &key,
+                &bound.span(),
+                format!(
+                    "[{}, {}] does not contain the scene's {} = {}; widen the range or change {}",
+                    format_quantity(min, dim),
+                    format_quantity(max, dim),
+                    q.scene_key(),
+                    format_quantity(value, dim),
+                    q.scene_key()
+                ),
+            ));
+        }
+        Ok(DesignVariable { name: q, min, max })
+    }
+
+    fn constraint(
+        &self,
+        index: usize,
+        constraint: &Spanned<raw::RawConstraint>,
+    ) -> Result<Constraint, ProblemError> {
+        let prefix = format!("constraint[{index}]");
+        let c = constraint.get_ref();
+        let span = constraint.span();
+        let quantity_raw = self.required(
+            &c.quantity,
+            &format!("{prefix}.quantity"),
+            Some(&span),
+            &format!(
+                "what to bound, one of: {}",
+                ConstraintQuantity::names().join(", ")
+            ),
+        )?;
+        let quantity: ConstraintQuantity =
+            self.named(&format!("{prefix}.quantity"), quantity_raw)?;
+        let (lo, hi) = quantity.natural_range();
+        let mut accept = Accept::interval(quantity.dimension(), lo, false, hi, false);
+        if !lo.is_finite() && !hi.is_finite() {
+            accept = Accept::any(quantity.dimension());
+        } else if !hi.is_finite() {
+            accept = Accept::non_negative(quantity.dimension());
+        }
+        let min = self.optional_quantity(&format!("{prefix}.min"), &c.min, accept)?;
+        let max = self.optional_quantity(&format!("{prefix}.max"), &c.max, accept)?;
+        if min.is_none() && max.is_none() {
+            return Err(self.missing(
+                &format!("{prefix}.min/max"),
+                Some(&span),
+                &format!(
+                    "a constraint on {} needs min, max or both ({})",
+                    quantity.as_str(),
+                    match quantity.dimension() {
+                        Dimension::Dimensionless => "plain numbers".to_string(),
+                        d => format!("each {}", d.with_article()),
+                    }
+                ),
+            ));
+        }
+        if let (Some(lo), Some(hi), Some(min_raw)) = (min, max, &c.min) {
+            if lo >= hi {
+                let dim = quantity.dimension();
+                return Err(self.invalid(
+                    &format!("{prefix}.min"),
+                    &min_raw.span(),
+                    format!(
+                        "min must be < max for {} (min is {}, max is {})",
+                        quantity.as_str(),
+                        format_quantity(lo, dim),
+                        format_quantity(hi, dim)
+                    ),
+                ));
+            }
+        }
+        Ok(Constraint { quantity, min, max })
+    }
+
+    fn optimizer(
+        &self,
+        optimizer: &Spanned<raw::RawOptimizer>,
+    ) -> Result<OptimizerSettings, ProblemError> {
+        let o = optimizer.get_ref();
+        let mut settings = OptimizerSettings::default();
+        if let Some(v) = &o.starts {
+            let (lo, hi) = OptimizerSettings::STARTS;
+            settings.starts = self.integer(
+                "optimizer.starts",
+                v,
+                lo as i64,
+                hi as i64,
+                "starting points",
+            )? as usize;
+        }
+        if let Some(v) = &o.seed {
+            settings.seed = self.integer(
+                "optimizer.seed",
+                v,
+                0,
+                i64::MAX,
+                "seed of the random starts",
+            )? as u64;
+        }
+        if let Some(v) = &o.tolerance {
+            settings.tolerance = self.quantity(
+                "optimizer.tolerance",
+                v,
+                Accept::interval(Dimension::Dimensionless, 0.0, true, 1.0, true)
+                    .why("relative tolerance, e.g. 1e-8"),
+            )?;
+        }
+        if let Some(v) = &o.max_iterations {
+            let (lo, hi) = OptimizerSettings::MAX_ITERATIONS;
+            settings.max_iterations = self.integer(
+                "optimizer.max_iterations",
+                v,
+                lo as i64,
+                hi as i64,
+                "iterations per start",
+            )? as usize;
+        }
+        if let Some(v) = &o.time_limit {
+            let seconds = self.quantity(
+                "optimizer.time_limit",
+                v,
+                Accept::positive(Dimension::Time).why("wall-clock limit, e.g. \"30 s\""),
+            )?;
+            settings.time_limit = Duration::try_from_secs_f64(seconds).map_err(|_| {
+                self.invalid(
+                    "optimizer.time_limit",
+                    &v.span(),
+                    "too large for a time limit",
+                )
+            })?;
+        }
+        settings.validate().map_err(|e| {
+            let span = match e.field {
+                "starts" => o.starts.as_ref().map(|v| v.span()),
+                "tolerance" => o.tolerance.as_ref().map(|v| v.span()),
+                "max_iterations" => o.max_iterations.as_ref().map(|v| v.span()),
+                "time_limit" => o.time_limit.as_ref().map(|v| v.span()),
+                _ => None,
+            }
+            .unwrap_or_else(|| optimizer.span());
+            self.invalid(&format!("optimizer.{}", e.field), &span, e.expected)
+        })?;
+        Ok(settings)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MINIMAL: &str = r#"
+[contact]
+load = "10 uN"
+nominal_area = "1000 um^2"
+sliding_distance = "1 m"
+wear_coefficient = 1e-4
+
+[bodies]
+a = { material = "polysilicon" }
+b = { material = "polysilicon" }
+
+[interface]
+work_of_adhesion = "0.1 J/m^2"
+
+[roughness]
+sigma = "5 nm"
+asperity_radius = "1 um"
+asperity_density = "10 um^-2"
+"#;
+
+    fn err(text: &str) -> String {
+        parse(text, "t.toml").unwrap_err().to_string()
+    }
+
+    #[test]
+    fn minimal_scene() {
+        let p = parse(MINIMAL, "problems/min.toml").unwrap();
+        assert_eq!(p.name, "min");
+        assert_eq!(p.scene.load, 10e-6);
+        assert_eq!(p.scene.hardness, 10e9);
+        assert_eq!(p.scene.wear_area, WearArea::Total);
+        assert_eq!(p.scene.interatomic_distance, DEFAULT_INTERATOMIC_DISTANCE);
+        assert!(p
+            .notes
+            .contains(&"hardness taken from catalogue: polysilicon, 10 GPa".to_string()));
+        assert_eq!(p.study, Study::default());
+    }
+
+    #[test]
+    fn accept_messages() {
+        let a = Accept::positive(Dimension::Length);
+        assert_eq!(
+            a.check(-5e-9).unwrap_err(),
+            "must be > 0 m (a positive length)"
+        );
+        let nu = Accept::interval(Dimension::Dimensionless, -1.0, true, 0.5, false);
+        assert_eq!(nu.check(0.6).unwrap_err(), "must be in (-1, 0.5]");
+        assert!(nu.check(0.5).is_ok());
+        let e = Accept::positive(Dimension::Pressure).or_inf("a rigid counterface");
+        assert!(e.check(f64::INFINITY).is_ok());
+        assert!(Accept::positive(Dimension::Pressure)
+            .check(f64::INFINITY)
+            .unwrap_err()
+            .contains("infinity is not allowed"));
+    }
+
+    #[test]
+    fn serde_errors_get_dotted_keys() {
+        let text = MINIMAL.replace("load =", "lod =");
+        let msg = err(&text);
+        assert!(
+            msg.starts_with("t.toml:3: unknown key `contact.lod`; did you mean `load`?"),
+            "{msg}"
+        );
+        let text = MINIMAL.replace(
+            "{ material = \"polysilicon\" }\nb",
+            "{ materal = \"polysilicon\" }\nb",
+        );
+        let msg = err(&text);
+        assert!(
+            msg.contains("t.toml:9: unknown key `bodies.a.materal`; did you mean `material`?"),
+            "{msg}"
+        );
+        let text = MINIMAL.replace("wear_coefficient = 1e-4", "wear_coefficient = true");
+        let msg = err(&text);
+        assert!(
+            msg.starts_with("t.toml:6: contact.wear_coefficient = true: wrong type"),
+            "{msg}"
+        );
+    }
+}

@@ -1,0 +1,211 @@
+//! Stage one of loading: the problem file exactly as written.
+//!
+//! Every table denies unknown keys, and every value is `Spanned` so that stage two
+//! ([`super::Problem::from_raw`]) can name the line of anything it refuses. Keys that the
+//! schema requires are still `Option` here: stage two reports their absence with the
+//! table's line and an example, which serde's "missing field" cannot.
+
+use std::fmt;
+
+use serde::de::{self, Deserializer, Visitor};
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A dimensional value as written: a TOML number (SI) or a string with a unit.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RawQuantity {
+    /// A TOML integer or float, read in SI units.
+    Number(f64),
+    /// A string such as `"10 uN"`.
+    Text(String),
+}
+
+impl RawQuantity {
+    /// As input to [`super::units::parse_quantity`].
+    pub fn as_input(&self) -> super::units::QuantityInput<'_> {
+        match self {
+            RawQuantity::Number(x) => super::units::QuantityInput::Number(*x),
+            RawQuantity::Text(s) => super::units::QuantityInput::Text(s),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for RawQuantity {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct QuantityVisitor;
+        impl Visitor<'_> for QuantityVisitor {
+            type Value = RawQuantity;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number in SI units or a string with a unit such as \"10 uN\"")
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<RawQuantity, E> {
+                Ok(RawQuantity::Number(v as f64))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<RawQuantity, E> {
+                Ok(RawQuantity::Number(v as f64))
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<RawQuantity, E> {
+                Ok(RawQuantity::Number(v))
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<RawQuantity, E> {
+                Ok(RawQuantity::Text(v.to_string()))
+            }
+        }
+        deserializer.deserialize_any(QuantityVisitor)
+    }
+}
+
+/// An integer setting. Integral floats (`1e6`) are accepted so that the range check,
+/// not the type check, explains what is wrong with them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RawInteger(pub i64);
+
+impl<'de> Deserialize<'de> for RawInteger {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct IntegerVisitor;
+        impl Visitor<'_> for IntegerVisitor {
+            type Value = RawInteger;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("an integer")
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<RawInteger, E> {
+                Ok(RawInteger(v))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<RawInteger, E> {
+                i64::try_from(v)
+                    .map(RawInteger)
+                    .map_err(|_| E::invalid_value(de::Unexpected::Unsigned(v), &self))
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<RawInteger, E> {
+                if v.fract() == 0.0 && v.abs() < 9.0e18 {
+                    Ok(RawInteger(v as i64))
+                } else {
+                    Err(E::invalid_value(de::Unexpected::Float(v), &self))
+                }
+            }
+        }
+        deserializer.deserialize_any(IntegerVisitor)
+    }
+}
+
+/// The whole file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawProblem {
+    pub name: Option<Spanned<String>>,
+    pub contact: Option<Spanned<RawContact>>,
+    pub bodies: Option<Spanned<RawBodies>>,
+    pub interface: Option<Spanned<RawInterface>>,
+    pub roughness: Option<Spanned<RawRoughness>>,
+    pub design: Option<Spanned<RawDesign>>,
+    pub objective: Option<Spanned<RawObjective>>,
+    #[serde(default)]
+    pub constraint: Vec<Spanned<RawConstraint>>,
+    pub pareto: Option<Spanned<RawPareto>>,
+    pub optimizer: Option<Spanned<RawOptimizer>>,
+}
+
+/// `[contact]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContact {
+    pub load: Option<Spanned<RawQuantity>>,
+    pub nominal_area: Option<Spanned<RawQuantity>>,
+    pub sliding_distance: Option<Spanned<RawQuantity>>,
+    pub wear_coefficient: Option<Spanned<RawQuantity>>,
+    pub wear_area: Option<Spanned<String>>,
+}
+
+/// `[bodies]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBodies {
+    pub a: Option<Spanned<RawBody>>,
+    pub b: Option<Spanned<RawBody>>,
+}
+
+/// `bodies.a` or `bodies.b`: a catalogue material, explicit constants, or both
+/// (explicit constants override the catalogue).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBody {
+    pub material: Option<Spanned<String>>,
+    pub youngs_modulus: Option<Spanned<RawQuantity>>,
+    pub poisson_ratio: Option<Spanned<RawQuantity>>,
+}
+
+/// `[interface]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawInterface {
+    pub hardness: Option<Spanned<RawQuantity>>,
+    pub work_of_adhesion: Option<Spanned<RawQuantity>>,
+    pub interatomic_distance: Option<Spanned<RawQuantity>>,
+}
+
+/// `[roughness]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawRoughness {
+    pub sigma: Option<Spanned<RawQuantity>>,
+    pub asperity_radius: Option<Spanned<RawQuantity>>,
+    pub asperity_density: Option<Spanned<RawQuantity>>,
+}
+
+/// `{ min = …, max = … }` of one design variable.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBound {
+    pub min: Option<Spanned<RawQuantity>>,
+    pub max: Option<Spanned<RawQuantity>>,
+}
+
+/// `[design]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawDesign {
+    pub youngs_modulus: Option<Spanned<RawBound>>,
+    pub poisson_ratio: Option<Spanned<RawBound>>,
+    pub hardness: Option<Spanned<RawBound>>,
+    pub work_of_adhesion: Option<Spanned<RawBound>>,
+    pub sigma: Option<Spanned<RawBound>>,
+    pub asperity_radius: Option<Spanned<RawBound>>,
+    pub asperity_density: Option<Spanned<RawBound>>,
+    pub materials: Option<Spanned<Vec<Spanned<String>>>>,
+}
+
+/// `[objective]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawObjective {
+    pub minimize: Option<Spanned<String>>,
+}
+
+/// One `[[constraint]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawConstraint {
+    pub quantity: Option<Spanned<String>>,
+    pub min: Option<Spanned<RawQuantity>>,
+    pub max: Option<Spanned<RawQuantity>>,
+}
+
+/// `[pareto]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPareto {
+    pub adhesion: Option<Spanned<String>>,
+    pub points: Option<Spanned<RawInteger>>,
+    pub direction: Option<Spanned<String>>,
+}
+
+/// `[optimizer]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawOptimizer {
+    pub starts: Option<Spanned<RawInteger>>,
+    pub seed: Option<Spanned<RawInteger>>,
+    pub tolerance: Option<Spanned<RawQuantity>>,
+    pub max_iterations: Option<Spanned<RawInteger>>,
+    pub time_limit: Option<Spanned<RawQuantity>>,
+}

@@ -1,0 +1,817 @@
+//! Quantities with units: `"10 uN"`, `"100 um^2"`, `"0.1 J/m^2"`, or plain SI numbers.
+//!
+//! A problem file may give every dimensional value either as a TOML number, read as SI
+//! (newtons, metres, pascals, ...), or as a string holding a number and a unit. The unit
+//! takes one SI prefix:
+//!
+//! | prefix | factor |
+//! |---|---|
+//! | `p` | 1e-12 |
+//! | `n` | 1e-9 |
+//! | `u`, `µ` (micro sign), `μ` (Greek mu) | 1e-6 |
+//! | `m` | 1e-3 |
+//! | `k` | 1e3 |
+//! | `M` | 1e6 |
+//! | `G` | 1e9 |
+//! | `T` | 1e12 |
+//!
+//! Where the unit is a power of a length (`m^2`, `m^-2`), the prefix belongs to the
+//! length and is raised with it: `"100 um^2"` is 1e-10 m², `"10 um^-2"` is 1e13 m⁻².
+//! In `"mJ/m^2"` and `"mN/m"` the prefix belongs to the J or the N. `²` and `⁻²` may be
+//! written for `^2` and `^-2`, and `1/um^2` or `/um^2` for `um^-2`. Whitespace between the
+//! number and the unit is optional. `"inf"` and `"infinity"` (any case, optionally signed
+//! and optionally followed by a unit) read as infinity; whether a field accepts it is the
+//! field's business, not the parser's. `NaN` is never a value.
+
+use std::fmt;
+
+/// The physical dimension a field expects.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Dimension {
+    /// Pa (hardness, Young's modulus, pressures).
+    Pressure,
+    /// N (load, pull-off force).
+    Force,
+    /// m (roughness, radii, distances).
+    Length,
+    /// m² (nominal area; also wear rate m³/m).
+    Area,
+    /// m⁻² (asperity density).
+    InverseArea,
+    /// J/m² = N/m (work of adhesion).
+    SurfaceEnergy,
+    /// A pure number.
+    Dimensionless,
+    /// s (time limits).
+    Time,
+}
+
+impl Dimension {
+    /// Every dimension, for looking up which one a unit belongs to.
+    pub const ALL: [Dimension; 8] = [
+        Dimension::Pressure,
+        Dimension::Force,
+        Dimension::Length,
+        Dimension::Area,
+        Dimension::InverseArea,
+        Dimension::SurfaceEnergy,
+        Dimension::Dimensionless,
+        Dimension::Time,
+    ];
+
+    /// The dimension's name with an article: "a force".
+    pub fn with_article(self) -> &'static str {
+        match self {
+            Dimension::Pressure => "a pressure",
+            Dimension::Force => "a force",
+            Dimension::Length => "a length",
+            Dimension::Area => "an area",
+            Dimension::InverseArea => "an areal density",
+            Dimension::SurfaceEnergy => "a surface energy",
+            Dimension::Dimensionless => "a plain number",
+            Dimension::Time => "a time",
+        }
+    }
+
+    /// The dimension's bare name: "force".
+    pub fn name(self) -> &'static str {
+        match self {
+            Dimension::Pressure => "pressure",
+            Dimension::Force => "force",
+            Dimension::Length => "length",
+            Dimension::Area => "area",
+            Dimension::InverseArea => "areal density",
+            Dimension::SurfaceEnergy => "surface energy",
+            Dimension::Dimensionless => "dimensionless number",
+            Dimension::Time => "time",
+        }
+    }
+
+    /// The SI unit symbol used in messages ("" for dimensionless).
+    pub fn si_unit(self) -> &'static str {
+        match self {
+            Dimension::Pressure => "Pa",
+            Dimension::Force => "N",
+            Dimension::Length => "m",
+            Dimension::Area => "m^2",
+            Dimension::InverseArea => "m^-2",
+            Dimension::SurfaceEnergy => "J/m^2",
+            Dimension::Dimensionless => "",
+            Dimension::Time => "s",
+        }
+    }
+
+    /// What to write instead, with examples: `a force such as "10 uN", "2 mN" or a
+    /// number in newtons`.
+    pub fn expectation(self) -> &'static str {
+        match self {
+            Dimension::Pressure => {
+                "a pressure such as \"10 GPa\", \"500 MPa\" or a number in pascals"
+            }
+            Dimension::Force => "a force such as \"10 uN\", \"2 mN\" or a number in newtons",
+            Dimension::Length => "a length such as \"5 nm\", \"1 um\" or a number in metres",
+            Dimension::Area => {
+                "an area such as \"100 um^2\", \"1 mm^2\" or a number in square metres"
+            }
+            Dimension::InverseArea => {
+                "an areal density such as \"10 um^-2\", \"1e13 m^-2\" or a number per square metre"
+            }
+            Dimension::SurfaceEnergy => {
+                "a surface energy such as \"0.1 J/m^2\", \"50 mJ/m^2\" or a number in J/m^2"
+            }
+            Dimension::Dimensionless => "a plain number without a unit, such as 1e-4",
+            Dimension::Time => "a time such as \"30 s\", \"2 min\" or a number in seconds",
+        }
+    }
+}
+
+impl fmt::Display for Dimension {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Why a quantity could not be read.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum UnitError {
+    /// The string was empty or only whitespace.
+    #[error("empty value; expected {}", .expected.expectation())]
+    Empty {
+        /// What the field wants.
+        expected: Dimension,
+    },
+    /// The string does not start with a number.
+    #[error("cannot read a number from {text:?}; expected {}", .expected.expectation())]
+    Malformed {
+        /// The offending text.
+        text: String,
+        /// What the field wants.
+        expected: Dimension,
+    },
+    /// The unit is not one this parser knows.
+    #[error("unknown unit {unit:?}; expected {}", .expected.expectation())]
+    UnknownUnit {
+        /// The unit as written.
+        unit: String,
+        /// What the field wants.
+        expected: Dimension,
+    },
+    /// The unit is a real unit, but of another dimension.
+    #[error("{unit:?} is a unit of {found}, not {expected}; expected {}", .expected.expectation())]
+    WrongDimension {
+        /// The unit as written.
+        unit: String,
+        /// The dimension the unit belongs to.
+        found: Dimension,
+        /// What the field wants.
+        expected: Dimension,
+    },
+    /// NaN was given (as a TOML float or as text).
+    #[error("NaN is not a value; expected {}", .expected.expectation())]
+    NotANumber {
+        /// What the field wants.
+        expected: Dimension,
+    },
+}
+
+/// A value as written in a file: a number (SI) or a string with a unit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum QuantityInput<'a> {
+    /// A plain number, read in SI units.
+    Number(f64),
+    /// A number followed by an optional unit.
+    Text(&'a str),
+}
+
+impl From<f64> for QuantityInput<'_> {
+    fn from(value: f64) -> Self {
+        QuantityInput::Number(value)
+    }
+}
+
+impl From<i64> for QuantityInput<'_> {
+    fn from(value: i64) -> Self {
+        QuantityInput::Number(value as f64)
+    }
+}
+
+impl<'a> From<&'a str> for QuantityInput<'a> {
+    fn from(value: &'a str) -> Self {
+        QuantityInput::Text(value)
+    }
+}
+
+impl<'a> From<&'a String> for QuantityInput<'a> {
+    fn from(value: &'a String) -> Self {
+        QuantityInput::Text(value)
+    }
+}
+
+/// Reads a quantity of the given dimension and returns it in SI units.
+///
+/// ```
+/// use wearopt::problem::units::{parse_quantity, Dimension};
+/// assert_eq!(parse_quantity("10 uN", Dimension::Force).unwrap(), 10e-6);
+/// assert_eq!(parse_quantity(2.5, Dimension::Length).unwrap(), 2.5);
+/// assert!(parse_quantity("10 GPa", Dimension::Force).is_err());
+/// ```
+pub fn parse_quantity<'a>(
+    value: impl Into<QuantityInput<'a>>,
+    expected: Dimension,
+) -> Result<f64, UnitError> {
+    match value.into() {
+        QuantityInput::Number(x) if x.is_nan() => Err(UnitError::NotANumber { expected }),
+        QuantityInput::Number(x) => Ok(x),
+        QuantityInput::Text(text) => parse_text(text, expected),
+    }
+}
+
+fn parse_text(text: &str, expected: Dimension) -> Result<f64, UnitError> {
+    let trimmed = text.trim();
+    if trimmed.is_empty() {
+        return Err(UnitError::Empty { expected });
+    }
+    let (number, rest) = split_number(trimmed).ok_or_else(|| {
+        if trimmed.to_ascii_lowercase().contains("nan") {
+            UnitError::NotANumber { expected }
+        } else {
+            UnitError::Malformed {
+                text: text.to_string(),
+                expected,
+            }
+        }
+    })?;
+    let unit = rest.trim();
+    let factor = unit_factor(unit, expected)?;
+    Ok(number.scaled(factor.exp10, factor.mult))
+}
+
+/// A number as written: decimal digits with a power of ten, or an infinity.
+#[derive(Debug, Clone, Copy)]
+enum Number<'a> {
+    /// `mantissa` × 10^`exp`; the mantissa is the sign, digits and point as written.
+    Finite { mantissa: &'a str, exp: i64 },
+    /// ±inf.
+    Infinite(f64),
+}
+
+impl Number<'_> {
+    /// The value times 10^`shift` times `mult`. The power of ten is applied while
+    /// parsing, so `"10 uN"` is exactly the double nearest 1e-5.
+    fn scaled(self, shift: i32, mult: f64) -> f64 {
+        match self {
+            Number::Infinite(x) => x,
+            Number::Finite { mantissa, exp } => {
+                let e = exp
+                    .saturating_add(i64::from(shift))
+                    .clamp(-100_000, 100_000);
+                let x: f64 = format!("{mantissa}e{e}").parse().unwrap_or(f64::NAN);
+                x * mult
+            }
+        }
+    }
+}
+
+/// Splits a leading number (decimal, exponent, or inf/infinity) from the rest.
+fn split_number(s: &str) -> Option<(Number<'_>, &str)> {
+    let bytes = s.as_bytes();
+    let mut i = 0;
+    let mut negative = false;
+    if i < bytes.len() && (bytes[i] == b'+' || bytes[i] == b'-') {
+        negative = bytes[i] == b'-';
+        i += 1;
+    }
+    let after_sign = &s[i..];
+    let head: String = after_sign.chars().take(8).collect::<String>();
+    let head = head.to_ascii_lowercase();
+    let word = if head.starts_with("infinity") {
+        Some(8)
+    } else if head.starts_with("inf") {
+        Some(3)
+    } else {
+        None
+    };
+    if let Some(len) = word {
+        let rest = &after_sign[len..];
+        // "info" or "infGPa" is not infinity: a unit after inf needs a space.
+        if rest.starts_with(|c: char| c.is_alphanumeric()) {
+            return None;
+        }
+        let value = if negative {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        };
+        return Some((Number::Infinite(value), rest));
+    }
+    let mut digits = 0;
+    while i < bytes.len() && bytes[i].is_ascii_digit() {
+        i += 1;
+        digits += 1;
+    }
+    if i < bytes.len() && bytes[i] == b'.' {
+        i += 1;
+        while i < bytes.len() && bytes[i].is_ascii_digit() {
+            i += 1;
+            digits += 1;
+        }
+    }
+    if digits == 0 {
+        return None;
+    }
+    let mantissa = &s[..i];
+    // "5." and ".5" are numbers; Rust's parser agrees, check it once here.
+    mantissa.parse::<f64>().ok()?;
+    let mut exp = 0_i64;
+    // An exponent only counts when digits follow: "1e-6 N" but "1 eV" is a unit.
+    if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
+        let mut j = i + 1;
+        if j < bytes.len() && (bytes[j] == b'+' || bytes[j] == b'-') {
+            j += 1;
+        }
+        let exp_start = j;
+        while j < bytes.len() && bytes[j].is_ascii_digit() {
+            j += 1;
+        }
+        if j > exp_start {
+            let digits = &s[exp_start..j];
+            let magnitude: i64 = digits.parse().unwrap_or(i64::from(i32::MAX));
+            exp = if bytes[i + 1] == b'-' {
+                -magnitude
+            } else {
+                magnitude
+            };
+            i = j;
+        }
+    }
+    Some((Number::Finite { mantissa, exp }, &s[i..]))
+}
+
+/// SI prefixes and their factors. `u`, `µ` (U+00B5) and `μ` (U+03BC) all mean micro.
+const PREFIXES: [(&str, i32); 10] = [
+    ("p", -12),
+    ("n", -9),
+    ("u", -6),
+    ("\u{00b5}", -6),
+    ("\u{03bc}", -6),
+    ("m", -3),
+    ("k", 3),
+    ("M", 6),
+    ("G", 9),
+    ("T", 12),
+];
+
+/// A unit's factor to SI: 10^`exp10` × `mult`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Factor {
+    exp10: i32,
+    mult: f64,
+}
+
+impl Factor {
+    const ONE: Factor = Factor {
+        exp10: 0,
+        mult: 1.0,
+    };
+    fn pow10(exp10: i32) -> Factor {
+        Factor { exp10, mult: 1.0 }
+    }
+}
+
+/// Canonical spelling of a unit: no whitespace, `^` powers, `**` read as `^`.
+fn normalize(unit: &str) -> String {
+    let mut s: String = unit.chars().filter(|c| !c.is_whitespace()).collect();
+    s = s.replace("**", "^");
+    s = s.replace("\u{207b}\u{00b2}", "^-2"); // ⁻²
+    s = s.replace('\u{00b2}', "^2"); // ²
+    if let Some(rest) = s.strip_prefix("1/") {
+        s = format!("/{rest}");
+    }
+    if let Some(rest) = s.strip_prefix("per") {
+        if rest.ends_with("^2") {
+            s = format!("/{rest}");
+        }
+    }
+    // "/um^2" is "um^-2".
+    if let Some(rest) = s.strip_prefix('/') {
+        if let Some(base) = rest.strip_suffix("^2") {
+            s = format!("{base}^-2");
+        }
+    }
+    s
+}
+
+/// Splits an optional prefix from a base unit and returns the prefix's power of ten.
+fn prefixed(unit: &str, base: &str) -> Option<i32> {
+    if unit == base {
+        return Some(0);
+    }
+    let head = unit.strip_suffix(base)?;
+    PREFIXES
+        .iter()
+        .find(|(p, _)| *p == head)
+        .map(|(_, exp)| *exp)
+}
+
+/// The factor that turns a value in `unit` into SI units of `dimension`, if `unit` is a
+/// unit of that dimension.
+fn factor_in(unit: &str, dimension: Dimension) -> Option<Factor> {
+    let pow10 = |e: Option<i32>| e.map(Factor::pow10);
+    match dimension {
+        Dimension::Dimensionless => unit.is_empty().then_some(Factor::ONE),
+        Dimension::Pressure => pow10(prefixed(unit, "Pa")),
+        Dimension::Force => pow10(prefixed(unit, "N")),
+        Dimension::Length => pow10(
+            prefixed(unit, "m")
+                .or_else(|| (unit == "\u{00c5}" || unit == "\u{212b}").then_some(-10)),
+        ),
+        Dimension::Area => pow10(prefixed(unit, "m^2").map(|e| 2 * e)),
+        Dimension::InverseArea => pow10(prefixed(unit, "m^-2").map(|e| -2 * e)),
+        Dimension::SurfaceEnergy => {
+            pow10(prefixed(unit, "J/m^2").or_else(|| prefixed(unit, "N/m")))
+        }
+        Dimension::Time => match unit {
+            "min" => Some(Factor {
+                exp10: 0,
+                mult: 60.0,
+            }),
+            "h" => Some(Factor {
+                exp10: 0,
+                mult: 3600.0,
+            }),
+            _ => pow10(prefixed(unit, "s")),
+        },
+    }
+}
+
+fn unit_factor(unit: &str, expected: Dimension) -> Result<Factor, UnitError> {
+    let norm = normalize(unit);
+    if let Some(factor) = factor_in(&norm, expected) {
+        return Ok(factor);
+    }
+    if norm.is_empty() {
+        // A bare number in a string is SI, like a TOML number.
+        return Ok(Factor::ONE);
+    }
+    for other in Dimension::ALL {
+        if other != expected && factor_in(&norm, other).is_some() {
+            return Err(UnitError::WrongDimension {
+                unit: unit.to_string(),
+                found: other,
+                expected,
+            });
+        }
+    }
+    Err(UnitError::UnknownUnit {
+        unit: unit.to_string(),
+        expected,
+    })
+}
+
+/// Formats an SI value with an engineering prefix: `format_quantity(1e-8, Length)` is
+/// `"10 nm"`. Infinity prints as `"inf"`. Used in notes and messages.
+pub fn format_quantity(value: f64, dimension: Dimension) -> String {
+    if value.is_infinite() {
+        return if value > 0.0 { "inf" } else { "-inf" }.to_string();
+    }
+    let unit = dimension.si_unit();
+    if unit.is_empty() {
+        return format_number(value);
+    }
+    // The power of the length a prefix is raised to.
+    let power = match dimension {
+        Dimension::Area => 2,
+        Dimension::InverseArea => -2,
+        _ => 1,
+    };
+    if value == 0.0 {
+        return format!("0 {unit}");
+    }
+    let candidates: [(&str, f64); 9] = [
+        ("p", 1e-12),
+        ("n", 1e-9),
+        ("u", 1e-6),
+        ("m", 1e-3),
+        ("", 1.0),
+        ("k", 1e3),
+        ("M", 1e6),
+        ("G", 1e9),
+        ("T", 1e12),
+    ];
+    // Lengths and their powers read best with m, um, nm; pressures with Pa, MPa, GPa.
+    let allowed: &[&str] = match dimension {
+        Dimension::Length | Dimension::Area | Dimension::InverseArea => &["n", "u", "m", ""],
+        Dimension::Time => &["n", "u", "m", ""],
+        Dimension::SurfaceEnergy => &["m", ""],
+        _ => &["p", "n", "u", "m", "", "k", "M", "G", "T"],
+    };
+    // The prefix giving the smallest scaled value that is still >= 1; failing that,
+    // the largest scaled value.
+    let mut best: Option<(&str, f64, f64)> = None;
+    for (p, f) in candidates {
+        if !allowed.contains(&p) {
+            continue;
+        }
+        let scaled = value.abs() / f.powi(power);
+        best = match best {
+            None => Some((p, f, scaled)),
+            Some(b) => {
+                let better = if scaled >= 1.0 {
+                    b.2 < 1.0 || scaled < b.2
+                } else {
+                    b.2 < 1.0 && scaled > b.2
+                };
+                if better {
+                    Some((p, f, scaled))
+                } else {
+                    Some(b)
+                }
+            }
+        };
+    }
+    let best = best.map_or(("", 1.0), |(p, f, _)| (p, f));
+    let scaled = value / best.1.powi(power);
+    let base = match dimension {
+        Dimension::Area => "m^2",
+        Dimension::InverseArea => "m^-2",
+        _ => unit,
+    };
+    format!("{} {}{}", format_number(scaled), best.0, base)
+}
+
+/// A short decimal form of a number: up to 4 significant digits, no trailing zeros.
+pub fn format_number(value: f64) -> String {
+    if value == 0.0 {
+        return "0".to_string();
+    }
+    if value.is_infinite() {
+        return if value > 0.0 { "inf" } else { "-inf" }.to_string();
+    }
+    let magnitude = value.abs().log10().floor();
+    if !(-4.0..6.0).contains(&magnitude) {
+        let s = format!("{value:.3e}");
+        // 1.000e-9 -> 1e-9
+        if let Some((mantissa, exp)) = s.split_once('e') {
+            let m = mantissa.trim_end_matches('0').trim_end_matches('.');
+            return format!("{m}e{exp}");
+        }
+        return s;
+    }
+    let decimals = (3.0 - magnitude).max(0.0) as usize;
+    let s = format!("{value:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() <= 1e-12 * b.abs().max(1e-300)
+    }
+
+    fn q(text: &str, d: Dimension) -> f64 {
+        parse_quantity(text, d).unwrap_or_else(|e| panic!("{text}: {e}"))
+    }
+
+    #[test]
+    fn every_prefix_on_force() {
+        let cases = [
+            ("1 pN", 1e-12),
+            ("1 nN", 1e-9),
+            ("1 uN", 1e-6),
+            ("1 \u{00b5}N", 1e-6),
+            ("1 \u{03bc}N", 1e-6),
+            ("1 mN", 1e-3),
+            ("1 N", 1.0),
+            ("1 kN", 1e3),
+            ("1 MN", 1e6),
+            ("1 GN", 1e9),
+            ("1 TN", 1e12),
+        ];
+        for (text, want) in cases {
+            assert!(close(q(text, Dimension::Force), want), "{text}");
+        }
+    }
+
+    #[test]
+    fn every_unit() {
+        assert!(close(q("160 GPa", Dimension::Pressure), 160e9));
+        assert!(close(q("500 MPa", Dimension::Pressure), 500e6));
+        assert!(close(q("3 kPa", Dimension::Pressure), 3e3));
+        assert!(close(q("7 Pa", Dimension::Pressure), 7.0));
+        assert!(close(q("5 nm", Dimension::Length), 5e-9));
+        assert!(close(q("1 um", Dimension::Length), 1e-6));
+        assert!(close(q("2 mm", Dimension::Length), 2e-3));
+        assert!(close(q("3 m", Dimension::Length), 3.0));
+        assert!(close(q("3 \u{00c5}", Dimension::Length), 3e-10));
+        assert!(close(q("100 um^2", Dimension::Area), 1e-10));
+        assert!(close(q("1 mm^2", Dimension::Area), 1e-6));
+        assert!(close(q("1 m^2", Dimension::Area), 1.0));
+        assert!(close(q("4 nm\u{00b2}", Dimension::Area), 4e-18));
+        assert!(close(q("10 um^-2", Dimension::InverseArea), 1e13));
+        assert!(close(q("10 /um^2", Dimension::InverseArea), 1e13));
+        assert!(close(q("10 1/um^2", Dimension::InverseArea), 1e13));
+        assert!(close(
+            q("10 um\u{207b}\u{00b2}", Dimension::InverseArea),
+            1e13
+        ));
+        assert!(close(q("1e13 m^-2", Dimension::InverseArea), 1e13));
+        assert!(close(q("0.1 J/m^2", Dimension::SurfaceEnergy), 0.1));
+        assert!(close(q("50 mJ/m^2", Dimension::SurfaceEnergy), 0.05));
+        assert!(close(q("50 mN/m", Dimension::SurfaceEnergy), 0.05));
+        assert!(close(q("0.2 N/m", Dimension::SurfaceEnergy), 0.2));
+        assert!(close(q("30 s", Dimension::Time), 30.0));
+        assert!(close(q("250 ms", Dimension::Time), 0.25));
+        assert!(close(q("2 min", Dimension::Time), 120.0));
+        assert!(close(q("1 h", Dimension::Time), 3600.0));
+        assert!(close(q("1e-4", Dimension::Dimensionless), 1e-4));
+    }
+
+    #[test]
+    fn prefixes_scale_exactly() {
+        // The power of ten is applied while parsing, so the result is the double
+        // nearest the decimal value, as if the SI number had been typed.
+        assert_eq!(q("10 uN", Dimension::Force), 10e-6);
+        assert_eq!(q("800 uN", Dimension::Force), 800e-6);
+        assert_eq!(q("100 um^2", Dimension::Area), 100e-12);
+        assert_eq!(q("10 um^-2", Dimension::InverseArea), 10e12);
+        assert_eq!(q("50 mJ/m^2", Dimension::SurfaceEnergy), 0.05);
+        assert_eq!(q("0.3 nm", Dimension::Length), 0.3e-9);
+        assert_eq!(q("1.5e-3 GPa", Dimension::Pressure), 1.5e6);
+        assert_eq!(q("1e99999 N", Dimension::Force), f64::INFINITY);
+    }
+
+    #[test]
+    fn spacing_and_exponents() {
+        assert!(close(q("10uN", Dimension::Force), 10e-6));
+        assert!(close(q("  10   uN  ", Dimension::Force), 10e-6));
+        assert!(close(q("1e-6 N", Dimension::Force), 1e-6));
+        assert!(close(q("1E-6N", Dimension::Force), 1e-6));
+        assert!(close(q("1.5e+3 Pa", Dimension::Pressure), 1.5e3));
+        assert!(close(q(".5 nm", Dimension::Length), 0.5e-9));
+        assert!(close(q("5. nm", Dimension::Length), 5e-9));
+        assert!(close(q("-2 uN", Dimension::Force), -2e-6));
+        assert!(close(q("+2 uN", Dimension::Force), 2e-6));
+        assert!(close(q("100 um ^ 2", Dimension::Area), 1e-10));
+        assert!(close(q("100 um**2", Dimension::Area), 1e-10));
+        assert!(close(q("0.1 J / m^2", Dimension::SurfaceEnergy), 0.1));
+        // A string holding only a number is SI, like a TOML number.
+        assert!(close(q("1e-6", Dimension::Force), 1e-6));
+    }
+
+    #[test]
+    fn plain_numbers_are_si() {
+        assert_eq!(parse_quantity(1e-6, Dimension::Force), Ok(1e-6));
+        assert_eq!(parse_quantity(3_i64, Dimension::Length), Ok(3.0));
+        assert_eq!(
+            parse_quantity(f64::INFINITY, Dimension::Pressure),
+            Ok(f64::INFINITY)
+        );
+        assert_eq!(
+            parse_quantity(f64::NAN, Dimension::Pressure),
+            Err(UnitError::NotANumber {
+                expected: Dimension::Pressure
+            })
+        );
+    }
+
+    #[test]
+    fn infinity() {
+        for text in ["inf", "INF", "Inf", "infinity", "Infinity", "+inf", " inf "] {
+            assert_eq!(q(text, Dimension::Pressure), f64::INFINITY, "{text}");
+        }
+        assert_eq!(q("-inf", Dimension::Pressure), f64::NEG_INFINITY);
+        assert_eq!(q("inf GPa", Dimension::Pressure), f64::INFINITY);
+        assert!(matches!(
+            parse_quantity("info", Dimension::Pressure),
+            Err(UnitError::Malformed { .. })
+        ));
+        assert!(matches!(
+            parse_quantity("inf N", Dimension::Pressure),
+            Err(UnitError::WrongDimension { .. })
+        ));
+    }
+
+    #[test]
+    fn nan_is_rejected() {
+        for text in ["nan", "NaN", "-nan", "NaN Pa"] {
+            assert!(
+                matches!(
+                    parse_quantity(text, Dimension::Pressure),
+                    Err(UnitError::NotANumber { .. })
+                ),
+                "{text}"
+            );
+        }
+    }
+
+    #[test]
+    fn wrong_dimension_names_both() {
+        let err = parse_quantity("10 GPa", Dimension::Force).unwrap_err();
+        assert_eq!(
+            err,
+            UnitError::WrongDimension {
+                unit: "GPa".into(),
+                found: Dimension::Pressure,
+                expected: Dimension::Force
+            }
+        );
+        let msg = err.to_string();
+        assert!(
+            msg.contains("pressure") && msg.contains("a force such as"),
+            "{msg}"
+        );
+        // A length where an area is wanted, and the reverse.
+        assert!(matches!(
+            parse_quantity("100 um", Dimension::Area),
+            Err(UnitError::WrongDimension {
+                found: Dimension::Length,
+                ..
+            })
+        ));
+        assert!(matches!(
+            parse_quantity("100 um^2", Dimension::Length),
+            Err(UnitError::WrongDimension {
+                found: Dimension::Area,
+                ..
+            })
+        ));
+        assert!(matches!(
+            parse_quantity("1 nm", Dimension::Dimensionless),
+            Err(UnitError::WrongDimension { .. })
+        ));
+        assert!(matches!(
+            parse_quantity("0.1 N/m", Dimension::Force),
+            Err(UnitError::WrongDimension {
+                found: Dimension::SurfaceEnergy,
+                ..
+            })
+        ));
+    }
+
+    #[test]
+    fn unknown_units() {
+        let err = parse_quantity("10 uQ", Dimension::Force).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "unknown unit \"uQ\"; expected a force such as \"10 uN\", \"2 mN\" or a number in newtons"
+        );
+        for text in [
+            "10 xN",
+            "10 GGPa",
+            "10 nm^3",
+            "10 um^-3",
+            "1 eV",
+            "3 furlongs",
+        ] {
+            assert!(
+                matches!(
+                    parse_quantity(text, Dimension::Force),
+                    Err(UnitError::UnknownUnit { .. })
+                ),
+                "{text}"
+            );
+        }
+    }
+
+    #[test]
+    fn malformed_numbers() {
+        for text in ["abc", "uN", "e5 N", ".", "-", "--1 N", "ten uN"] {
+            assert!(
+                matches!(
+                    parse_quantity(text, Dimension::Force),
+                    Err(UnitError::Malformed { .. })
+                ),
+                "{text}"
+            );
+        }
+        for text in ["", "   "] {
+            assert!(matches!(
+                parse_quantity(text, Dimension::Force),
+                Err(UnitError::Empty { .. })
+            ));
+        }
+        // Junk after a number is an unknown unit, not silently ignored.
+        assert!(parse_quantity("1.2.3 N", Dimension::Force).is_err());
+        assert!(parse_quantity("1e N", Dimension::Force).is_err());
+    }
+
+    #[test]
+    fn formatting() {
+        assert_eq!(format_quantity(10e9, Dimension::Pressure), "10 GPa");
+        assert_eq!(format_quantity(1e-8, Dimension::Length), "10 nm");
+        assert_eq!(format_quantity(1e-10, Dimension::Area), "100 um^2");
+        assert_eq!(format_quantity(1e13, Dimension::InverseArea), "10 um^-2");
+        assert_eq!(format_quantity(0.1, Dimension::SurfaceEnergy), "100 mJ/m^2");
+        assert_eq!(format_quantity(f64::INFINITY, Dimension::Pressure), "inf");
+        assert_eq!(format_quantity(0.0, Dimension::Force), "0 N");
+        assert_eq!(format_quantity(-2e-6, Dimension::Force), "-2 uN");
+        assert_eq!(format_number(0.22), "0.22");
+        assert_eq!(format_number(1e-9), "1e-9");
+    }
+}

@@ -1,0 +1,241 @@
+//! The report of one scene evaluation (`wearopt eval`): text and JSON.
+
+use serde_json::{json, Map, Value};
+
+use super::{si, sig, sig_exp};
+use crate::model::{Evaluation, Scene, Sensitivity, WearArea};
+
+/// Everything an evaluation report shows.
+pub struct EvalReport<'a> {
+    /// The problem's name.
+    pub name: &'a str,
+    /// The scene as evaluated.
+    pub scene: &'a Scene,
+    /// Notes from reading the problem file (defaults taken, …).
+    pub input_notes: &'a [String],
+    /// The evaluation.
+    pub evaluation: &'a Evaluation,
+    /// Wear-rate elasticities.
+    pub sensitivities: &'a [Sensitivity],
+}
+
+fn opt(x: Option<f64>) -> Value {
+    x.map_or(Value::Null, |v| json!(v))
+}
+
+/// One JSON object, SI units.
+pub fn json(r: &EvalReport) -> String {
+    let ev = r.evaluation;
+    let mut v = serde_json::to_value(ev).unwrap_or(Value::Null);
+    if let Value::Object(obj) = &mut v {
+        // Indices at the top level, as the contract names them.
+        if let Some(Value::Object(idx)) = obj.remove("indices") {
+            for (k, x) in idx {
+                obj.insert(k, x);
+            }
+        }
+        let mut warnings = ev.warnings.clone();
+        warnings.extend(
+            r.input_notes
+                .iter()
+                .filter(|n| n.starts_with("warning"))
+                .cloned(),
+        );
+        obj.insert("warnings".into(), json!(warnings));
+        let mut notes: Vec<String> = r.input_notes.to_vec();
+        notes.extend(ev.notes.iter().cloned());
+        obj.insert("notes".into(), json!(notes));
+        obj.insert("name".into(), json!(r.name));
+        obj.insert(
+            "scene".into(),
+            serde_json::to_value(r.scene).unwrap_or(Value::Null),
+        );
+        let mut sens = Map::new();
+        for s in r.sensitivities {
+            sens.insert(
+                s.parameter.as_str().to_string(),
+                json!({
+                    "elasticity": opt(s.elasticity),
+                    "error": opt(s.error),
+                    "note": s.note,
+                }),
+            );
+        }
+        obj.insert("sensitivities".into(), Value::Object(sens));
+    }
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".to_string());
+    s.push('\n');
+    s
+}
+
+/// A report for people.
+pub fn text(r: &EvalReport) -> String {
+    let ev = r.evaluation;
+    let sc = r.scene;
+    let mut o = String::new();
+    let mut line = |s: String| {
+        o.push_str(&s);
+        o.push('\n');
+    };
+    line(format!("wearopt eval — {}", r.name));
+    line(String::new());
+    line("Scene".into());
+    let body_b = if sc.youngs_modulus_b.is_infinite() {
+        "rigid".to_string()
+    } else {
+        format!(
+            "E2 = {}, ν2 = {}",
+            si(sc.youngs_modulus_b, "Pa", 3),
+            sig(sc.poisson_ratio_b, 3)
+        )
+    };
+    line(format!(
+        "  rough body a: E1 = {}, ν1 = {}; counterface b: {}; equivalent modulus E = {}",
+        si(sc.youngs_modulus_a, "Pa", 3),
+        sig(sc.poisson_ratio_a, 3),
+        body_b,
+        si(ev.equivalent_modulus, "Pa", 4)
+    ));
+    line(format!(
+        "  hardness H = {}, work of adhesion γ = {}",
+        if sc.hardness.is_infinite() {
+            "∞ (no plasticity)".to_string()
+        } else {
+            si(sc.hardness, "Pa", 3)
+        },
+        if sc.work_of_adhesion == 0.0 {
+            "0 (no adhesion)".to_string()
+        } else {
+            format!("{} J/m²", sig_exp(sc.work_of_adhesion, 3))
+        }
+    ));
+    line(format!(
+        "  roughness σ = {}, asperity radius R = {}, density N = {} asperities/µm²",
+        si(sc.sigma, "m", 3),
+        si(sc.asperity_radius, "m", 3),
+        sig_exp(sc.asperity_density * 1e-12, 3)
+    ));
+    line(format!(
+        "  load W = {} on nominal area {} µm², sliding {}, wear coefficient k = {}, wearing area: {}",
+        si(sc.load, "N", 3),
+        sig_exp(sc.nominal_area * 1e12, 4),
+        si(sc.sliding_distance, "m", 3),
+        sig_exp(sc.wear_coefficient, 3),
+        match sc.wear_area {
+            WearArea::Total => "all contacts",
+            WearArea::Plastic => "plastic junctions only",
+        }
+    ));
+    for n in r.input_notes {
+        line(format!("  note: {n}"));
+    }
+    line(String::new());
+    line("Indices and regime".into());
+    let i = &ev.indices;
+    line(format!(
+        "  elastic adhesion index θ = {}   (≤ 10: adhesion matters)",
+        sig_exp(i.elastic_adhesion_index, 4)
+    ));
+    line(format!(
+        "  plastic adhesion index λ = {}   (≤ 0.125: adhesion matters)",
+        sig_exp(i.plastic_adhesion_index, 4)
+    ));
+    line(format!(
+        "  plasticity index ψ       = {}   ({})",
+        sig_exp(i.plasticity_index, 4),
+        ev.regime.deformation
+    ));
+    line(format!(
+        "  Tabor parameter φ0       = {}   (adhesion model: {})",
+        sig_exp(i.tabor_parameter, 4),
+        ev.regime.adhesion_model
+    ));
+    line(format!(
+        "  critical interference Δc·σ = {}",
+        si(ev.critical_interference, "m", 4)
+    ));
+    for w in &ev.warnings {
+        line(format!("  WARNING: {w}"));
+    }
+    for n in &ev.notes {
+        line(format!("  note: {n}"));
+    }
+    line(String::new());
+    line(format!("Contact (status: {})", ev.status.as_str()));
+    match ev.separation {
+        Some(d) => line(format!(
+            "  separation d = {}  (h = d/σ = {})",
+            si(d, "m", 5),
+            sig(ev.nondimensional_separation.unwrap_or(f64::NAN), 6)
+        )),
+        None => line("  separation: none — the surfaces are apart".into()),
+    }
+    line(format!(
+        "  real area A_r = {}  ({} of nominal; 10^{} m²)",
+        si(ev.real_area, "m²", 4),
+        sig_exp(ev.real_area_fraction, 3),
+        sig(ev.log10_real_area, 5)
+    ));
+    line(format!(
+        "    elastic contacts {}   plastic junctions {}  (plastic fraction {})",
+        si(ev.elastic_real_area, "m²", 4),
+        si(ev.plastic_real_area, "m²", 4),
+        sig_exp(ev.plastic_area_fraction, 3)
+    ));
+    line(format!(
+        "  contacts: {} in all, {} plastic",
+        sig_exp(ev.contact_count, 4),
+        sig_exp(ev.plastic_contact_count, 4)
+    ));
+    if let Some(p) = ev.mean_real_pressure {
+        line(format!("  mean real pressure W/A_r = {}", si(p, "Pa", 4)));
+    }
+    line(format!(
+        "  load carried: elastic {}, plastic {}",
+        si(ev.elastic_load, "N", 4),
+        si(ev.plastic_load, "N", 4)
+    ));
+    match (ev.pull_off_force, ev.log10_pull_off_force) {
+        (Some(f), Some(l)) => line(format!(
+            "  pull-off force {} (10^{} N) at d = {}; one asperity (JKR 1.5πγR): {}",
+            si(f, "N", 4),
+            sig(l, 5),
+            ev.pull_off_separation.map_or("-".into(), |d| si(d, "m", 4)),
+            si(ev.asperity_pull_off_force, "N", 3)
+        )),
+        (Some(f), None) => line(format!("  pull-off force {} (no adhesion)", si(f, "N", 3))),
+        _ => {}
+    }
+    line(String::new());
+    line("Wear (Archard, V = k A L)".into());
+    line(format!(
+        "  wear volume V = {} over {}",
+        si(ev.wear_volume, "m³", 4),
+        si(sc.sliding_distance, "m", 3)
+    ));
+    line(format!(
+        "  wear rate V/L = {}  (10^{} m³/m)",
+        si(ev.wear_rate, "m³/m", 4),
+        sig(ev.log10_wear_rate, 5)
+    ));
+    if !r.sensitivities.is_empty() {
+        line(String::new());
+        line(
+            "Sensitivity of wear rate: elasticity d ln(wear) / d ln x (central differences)".into(),
+        );
+        for s in r.sensitivities {
+            let name = s.parameter.as_str();
+            match (s.elasticity, s.error) {
+                (Some(e), Some(err)) => {
+                    line(format!("  {name:<17} {:>+12.6}  ± {}", e, sig_exp(err, 2)))
+                }
+                _ => line(format!(
+                    "  {name:<17} {:>12}  ({})",
+                    "—",
+                    s.note.as_deref().unwrap_or("")
+                )),
+            }
+        }
+    }
+    o
+}
