@@ -15,7 +15,7 @@
 //! branch, and no scan is needed. When J < 0 (strong adhesion, soft asperities)
 //! the last term is a bump of width ~1 around h = -Δc that can add a local
 //! maximum and minimum; there the critical points are isolated by a sign scan of
-//! P̄' (step 1/8 across the bump, 1 elsewhere, on an interval outside which the
+//! P̄' (step 1/8 across the bump, growing away from it, on an interval outside which the
 //! sign of P̄' is proven), and roots are then found on monotone pieces.
 
 use std::cmp::Ordering;
@@ -175,7 +175,11 @@ pub fn landscape(model: &Model) -> Landscape {
         while prev.separation < right.separation && ev.evaluations < MAX_EVALUATIONS {
             let h = prev.separation;
             let fine = h >= bump_lo - 1.0 && h <= bump_hi;
-            let next_h = (h + if fine { 0.125 } else { 1.0 }).min(right.separation);
+            // Fine across the bump; away from it P̄' is that of the continuous
+            // law (one sign change, which no step can miss), so steps grow.
+            let away = (bump_lo - h).max(h - bump_hi).max(0.0);
+            let step = if fine { 0.125 } else { (0.1 * away).max(1.0) };
+            let next_h = (h + step).min(right.separation);
             let next = if next_h == right.separation {
                 right
             } else {

@@ -1,0 +1,200 @@
+//! The command line end to end: outputs, contracts of JSON/CSV keys, exit codes.
+
+use assert_cmd::Command;
+
+fn wearopt() -> Command {
+    Command::cargo_bin("wearopt").expect("binary builds")
+}
+
+#[test]
+fn eval_json_has_the_contract_keys() {
+    for name in ["micro-gear", "dlc-contact", "gold-switch"] {
+        let out = wearopt()
+            .args(["eval", &format!("problems/{name}.toml"), "--format", "json"])
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone();
+        let v: serde_json::Value = serde_json::from_slice(&out).expect("valid JSON");
+        for key in [
+            "status",
+            "warnings",
+            "separation",
+            "real_area",
+            "plastic_real_area",
+            "contact_count",
+            "pull_off_force",
+            "wear_volume",
+            "wear_rate",
+            "elastic_adhesion_index",
+            "plastic_adhesion_index",
+            "plasticity_index",
+            "tabor_parameter",
+            "sensitivities",
+        ] {
+            assert!(v.get(key).is_some(), "{name}: missing {key}");
+        }
+        assert_eq!(v["status"], "ok");
+        let sens = &v["sensitivities"];
+        for key in [
+            "youngs_modulus",
+            "hardness",
+            "work_of_adhesion",
+            "sigma",
+            "asperity_radius",
+        ] {
+            assert!(sens.get(key).is_some(), "{name}: sensitivities.{key}");
+        }
+        // Wear rate = k · area, volume = rate · L (eq. 13), as written.
+        let rate = v["wear_rate"].as_f64().unwrap();
+        let vol = v["wear_volume"].as_f64().unwrap();
+        let l = v["scene"]["sliding_distance"].as_f64().unwrap();
+        assert!((vol / (rate * l) - 1.0).abs() < 1e-15);
+        assert!(rate > 0.0);
+    }
+}
+
+#[test]
+fn eval_text_reports_the_sections() {
+    let out = wearopt()
+        .args(["eval", "problems/micro-gear.toml"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    for part in [
+        "Indices and regime",
+        "separation d =",
+        "real area",
+        "pull-off force",
+        "wear rate",
+        "Sensitivity",
+    ] {
+        assert!(text.contains(part), "missing {part}:\n{text}");
+    }
+}
+
+#[test]
+fn curve_csv_and_json() {
+    let out = wearopt()
+        .args([
+            "curve", "--theta", "inf", "--lambda", "inf", "--from", "0", "--to", "2", "--points",
+            "3",
+        ])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let csv = String::from_utf8(out).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "h,load,area,plastic_area,critical_interference,dload_dh"
+    );
+    let first: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
+    // Greenwood–Williamson at h = 0: P̄ = 2^{1/4} Γ(5/4), Ā = 1 (closed forms).
+    assert_eq!(first[0], 0.0);
+    assert!((first[1] / (2f64.powf(0.25) * 0.906_402_477_055_477_1) - 1.0).abs() < 1e-13);
+    assert!((first[2] - 1.0).abs() < 1e-15);
+    assert_eq!(csv.lines().count(), 4);
+
+    let out = wearopt()
+        .args([
+            "curve", "--theta", "10", "--lambda", "0.125", "--from", "-1", "--to", "-1",
+            "--points", "1", "--format", "json",
+        ])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 1);
+    for key in ["h", "load", "area", "plastic_area", "critical_interference"] {
+        assert!(rows[0].get(key).is_some());
+    }
+}
+
+#[test]
+fn bad_input_exits_2_with_a_message() {
+    let dir = std::env::temp_dir().join(format!("wearopt-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("bad.toml");
+    std::fs::write(
+        &f,
+        std::fs::read_to_string("problems/micro-gear.toml")
+            .unwrap()
+            .replacen("load = \"800 uN\"", "load = \"800 uQ\"", 1),
+    )
+    .unwrap();
+    let out = wearopt()
+        .args(["eval", f.to_str().unwrap()])
+        .assert()
+        .code(2)
+        .get_output()
+        .stderr
+        .clone();
+    let msg = String::from_utf8(out).unwrap();
+    assert!(
+        msg.contains("contact.load") && msg.contains("uQ") && msg.contains("bad.toml"),
+        "{msg}"
+    );
+
+    wearopt()
+        .args(["eval", "no/such/file.toml"])
+        .assert()
+        .code(2);
+    wearopt()
+        .args([
+            "curve", "--theta", "-1", "--lambda", "1", "--from", "0", "--to", "1", "--points", "2",
+        ])
+        .assert()
+        .code(2);
+    wearopt()
+        .args([
+            "curve", "--theta", "1", "--lambda", "1", "--from", "2", "--to", "1", "--points", "2",
+        ])
+        .assert()
+        .code(2);
+    wearopt()
+        .args([
+            "curve", "--theta", "1", "--lambda", "1", "--from", "0", "--to", "1", "--points", "0",
+        ])
+        .assert()
+        .code(2);
+    wearopt().args(["frobnicate"]).assert().code(2);
+}
+
+#[test]
+fn tensile_beyond_pull_off_is_an_outcome() {
+    let dir = std::env::temp_dir().join(format!("wearopt-cli-sep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("pulled.toml");
+    std::fs::write(
+        &f,
+        std::fs::read_to_string("problems/micro-gear.toml")
+            .unwrap()
+            .replacen("load = \"800 uN\"", "load = \"-1 mN\"", 1),
+    )
+    .unwrap();
+    let out = wearopt()
+        .args(["eval", f.to_str().unwrap(), "--format", "json"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["status"], "separated");
+    assert_eq!(v["wear_rate"], 0.0);
+}

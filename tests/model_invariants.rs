@@ -1,0 +1,192 @@
+//! Limits, invariants and the numbers MODEL.md quotes, each with its provenance.
+
+use wearopt::model::{
+    asperity, find_pull_off, landscape, solve_separation, Coefficients, Model, Quadrature,
+    SeparationOutcome,
+};
+
+fn contact_h(o: SeparationOutcome) -> f64 {
+    match o {
+        SeparationOutcome::Contact { separation, .. } => separation,
+        other => panic!("expected contact, got {other:?}"),
+    }
+}
+
+/// γ → 0 is Greenwood–Williamson: with c_a tiny the load tends to the c_a = 0 value,
+/// and at c_a = 0, H = ∞: P̄(0) = √(2π) F_{3/2}(0) = 2^{1/4} Γ(5/4) (closed form;
+/// Γ(5/4) = 0.9064024770554771, A&S 6.1).
+#[test]
+fn no_adhesion_limit_is_greenwood_williamson() {
+    let gw = Model::new(Coefficients::new(0.0, f64::INFINITY));
+    let exact = 2f64.powf(0.25) * 0.906_402_477_055_477_1;
+    assert!((gw.at(0.0).load().value() / exact - 1.0).abs() < 1e-13);
+    // Continuity in γ: c_a = 1e-9 differs from c_a = 0 by O(c_a).
+    for &h in &[-2.0, 0.0, 1.5, 4.0] {
+        let a = Model::new(Coefficients::new(0.0, 2.0)).at(h).load().value();
+        let b = Model::new(Coefficients::new(1e-9, 2.0))
+            .at(h)
+            .load()
+            .value();
+        assert!((a - b).abs() < 1e-7 * a.abs(), "h={h}: {a} {b}");
+    }
+    // Ā(0) = √(2π) F_1(0) = 1 exactly.
+    assert!((gw.at(0.0).area().value() - 1.0).abs() < 1e-15);
+}
+
+/// JKR: one asperity's pull-off is -(3/2)πγR, i.e. -c_a²/4 in model units, and
+/// its load at zero interference is -(4/3)πγR = -c_a c_d/3 (MODEL.md §3).
+#[test]
+fn jkr_single_asperity() {
+    let m = Model::new(Coefficients::from_indices(7.0, 0.3));
+    let c = m.coefficients;
+    let theta = 7.0;
+    // In units of γR: c_a²/4 · K R^{1/2} σ^{3/2} = (6π/θ)/4 · θ γR = 1.5π γR.
+    assert!(
+        (-asperity::jkr_pull_off(&m) * theta / (1.5 * std::f64::consts::PI) - 1.0).abs() < 1e-14
+    );
+    assert!(
+        (-asperity::elastic_load(&m, 0.0) * theta / (4.0 / 3.0 * std::f64::consts::PI) - 1.0).abs()
+            < 1e-13
+    );
+    assert!((c.c_0 * theta / (2.0 * std::f64::consts::PI) - 1.0).abs() < 1e-14);
+}
+
+/// MODEL.md §4's quoted values (its own high-precision evaluation).
+#[test]
+fn model_md_quoted_values() {
+    let m = Model::new(Coefficients::from_indices(10.0, 1.0));
+    let po = find_pull_off(&m).unwrap();
+    assert!((po.separation - 1.86).abs() < 0.005, "{}", po.separation);
+    assert!((po.load.value() / -5.15e-3 - 1.0).abs() < 2e-3);
+
+    let m = Model::new(Coefficients::from_indices(0.1, 1e-3));
+    let land = landscape(&m);
+    let cps: Vec<(f64, f64)> = land
+        .critical_points
+        .iter()
+        .map(|c| (c.separation, c.load.value()))
+        .collect();
+    assert!(
+        cps.iter()
+            .any(|&(h, p)| (h + 25.489).abs() < 1e-3 && (p - 226.21).abs() < 5e-3),
+        "{cps:?}"
+    );
+    assert!(
+        cps.iter()
+            .any(|&(h, p)| (h + 28.838).abs() < 1e-3 && (p - 143.94).abs() < 5e-3),
+        "{cps:?}"
+    );
+    // P̄ = 180 has three roots; the rule takes the largest, right of the local maximum.
+    let h = contact_h(solve_separation(&m, 180.0));
+    assert!(h > -25.489);
+    assert!((m.at(h).load().value() / 180.0 - 1.0).abs() < 1e-12);
+
+    let m = Model::new(Coefficients::from_indices(1e4, 100.0));
+    let po = find_pull_off(&m).unwrap();
+    assert!((po.separation - 232.5).abs() < 0.05, "{}", po.separation);
+    // ≈ -2e-11753: log10 between -11753 and -11752.
+    let l = po.load.log10_abs();
+    assert!(l > -11753.0 && l < -11752.5, "{l}");
+    assert_eq!(po.load.value(), 0.0);
+    let h = contact_h(solve_separation(&m, 100.0));
+    assert!((h + 172.0).abs() < 1.0, "{h}");
+}
+
+/// Solving h for P̄(h) gives h back, on the stable branch, across the box.
+#[test]
+fn separation_round_trip() {
+    for &(theta, lambda) in &[
+        (1e-2, 1e-4),
+        (1.0, 1.0),
+        (10.0, 0.125),
+        (100.0, 5.0),
+        (1e6, 1e6),
+    ] {
+        let m = Model::new(Coefficients::from_indices(theta, lambda));
+        let po = find_pull_off(&m).unwrap();
+        for &h in &[-4.0, -1.0, 0.0, 1.0, 3.0, 8.0] {
+            if h >= po.separation {
+                continue;
+            }
+            let target = m.at(h).load().value();
+            if target == 0.0 {
+                continue;
+            }
+            let got = contact_h(solve_separation(&m, target));
+            assert!(
+                (got - h).abs() < 1e-9 * h.abs().max(1.0),
+                "θ={theta} λ={lambda} h={h}: {got}"
+            );
+        }
+    }
+    // Light loads on a GW surface: P̄ = 1e-300 still has a contact (h ≈ 37).
+    let gw = Model::new(Coefficients::new(0.0, f64::INFINITY));
+    let h = contact_h(solve_separation(&gw, 1e-300));
+    assert!((gw.at(h).load().ln_abs() - 1e-300f64.ln()).abs() < 1e-12);
+}
+
+/// Load falls with separation on the stable branch; plastic area ≤ total area;
+/// every output finite, over the extreme box.
+#[test]
+fn invariants_over_the_box() {
+    let thetas = [1e-4, 1e-3, 0.1, 10.0, 1e4, 1e8, 1e10];
+    let lambdas = [1e-8, 1e-6, 1e-2, 1.0, 1e4, 1e8];
+    for &theta in &thetas {
+        for &lambda in &lambdas {
+            let m = Model::new(Coefficients::from_indices(theta, lambda));
+            let po = find_pull_off(&m).unwrap();
+            let mut prev: Option<(f64, f64)> = None;
+            for i in 0..=90 {
+                let h = -10.0 + i as f64;
+                let at = m.at(h);
+                for x in [
+                    at.load_elastic,
+                    at.load_plastic,
+                    at.dload_dh_elastic,
+                    at.dload_dh_plastic,
+                    at.area,
+                    at.plastic_area,
+                ] {
+                    assert!(x.is_finite(), "θ={theta} λ={lambda} h={h}: {at:?}");
+                }
+                assert!(at.area >= 0.0 && at.plastic_area >= 0.0);
+                assert!(
+                    at.plastic_area <= at.area * (1.0 + 1e-12),
+                    "θ={theta} λ={lambda} h={h}"
+                );
+                let load = at.load();
+                if h < po.separation && m.transition.jump >= 0.0 {
+                    if let Some((_, p)) = prev {
+                        assert!(load.value() <= p, "θ={theta} λ={lambda} h={h}");
+                    }
+                    prev = Some((h, load.value()));
+                }
+            }
+        }
+    }
+}
+
+/// The quadrature converges: the default agrees with a much finer rule.
+#[test]
+fn default_quadrature_agrees_with_a_finer_rule() {
+    let fine = Quadrature {
+        order: 32,
+        log_weight_step: 2.5,
+        log_weight_cut: 60.0,
+    };
+    assert!(fine.validate().is_ok());
+    assert!(Quadrature::default().validate().is_ok());
+    let mut worst = 0.0f64;
+    for &theta in &[1e-3, 0.1, 1.0, 10.0, 100.0, 1e3, 1e4, 1e8] {
+        for &lambda in &[1e-6, 1e-3, 0.125, 1.0, 100.0, 1e6] {
+            for &h in &[-4.0, -1.0, 0.0, 0.5, 2.0, 5.0, 12.0, 35.0, 60.0] {
+                let c = Coefficients::from_indices(theta, lambda);
+                let a = Model::new(c).at(h);
+                let b = Model::with_quadrature(c, fine).at(h);
+                let scale = a.load_elastic.abs() + a.load_plastic.abs();
+                worst = worst.max((a.load_elastic - b.load_elastic).abs() / scale);
+            }
+        }
+    }
+    assert!(worst < 1e-13, "worst {worst:e}");
+}
