@@ -188,5 +188,7 @@ fn default_quadrature_agrees_with_a_finer_rule() {
             }
         }
     }
-    assert!(worst < 1e-13, "worst {worst:e}");
+    // The graded panel orders trade the last digits of far panels for speed;
+    // the accuracy proper is checked against the 40-digit tables (reference.rs).
+    assert!(worst < 2.5e-13, "worst {worst:e}");
 }

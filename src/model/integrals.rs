@@ -47,6 +47,21 @@ impl Quadrature {
     /// Panel breakpoints never exceed this many.
     pub const MAX_PANELS: usize = 64;
 
+    /// The Gauss–Legendre order for a panel whose weight is at most
+    /// `e^{-level}` of the largest weight on the interval: such a panel needs only
+    /// ≈ 1e-16·e^{level}/1e4 relative accuracy (the 1e4 covers the growth of
+    /// p_e), so the order steps down every 6 units of level, never above
+    /// [`Quadrature::order`].
+    pub fn panel_order(&self, level: f64) -> usize {
+        const SCHEDULE: [(f64, usize); 5] =
+            [(10.0, 20), (16.0, 16), (22.0, 12), (28.0, 8), (34.0, 6)];
+        let wanted = SCHEDULE
+            .iter()
+            .find(|(below, _)| level < *below - 1e-9)
+            .map_or(4, |&(_, n)| n);
+        wanted.min(self.order)
+    }
+
     /// Checks the settings; returns a message naming the bad field.
     pub fn validate(&self) -> Result<(), String> {
         if !gauss::ORDERS.contains(&self.order) {
@@ -267,14 +282,26 @@ impl Model {
             n += 1;
         }
         let c = &self.coefficients;
-        let rule = gauss::rule(self.quadrature.order);
         let c_a = c.c_a;
+        // The log-weight's minimum over [0, Δc]: panels are graded from it.
+        let peak = (-h).clamp(0.0, dc);
+        let level_of = |a: f64, b: f64| -> f64 {
+            if h >= 0.0 {
+                a * (h + 0.5 * a)
+            } else {
+                let x = (-h).clamp(a, b);
+                0.5 * ((h + x) * (h + x) - (h + peak) * (h + peak))
+            }
+        };
         let s0 = self.s_touch;
         let s0_3 = self.c_d_cubed;
         let mut load = 0.0;
         let mut dload = 0.0;
         let mut v_lo = self.v_of_interference(bounds[0]);
+        let mut d_lo = bounds[0];
         for &bound in &bounds[1..n] {
+            let rule = gauss::rule(self.quadrature.panel_order(level_of(d_lo, bound)));
+            d_lo = bound;
             let v_hi = self.v_of_interference(bound);
             let mid = 0.5 * (v_hi + v_lo);
             let half = 0.5 * (v_hi - v_lo);
