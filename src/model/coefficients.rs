@@ -30,7 +30,42 @@ pub struct Coefficients {
     pub c_0: f64,
 }
 
+/// An input outside the model's domain (the guarded entry points return it).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DomainError {
+    /// c_a must be finite and >= 0.
+    #[error("c_a = {0}: must be finite and >= 0 (0 means no adhesion)")]
+    AdhesiveCoefficient(f64),
+    /// c_h must be > 0 (inf allowed).
+    #[error("c_h = {0}: must be > 0 (inf means no plasticity)")]
+    HardnessCoefficient(f64),
+    /// theta, lambda must be > 0 and not NaN.
+    #[error("{name} = {value}: must be > 0")]
+    Index {
+        /// Which index.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// h must be finite.
+    #[error("h = {0}: the separation must be finite")]
+    Separation(f64),
+}
+
 impl Coefficients {
+    /// As [`Coefficients::new`], refusing inputs outside the model's domain
+    /// (NaN anywhere, c_a < 0 or infinite, c_h <= 0) instead of letting them
+    /// reach the special functions.
+    pub fn checked(c_a: f64, c_h: f64) -> Result<Self, DomainError> {
+        if !(c_a.is_finite() && c_a >= 0.0) {
+            return Err(DomainError::AdhesiveCoefficient(c_a));
+        }
+        if c_h.is_nan() || c_h <= 0.0 {
+            return Err(DomainError::HardnessCoefficient(c_h));
+        }
+        Ok(Coefficients::new(c_a, c_h))
+    }
+
     /// From the adhesive coefficient `c_a ≥ 0` and hardness coefficient `c_h ∈ (0, ∞]`.
     pub fn new(c_a: f64, c_h: f64) -> Self {
         Coefficients {

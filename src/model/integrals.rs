@@ -123,6 +123,8 @@ pub struct Integrals {
     pub dload_dh_elastic: f64,
     /// dP̄/dh, plastic share.
     pub dload_dh_plastic: f64,
+    /// d²P̄/dh² (elastic and plastic together).
+    pub d2load_dh2: f64,
     /// Ā, the total real area (all contacts counted as πRδ).
     pub area: f64,
     /// Ā_p, the real area of plastic junctions.
@@ -145,6 +147,10 @@ impl Integrals {
     pub fn dload_dh(&self) -> Scaled {
         self.scaled(self.dload_dh_elastic + self.dload_dh_plastic)
     }
+    /// d²P̄/dh².
+    pub fn d2load_dh2(&self) -> Scaled {
+        self.scaled(self.d2load_dh2)
+    }
     /// Ā(h).
     pub fn area(&self) -> Scaled {
         self.scaled(self.area)
@@ -155,7 +161,8 @@ impl Integrals {
     }
     /// Ā(h) - Ā_p(h): the real area of elastic contacts.
     pub fn elastic_area(&self) -> Scaled {
-        self.scaled(self.area - self.plastic_area)
+        // Clamped: when every contact is plastic the difference is rounding.
+        self.scaled((self.area - self.plastic_area).max(0.0))
     }
     /// Contacts per asperity times √(2π).
     pub fn contacts(&self) -> Scaled {
@@ -227,7 +234,16 @@ impl Model {
         v
     }
 
-    /// All integrals at separation h (finite).
+    /// As [`Model::at`], refusing a non-finite h (the guarded entry point; build
+    /// the model from [`Coefficients::checked`] to guard the coefficients too).
+    pub fn checked_at(&self, h: f64) -> Result<Integrals, super::coefficients::DomainError> {
+        if !h.is_finite() {
+            return Err(super::coefficients::DomainError::Separation(h));
+        }
+        Ok(self.at(h))
+    }
+
+    /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
         let c = &self.coefficients;
         let dc = self.transition.critical_interference;
@@ -239,6 +255,7 @@ impl Model {
             load_plastic: 0.0,
             dload_dh_elastic: 0.0,
             dload_dh_plastic: 0.0,
+            d2load_dh2: 0.0,
             area: tail1(h),
             plastic_area: 0.0,
             contacts: tail0(h),
@@ -252,6 +269,15 @@ impl Model {
             } else {
                 (-kappa(u_c)).exp()
             };
+            if rescale == 0.0 {
+                // The plastic asperities lie beyond the weight's range (and c_p Δc
+                // may overflow): they carry nothing.
+                let (load, dload, d2load) = self.elastic(h, dc);
+                out.load_elastic = load;
+                out.dload_dh_elastic = dload;
+                out.d2load_dh2 = d2load;
+                return out;
+            }
             let t0 = tail0(u_c) * rescale;
             let t1 = tail1(u_c) * rescale;
             let g = gauss_scaled(u_c) * rescale;
@@ -259,37 +285,45 @@ impl Model {
             out.plastic_area = t1 + dc * t0;
             out.load_plastic = c.c_p * out.plastic_area - c.c_0 * t0;
             out.dload_dh_plastic = -(c.c_p * dc - c.c_0) * g - c.c_p * t0;
+            out.d2load_dh2 = ((c.c_p * dc - c.c_0) * u_c + c.c_p) * g;
         }
-        let (load, dload) = self.elastic(h, dc);
+        let (load, dload, d2load) = self.elastic(h, dc);
+        out.d2load_dh2 += d2load;
         out.load_elastic = load;
         out.dload_dh_elastic = dload;
         out
     }
 
-    /// The elastic integral and its h-derivative, both scaled by e^{κ(h)}.
-    fn elastic(&self, h: f64, dc: f64) -> (f64, f64) {
+    /// The elastic integral and its first two h-derivatives, scaled by e^{κ(h)}.
+    fn elastic(&self, h: f64, dc: f64) -> (f64, f64, f64) {
         let mut bounds = [0.0f64; Quadrature::MAX_PANELS + 1];
         let mut n = self.elastic_breakpoints(h, dc, &mut bounds);
         if n < 2 {
-            return (0.0, 0.0);
+            return (0.0, 0.0, 0.0);
         }
-        // A panel starting at Δ = 0 where Δ(s) is already quartic (Δ0 = c_d^{4/3}
-        // below its end) carries a weight like e^{-q x⁸}: split it at half its
-        // length in s, where the exponent is q/256, so both halves are smooth.
-        if bounds[0] == 0.0 && n < bounds.len() && self.c_d_cubed.powf(4.0 / 9.0) < bounds[1] {
-            bounds.copy_within(1..n, 2);
-            bounds[1] = bounds[2] / 16.0;
-            n += 1;
+        // A panel near Δ = 0 that reaches far beyond Δ0 = c_d^{4/3}, where Δ(s) is
+        // already quartic, carries a weight like e^{-q x⁸} in s: split it at half
+        // its length in s (Δ/16), where the exponent is q/256, so both halves are
+        // smooth. The panel may start at 0 or at a tiny peak -h just right of it.
+        let delta0 = self.c_d_cubed.powf(4.0 / 9.0);
+        if n < bounds.len() {
+            if let Some(k) =
+                (0..n - 1).find(|&k| 16.0 * bounds[k] < bounds[k + 1] && delta0 < bounds[k + 1])
+            {
+                bounds.copy_within(k + 1..n, k + 2);
+                bounds[k + 1] = bounds[k + 2] / 16.0;
+                n += 1;
+            }
         }
         let c = &self.coefficients;
         let c_a = c.c_a;
         // The log-weight's minimum over [0, Δc]: panels are graded from it.
-        let peak = (-h).clamp(0.0, dc);
+        let peak = (-h).max(0.0).min(dc);
         let level_of = |a: f64, b: f64| -> f64 {
             if h >= 0.0 {
                 a * (h + 0.5 * a)
             } else {
-                let x = (-h).clamp(a, b);
+                let x = (-h).max(a).min(b);
                 0.5 * ((h + x) * (h + x) - (h + peak) * (h + peak))
             }
         };
@@ -297,6 +331,7 @@ impl Model {
         let s0_3 = self.c_d_cubed;
         let mut load = 0.0;
         let mut dload = 0.0;
+        let mut d2load = 0.0;
         let mut v_lo = self.v_of_interference(bounds[0]);
         let mut d_lo = bounds[0];
         for &bound in &bounds[1..n] {
@@ -305,7 +340,7 @@ impl Model {
             let v_hi = self.v_of_interference(bound);
             let mid = 0.5 * (v_hi + v_lo);
             let half = 0.5 * (v_hi - v_lo);
-            let (mut pl, mut pd) = (0.0, 0.0);
+            let (mut pl, mut pd, mut pdd) = (0.0, 0.0, 0.0);
             for (x, w) in rule.nodes.iter().zip(&rule.weights) {
                 let v = mid + half * x;
                 let s = s0 + v;
@@ -323,13 +358,16 @@ impl Model {
                 let pe = if c_a == 0.0 { s3 * s3 } else { s3 * (s3 - c_a) };
                 let f = pe * jac * w * exponent.exp();
                 pl += f;
-                pd -= f * (h + delta);
+                let u = h + delta;
+                pd -= f * u;
+                pdd += f * (u * u - 1.0);
             }
             load += pl * half;
             dload += pd * half;
+            d2load += pdd * half;
             v_lo = v_hi;
         }
-        (load, dload)
+        (load, dload, d2load)
     }
 
     /// Breakpoints (ascending, in Δ) of the panels of the elastic integral over

@@ -13,13 +13,15 @@ pub mod separation;
 pub mod special;
 pub mod wear;
 
-pub use coefficients::{Coefficients, Transition};
+pub use coefficients::{Coefficients, DomainError, Transition};
 pub use integrals::{Integrals, Model, Quadrature};
 pub use scaled::Scaled;
 pub use scene::{Scene, WearArea};
 pub use sensitivity::{sensitivities, Sensitivity, SensitivityParameter};
 pub use separation::{
-    find_pull_off, landscape, pull_off_of, solve_separation, solve_separation_with, CriticalPoint,
-    Landscape, PullOff, SeparationOutcome,
+    find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_from,
+    solve_separation_with, CriticalPoint, Landscape, PullOff, SeparationOutcome,
 };
-pub use wear::{evaluate, Evaluation, EvaluationOptions, Indices, Regime, Status};
+pub use wear::{
+    evaluate, evaluate_from, Evaluation, EvaluationOptions, Indices, Regime, SearchHints, Status,
+};

@@ -25,6 +25,10 @@ use super::scaled::Scaled;
 
 const MAX_EVALUATIONS: usize = 4000;
 
+/// The largest |P̄| the separation solve accepts: beyond it the root lies below
+/// h ≈ -1e8, far outside any contact the model describes.
+pub const MAX_LOAD: f64 = 1e12;
+
 /// How the separation solve ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SeparationOutcome {
@@ -103,6 +107,12 @@ fn slope(at: &Integrals) -> f64 {
 
 /// The critical points of P̄ (see the module docs for the method).
 pub fn landscape(model: &Model) -> Landscape {
+    landscape_from(model, None)
+}
+
+/// As [`landscape`], starting the search for the single minimum (J ≥ 0) at
+/// `hint`, e.g. the pull-off separation of a nearby design.
+pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     let mut ev = Counter {
         model,
         evaluations: 0,
@@ -137,6 +147,20 @@ pub fn landscape(model: &Model) -> Landscape {
     } else {
         1.0
     };
+    if neg_jump == 0.0 {
+        // One sign change of P̄': Newton on P̄' with P̄'' from the quadrature.
+        let start = hint.filter(|h| h.is_finite()).unwrap_or(guess);
+        if let Some(at) = single_minimum(&mut ev, start) {
+            return Landscape {
+                critical_points: vec![CriticalPoint {
+                    separation: at.separation,
+                    load: at.load(),
+                    is_minimum: true,
+                }],
+                evaluations: ev.evaluations,
+            };
+        }
+    }
     let mut right = ev.at(guess);
     let mut step = guess.max(1.0);
     while increasing_part(&right) <= 0.0 && ev.evaluations < MAX_EVALUATIONS {
@@ -208,6 +232,50 @@ pub fn landscape(model: &Model) -> Landscape {
         critical_points,
         evaluations: ev.evaluations,
     }
+}
+
+/// The zero of P̄' when P̄' changes sign once (J ≥ 0), by Newton's method with
+/// P̄'' safeguarded by the bracket the signs of P̄' build. None if it fails to
+/// converge (the caller then falls back to bracketing).
+fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
+    let mut at = ev.at(start);
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for _ in 0..80 {
+        let h = at.separation;
+        let g = slope(&at);
+        if g == 0.0 {
+            return Some(at);
+        }
+        if g < 0.0 {
+            lo = lo.max(h);
+        } else {
+            hi = hi.min(h);
+        }
+        // Newton on g = P̄' e^{κ(h)}, which for h > 0 is the smooth, increasing
+        // p(0)-less-integral form (module docs) rather than a Gaussian tail:
+        // g' = (P̄'' + h P̄') e^{κ(h)}.
+        let (d1, d2) = (at.dload_dh_elastic + at.dload_dh_plastic, at.d2load_dh2);
+        let dg = if h > 0.0 { d2 + h * d1 } else { d2 };
+        let newton = h - d1 / dg;
+        let curvature_ok = dg > 0.0;
+        let next = if curvature_ok && newton.is_finite() && newton > lo && newton < hi {
+            newton
+        } else if lo.is_finite() && hi.is_finite() {
+            0.5 * (lo + hi)
+        } else if g < 0.0 {
+            h + (0.5 * h.abs()).max(1.0)
+        } else {
+            h - (0.5 * h.abs()).max(1.0)
+        };
+        if (next - h).abs() <= 4.0 * f64::EPSILON * h.abs().max(1.0) {
+            return Some(at);
+        }
+        if lo.is_finite() && hi.is_finite() && hi - lo <= 4.0 * f64::EPSILON * hi.abs().max(1.0) {
+            return Some(at);
+        }
+        at = ev.at(next);
+    }
+    None
 }
 
 /// Zero of the slope mantissa in [a, b] (opposite signs at the ends): Illinois
@@ -295,17 +363,57 @@ pub fn solve_separation_with(
     target: f64,
     known: Option<&Landscape>,
 ) -> SeparationOutcome {
+    solve_separation_from(model, target, known, None)
+}
+
+/// As [`solve_separation_with`], starting from `hint` (e.g. the separation of a
+/// nearby design) where the root is unique (J ≥ 0, compressive load).
+pub fn solve_separation_from(
+    model: &Model,
+    target: f64,
+    known: Option<&Landscape>,
+    hint: Option<f64>,
+) -> SeparationOutcome {
     let mut ev = Counter {
         model,
         evaluations: 0,
     };
     let c = model.coefficients;
+    if target.is_nan() || target.abs() > MAX_LOAD {
+        // Beyond any contact the model describes (h would be below -1e8), or
+        // not a number: no search, an honest outcome.
+        return SeparationOutcome::NotConverged {
+            separation: f64::NAN,
+            evaluations: 0,
+        };
+    }
     if target <= 0.0 && !c.has_adhesion() {
         return SeparationOutcome::Separated { evaluations: 0 };
     }
     if target > 0.0 && model.transition.jump >= 0.0 {
         // One falling branch carries every positive load: any h with P̄ < target
         // bounds the root from above (module docs).
+        if let Some(h0) = hint.filter(|h| h.is_finite()) {
+            let at = ev.at(h0);
+            if at.load().cmp_f64(target) == Ordering::Less {
+                return bracket_and_solve(&mut ev, target, at, None);
+            }
+            // The root lies right of the hint: Newton-guided steps to bracket it.
+            let mut step = 1e-3_f64.max(1e-3 * h0.abs());
+            let mut h = h0;
+            let lo = at;
+            loop {
+                let newton = newton_step(target, &lo).filter(|d| *d < 0.0 && d.is_finite());
+                let width = newton.map_or(step, |d| (-1.25 * d).max(step));
+                h += width;
+                let hi = ev.at(h);
+                if hi.load().cmp_f64(target) == Ordering::Less || ev.evaluations >= MAX_EVALUATIONS
+                {
+                    return solve_in_bracket(&mut ev, target, lo, hi);
+                }
+                step *= 4.0;
+            }
+        }
         let mut h = if target < 1.0 {
             (-2.0 * target.ln()).sqrt()
         } else {

@@ -9,7 +9,7 @@ use super::integrals::{Model, Quadrature};
 use super::scaled::Scaled;
 use super::scene::{Scene, WearArea};
 use super::separation::{
-    landscape, pull_off_of, solve_separation_with, PullOff, SeparationOutcome,
+    landscape_from, pull_off_of, solve_separation_from, PullOff, SeparationOutcome,
 };
 use super::special::SQRT_TWO_PI;
 use super::Coefficients;
@@ -22,6 +22,17 @@ pub struct EvaluationOptions {
     pub pull_off: bool,
     /// Quadrature settings of the elastic integral.
     pub quadrature: Quadrature,
+}
+
+/// Starting points for the separation and pull-off searches (non-dimensional
+/// h), e.g. from a nearby design. Only speed depends on them: the branch rules
+/// are the same.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SearchHints {
+    /// h of the separation.
+    pub separation: Option<f64>,
+    /// h of the pull-off minimum.
+    pub pull_off: Option<f64>,
 }
 
 impl Default for EvaluationOptions {
@@ -135,6 +146,8 @@ pub struct Evaluation {
     pub log10_pull_off_force: Option<f64>,
     /// The separation at pull-off (m).
     pub pull_off_separation: Option<f64>,
+    /// The separation at pull-off over σ.
+    pub nondimensional_pull_off_separation: Option<f64>,
     /// The JKR pull-off of one asperity, 1.5πγR (N), for comparison.
     pub asperity_pull_off_force: f64,
     /// Which area wears.
@@ -222,6 +235,11 @@ fn regime(idx: &Indices, has_adhesion: bool) -> Regime {
 
 /// Evaluates a validated scene. Never fails: every outcome is a [`Status`].
 pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
+    evaluate_from(scene, options, SearchHints::default())
+}
+
+/// As [`evaluate`], starting the searches from `hints`.
+pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHints) -> Evaluation {
     let e = equivalent_modulus(scene);
     let k = 4.0 / 3.0 * e;
     let coeffs = coefficients(scene);
@@ -271,10 +289,10 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
     // and where the load law jumps down (several branches).
     let need_landscape = coeffs.has_adhesion()
         && (options.pull_off || scene.load <= 0.0 || model.transition.jump < 0.0);
-    let land = need_landscape.then(|| landscape(&model));
+    let land = need_landscape.then(|| landscape_from(&model, hints.pull_off));
     let mut evaluations = land.as_ref().map_or(0, |l| l.evaluations);
     let pull_off: Option<PullOff> = land.as_ref().and_then(pull_off_of);
-    let outcome = solve_separation_with(&model, target, land.as_ref());
+    let outcome = solve_separation_from(&model, target, land.as_ref(), hints.separation);
     let (status, h) = match outcome {
         SeparationOutcome::Contact {
             separation,
@@ -292,10 +310,18 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
             evaluations: ev,
         } => {
             evaluations += ev;
-            warnings.push(format!(
-                "the separation search did not converge after {ev} evaluations; results are at the best estimate h = {separation:.6}"
-            ));
-            (Status::NotConverged, Some(separation))
+            if separation.is_finite() {
+                warnings.push(format!(
+                    "the separation search did not converge after {ev} evaluations; results are at the best estimate h = {separation:.6}"
+                ));
+                (Status::NotConverged, Some(separation))
+            } else {
+                warnings.push(format!(
+                    "the load is {target:.3e} in model units (W over K N R^1/2 σ^3/2 A_n / √(2π)), beyond the {:.0e} the model can describe: check the load, nominal area and roughness",
+                    super::separation::MAX_LOAD
+                ));
+                (Status::NotConverged, None)
+            }
         }
     };
     if status == Status::Separated {
@@ -384,6 +410,7 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
         pull_off_force,
         log10_pull_off_force,
         pull_off_separation,
+        nondimensional_pull_off_separation: pull_off_separation.map(|d| d / s),
         asperity_pull_off_force: 1.5 * PI * scene.work_of_adhesion * r,
         wear_area: scene.wear_area,
         wear_volume: wear_rate * scene.sliding_distance,
