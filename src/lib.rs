@@ -5,10 +5,15 @@
 //! * [`model`]: the physics of the rough-surface adhesion model (shared `MODEL.md`):
 //!   coefficients, indices, one asperity, the load and area integrals, the
 //!   separation solve, Archard wear. No I/O.
+//! * [`optimize`]: the constrained design search (SQP on clarabel subproblems,
+//!   argmin-driven, multistart with rayon).
 //! * [`problem`]: the TOML problem-file schema, units, the material catalogue and
 //!   validation with precise errors.
 //! * [`report`]: rendering results as text, JSON and CSV.
 
+pub mod accuracy;
+pub mod figures;
 pub mod model;
+pub mod optimize;
 pub mod problem;
 pub mod report;

@@ -1,5 +1,8 @@
 //! The command line: clap definitions and the wiring of problem → model → report.
 
+mod accuracy;
+mod figures;
+
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -35,6 +38,11 @@ enum CurveFormat {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Work–precision of the evaluator: error and time of each quadrature setting and finite-difference step rule against a high-precision reference.
+    #[command(
+        after_help = "Example:\n  wearopt accuracy\n  wearopt accuracy problems/micro-gear.toml --format csv --plot work-precision.svg"
+    )]
+    Accuracy(accuracy::AccuracyArgs),
     /// Evaluate one scene: separation, real area, contacts, pull-off, wear, sensitivities.
     #[command(
         after_help = "Example:\n  wearopt eval problems/micro-gear.toml\n  wearopt eval problems/gold-switch.toml --format json"
@@ -45,6 +53,31 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = EvalFormat::Text)]
         format: EvalFormat,
+    },
+    /// The paper's figures 1-4: wear volume against load (CSV, SVG), slopes, and a verdict on each claim of §4.
+    #[command(
+        after_help = "Files: figure1.csv … figure4.csv (theta,lambda,load,wear_volume), figure1.svg … figure4.svg, slopes.csv.\n\
+Example:\n  wearopt figures\n  wearopt figures --out figs --points 101 --format json"
+    )]
+    Figures(figures::FiguresArgs),
+    /// Search the design variables of a study for the least wear under its constraints.
+    #[command(
+        after_help = "Example:\n  wearopt optimize problems/micro-gear-study.toml\n  \
+wearopt optimize problems/switch-study.toml --format json --trace trace.csv\n\n\
+Exit code 1 when the study is infeasible."
+    )]
+    Optimize {
+        /// The problem file (TOML) with [design], [objective] and [[constraint]] sections.
+        file: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = EvalFormat::Text)]
+        format: EvalFormat,
+        /// Print an iteration table per start on stderr.
+        #[arg(long)]
+        verbose: bool,
+        /// Write the per-iteration trace (time, objective, KKT residual, violation) as CSV ("-": stdout).
+        #[arg(long, value_name = "TRACE.csv")]
+        trace: Option<PathBuf>,
     },
     /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
     #[command(
@@ -86,7 +119,15 @@ pub struct UsageError(String);
 /// Runs the parsed command line.
 pub fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
+        Command::Accuracy(args) => accuracy::run(args),
         Command::Eval { file, format } => eval(file, format),
+        Command::Optimize {
+            file,
+            format,
+            verbose,
+            trace,
+        } => optimize(file, format, verbose, trace),
+        Command::Figures(args) => figures::run(args),
         Command::Curve {
             theta,
             lambda,
@@ -127,6 +168,42 @@ fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
     Ok(match evaluation.status {
         Status::Ok | Status::Separated => ExitCode::SUCCESS,
         Status::NotConverged => ExitCode::from(1),
+    })
+}
+
+fn optimize(
+    file: PathBuf,
+    format: EvalFormat,
+    verbose: bool,
+    trace: Option<PathBuf>,
+) -> Result<ExitCode> {
+    let problem = wearopt::problem::load(&file)?;
+    let study = wearopt::optimize::Study {
+        scene: &problem.scene,
+        design: &problem.study.design,
+        objective: problem.study.objective,
+        constraints: &problem.study.constraints,
+        settings: &problem.study.optimizer,
+    };
+    let optimum = wearopt::optimize::optimize(&study, verbose)
+        .map_err(|e| usage(format!("{}: {e}", file.display())))?;
+    if let Some(path) = trace {
+        let csv = report::optimize::trace_csv(&optimum);
+        if path.as_os_str() == "-" {
+            print!("{csv}");
+        } else {
+            std::fs::write(&path, csv)
+                .map_err(|e| anyhow::anyhow!("writing the trace to {}: {e}", path.display()))?;
+        }
+    }
+    let out = match format {
+        EvalFormat::Text => report::optimize::text(&problem.name, &optimum),
+        EvalFormat::Json => report::optimize::json(&problem.name, &optimum),
+    };
+    print!("{out}");
+    Ok(match optimum.status {
+        wearopt::optimize::OptimizationStatus::Infeasible => ExitCode::from(1),
+        _ => ExitCode::SUCCESS,
     })
 }
 

@@ -2,8 +2,11 @@
 //! numbers were computed. Every number written to JSON or CSV is the shortest
 //! string that round-trips the f64 exactly.
 
+pub mod accuracy;
 pub mod curve;
 pub mod eval;
+pub mod optimize;
+pub mod svg;
 
 /// The shortest round-trip form of an f64, in plain notation for moderate
 /// magnitudes and exponent notation otherwise (`inf`, `-inf`, `NaN` spelled so).

@@ -1,0 +1,442 @@
+//! Work–precision of the evaluator: how accurate and how fast each accuracy
+//! setting is, measured against an independent high-precision reference.
+//!
+//! * [`reference`]: the direct form of MODEL.md §3 by adaptive Gauss–Kronrod
+//!   with a root solve for Δ1(Δ) at every node (validated against 40-digit
+//!   mpmath tables in `tests/accuracy.rs`).
+//! * [`finite_difference`]: the step rules of the wear-rate sensitivities and a
+//!   Richardson-tableau reference derivative.
+//! * [`work_precision`]: the report's numbers: for every [`Quadrature`] setting
+//!   the max and median relative error of P̄, Ā, Ā_p and the wear rate and the
+//!   median time per evaluation; for every step rule the error of the
+//!   elasticities and the time per elasticity.
+//!
+//! Relative errors: a load against max(|P̄|, |elastic| + |plastic|) of the
+//! reference (P̄ crosses zero); an area against the reference area (values whose
+//! reference and fast mantissas are both below [`NEGLIGIBLE`] count as exact);
+//! a wear rate against the reference wear rate; an elasticity against the
+//! largest |elasticity| of its scene's gradient (normwise, since an elasticity
+//! can be 0). Only the elastic integral depends on the quadrature settings:
+//! the areas are closed forms, so their rows are the same for every setting.
+
+pub mod finite_difference;
+pub mod reference;
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use crate::model::{
+    evaluate, gauss, wear, Coefficients, EvaluationOptions, Model, Quadrature, Scene,
+    SensitivityParameter, Status,
+};
+use finite_difference::StepRule;
+use reference::ReferenceModel;
+
+/// Mantissas below this are treated as zero when comparing areas.
+pub const NEGLIGIBLE: f64 = 1e-280;
+
+/// A quantity of the report.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// P̄.
+    Load,
+    /// Ā.
+    Area,
+    /// Ā_p.
+    PlasticArea,
+    /// The wear rate of a scene (separation solve included).
+    WearRate,
+    /// The elasticities of the wear rate (finite differences).
+    Gradient,
+}
+
+impl Quantity {
+    /// The CSV name.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Quantity::Load => "load",
+            Quantity::Area => "area",
+            Quantity::PlasticArea => "plastic_area",
+            Quantity::WearRate => "wear_rate",
+            Quantity::Gradient => "gradient",
+        }
+    }
+
+    /// All, in report order.
+    pub const ALL: [Quantity; 5] = [
+        Quantity::Load,
+        Quantity::Area,
+        Quantity::PlasticArea,
+        Quantity::WearRate,
+        Quantity::Gradient,
+    ];
+}
+
+/// One row of the work–precision table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// What was measured.
+    pub quantity: Quantity,
+    /// The setting, e.g. `order=20;step=6;cut=46` or `fd=central;delta=1e-4`.
+    pub setting: String,
+    /// Largest relative error over the samples.
+    pub max_rel_error: f64,
+    /// Median relative error.
+    pub median_rel_error: f64,
+    /// Median wall time of one evaluation (ns): one `Model::at` for load and
+    /// areas, one `evaluate` for the wear rate, one elasticity for the gradient.
+    pub time_per_eval_ns: f64,
+    /// True for the evaluator's default.
+    pub is_default: bool,
+    /// Samples the statistics are over.
+    pub samples: usize,
+    /// Model evaluations per value (gradient: wear-rate evaluations per elasticity).
+    pub evaluations_per_value: usize,
+}
+
+/// One (coefficients, h) point of the grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridPoint {
+    /// The coefficients.
+    pub coefficients: Coefficients,
+    /// h.
+    pub separation: f64,
+}
+
+/// What the work–precision run measured, with provenance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WorkPrecision {
+    /// The rows, quantity by quantity.
+    pub rows: Vec<Row>,
+    /// Grid points (P̄, Ā, Ā_p samples).
+    pub grid_points: usize,
+    /// Scene load points (wear-rate samples).
+    pub wear_points: usize,
+    /// Elasticities compared (gradient samples).
+    pub gradient_points: usize,
+    /// The largest estimated relative error of the reference over the grid (loads
+    /// relative to |elastic| + |plastic|), a floor below which errors are not resolved.
+    pub reference_error: f64,
+    /// The largest estimated error of a reference elasticity (normwise).
+    pub reference_gradient_error: f64,
+    /// Scenes whose region was added to the grid.
+    pub scenes: Vec<String>,
+}
+
+/// Options of the run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Timed repetitions of each evaluation (the median over points is reported).
+    pub repetitions: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { repetitions: 16 }
+    }
+}
+
+/// The quadrature settings compared: every order of [`gauss::ORDERS`] with
+/// panel steps 3, 6, 12 and cuts 30, 46, 60 (those that validate), default included.
+pub fn settings() -> Vec<Quadrature> {
+    let mut out = Vec::new();
+    for &order in &gauss::ORDERS {
+        for &step in &[3.0, 6.0, 12.0] {
+            for &cut in &[30.0, 46.0, 60.0] {
+                let q = Quadrature {
+                    order,
+                    log_weight_step: step,
+                    log_weight_cut: cut,
+                };
+                if q.validate().is_ok() {
+                    out.push(q);
+                }
+            }
+        }
+    }
+    if !out.contains(&Quadrature::default()) {
+        out.push(Quadrature::default());
+    }
+    out
+}
+
+/// `order=20;step=6;cut=46`.
+pub fn setting_label(q: &Quadrature) -> String {
+    format!(
+        "order={};step={};cut={}",
+        q.order, q.log_weight_step, q.log_weight_cut
+    )
+}
+
+/// The step rules compared: δ ∈ {1e-2 … 1e-6}, central and Richardson.
+pub fn step_rules() -> Vec<StepRule> {
+    let mut out = Vec::new();
+    for &d in &[1e-2, 1e-3, 1e-4, 1e-5, 1e-6] {
+        for richardson in [false, true] {
+            out.push(StepRule {
+                log_step: d,
+                richardson,
+            });
+        }
+    }
+    out
+}
+
+/// The extreme-range grid: θ ∈ [1e-3, 1e8], λ ∈ [1e-6, 1e6], h ∈ [-4, 60] (with
+/// h = −1e-3, just left of the switch of panel layout at 0), the
+/// limits γ = 0 and H = ∞, and for each scene its (θ, λ) × {½, 1, 2} each and its
+/// h + {−1, −½, 0, ½, 1}.
+pub fn grid(scenes: &[Scene]) -> Vec<GridPoint> {
+    let hs = [
+        -4.0, -2.0, -1.0, -1e-3, 0.0, 0.5, 1.0, 2.0, 4.0, 8.0, 15.0, 30.0, 60.0,
+    ];
+    let thetas = [1e-3, 1e-2, 0.1, 1.0, 10.0, 100.0, 1e4, 1e6, 1e8];
+    let lambdas = [1e-6, 1e-4, 1e-2, 1.0, 100.0, 1e4, 1e6];
+    let mut coefficients = Vec::new();
+    for &t in &thetas {
+        for &l in &lambdas {
+            coefficients.push(Coefficients::from_indices(t, l));
+        }
+        coefficients.push(Coefficients::from_indices_or_limits(t, f64::INFINITY, 0.0));
+    }
+    for &c_h in &[0.3, 3.0, 30.0, f64::INFINITY] {
+        coefficients.push(Coefficients::new(0.0, c_h));
+    }
+    let mut out: Vec<GridPoint> = coefficients
+        .iter()
+        .flat_map(|&c| {
+            hs.iter().map(move |&h| GridPoint {
+                coefficients: c,
+                separation: h,
+            })
+        })
+        .collect();
+    for scene in scenes {
+        let ev = evaluate(scene, &EvaluationOptions::default());
+        let Some(h) = ev.nondimensional_separation else {
+            continue;
+        };
+        let idx = wear::indices(scene);
+        let (theta, lambda) = (idx.elastic_adhesion_index, idx.plastic_adhesion_index);
+        for &a in &[0.5, 1.0, 2.0] {
+            for &b in &[0.5, 1.0, 2.0] {
+                let c = if theta.is_finite() && lambda.is_finite() {
+                    Coefficients::from_indices(theta * a, lambda * b)
+                } else if theta.is_finite() {
+                    Coefficients::from_indices_or_limits(theta * a, f64::INFINITY, 0.0)
+                } else {
+                    // γ = 0: move c_h instead (θ and λ are infinite).
+                    let c = wear::coefficients(scene);
+                    Coefficients::new(0.0, c.c_h * a * b.powf(0.25))
+                };
+                for &dh in &[-1.0, -0.5, 0.0, 0.5, 1.0] {
+                    out.push(GridPoint {
+                        coefficients: c,
+                        separation: h + dh,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+fn stats(mut errors: Vec<f64>, mut times: Vec<f64>) -> (f64, f64, f64, usize) {
+    let max = errors.iter().copied().fold(0.0, f64::max);
+    let n = errors.len();
+    (max, median(&mut errors), median(&mut times), n)
+}
+
+fn rel(got: f64, want: f64, scale: f64) -> f64 {
+    if got == want {
+        0.0
+    } else {
+        (got - want).abs() / scale
+    }
+}
+
+/// Relative error of an area mantissa (both negligible: exact).
+fn area_error(got: f64, want: f64) -> f64 {
+    if got.abs() < NEGLIGIBLE && want.abs() < NEGLIGIBLE {
+        0.0
+    } else {
+        rel(got, want, want.abs().max(NEGLIGIBLE))
+    }
+}
+
+/// Relative error of a wear rate from its value and log10 (when a value underflows).
+fn wear_error(got: (f64, f64), want_ln: f64) -> f64 {
+    let (value, log10) = got;
+    let ln = if value > 1e-290 {
+        value.ln()
+    } else {
+        log10 * std::f64::consts::LN_10
+    };
+    (ln - want_ln).exp_m1().abs()
+}
+
+/// The work–precision run over `scenes` (their regions are added to the grid;
+/// their loads × {1/100, 1/10, 1, 10, 100} are the wear-rate samples and their
+/// five elasticities the gradient samples).
+pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPrecision {
+    let scene_list: Vec<Scene> = scenes.iter().map(|(_, s)| s.clone()).collect();
+    let points = grid(&scene_list);
+    let reps = options.repetitions.max(1);
+    // The reference at every grid point.
+    let references: Vec<_> = points
+        .iter()
+        .map(|p| ReferenceModel::new(p.coefficients).at(p.separation))
+        .collect();
+    let reference_error = references
+        .iter()
+        .map(|r| {
+            let load = r.load_error() / r.load_parts().max(r.load().abs()).max(NEGLIGIBLE);
+            let area = r.area.error / r.area.value.abs().max(NEGLIGIBLE);
+            load.max(area)
+        })
+        .fold(0.0, f64::max);
+    // Wear-rate samples and their reference.
+    let mut wear_scenes = Vec::new();
+    for s in &scene_list {
+        for &f in &[0.01, 0.1, 1.0, 10.0, 100.0] {
+            let mut sc = s.clone();
+            sc.load *= f;
+            if let Some(ln) = finite_difference::reference_ln_wear_rate(&sc) {
+                wear_scenes.push((sc, ln));
+            }
+        }
+    }
+    let mut rows = Vec::new();
+    let mut per_quantity: [Vec<Row>; 4] = Default::default();
+    for q in settings() {
+        let label = setting_label(&q);
+        let is_default = q == Quadrature::default();
+        let (mut el, mut ea, mut ep, mut times) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for (p, r) in points.iter().zip(&references) {
+            let m = Model::with_quadrature(p.coefficients, q);
+            let at = m.at(p.separation);
+            let load = at.load_elastic + at.load_plastic;
+            el.push(rel(
+                load,
+                r.load(),
+                r.load_parts().max(r.load().abs()).max(NEGLIGIBLE),
+            ));
+            ea.push(area_error(at.area, r.area.value));
+            ep.push(area_error(at.plastic_area, r.plastic_area.value));
+            let start = Instant::now();
+            for _ in 0..reps {
+                black_box(m.at(black_box(p.separation)));
+            }
+            times.push(start.elapsed().as_nanos() as f64 / reps as f64);
+        }
+        let eval_options = EvaluationOptions {
+            pull_off: false,
+            quadrature: q,
+        };
+        let (mut ew, mut tw) = (Vec::new(), Vec::new());
+        for (sc, want) in &wear_scenes {
+            let ev = evaluate(sc, &eval_options);
+            if ev.status != Status::Ok {
+                ew.push(f64::INFINITY);
+                continue;
+            }
+            ew.push(wear_error((ev.wear_rate, ev.log10_wear_rate), *want));
+            let w_reps = reps.div_ceil(4);
+            let start = Instant::now();
+            for _ in 0..w_reps {
+                black_box(evaluate(black_box(sc), &eval_options));
+            }
+            tw.push(start.elapsed().as_nanos() as f64 / w_reps as f64);
+        }
+        let errors = [el, ea, ep, ew];
+        let quantities = [
+            Quantity::Load,
+            Quantity::Area,
+            Quantity::PlasticArea,
+            Quantity::WearRate,
+        ];
+        for (i, (e, quantity)) in errors.into_iter().zip(quantities).enumerate() {
+            let t = if i < 3 { times.clone() } else { tw.clone() };
+            let (max, med, time, n) = stats(e, t);
+            per_quantity[i].push(Row {
+                quantity,
+                setting: label.clone(),
+                max_rel_error: max,
+                median_rel_error: med,
+                time_per_eval_ns: time,
+                is_default,
+                samples: n,
+                evaluations_per_value: 1,
+            });
+        }
+    }
+    for group in per_quantity {
+        rows.extend(group);
+    }
+    // Gradient: the scenes' elasticities under each step rule.
+    let mut references_fd = Vec::new();
+    let mut reference_gradient_error: f64 = 0.0;
+    for s in &scene_list {
+        let mut grad = Vec::new();
+        for p in SensitivityParameter::ALL {
+            if !finite_difference::differentiable(p, s) {
+                continue;
+            }
+            if let Some(r) = finite_difference::reference_elasticity(s, p) {
+                grad.push((p, r));
+            }
+        }
+        let norm = grad.iter().map(|(_, r)| r.value.abs()).fold(0.0, f64::max);
+        if norm > 0.0 {
+            for (_, r) in &grad {
+                reference_gradient_error = reference_gradient_error.max(r.error / norm);
+            }
+            references_fd.push((s.clone(), grad, norm));
+        }
+    }
+    let gradient_points = references_fd.iter().map(|(_, g, _)| g.len()).sum();
+    for rule in step_rules() {
+        let (mut errors, mut times) = (Vec::new(), Vec::new());
+        for (s, grad, norm) in &references_fd {
+            for (p, r) in grad {
+                let start = Instant::now();
+                let got = finite_difference::elasticity(s, *p, rule, Quadrature::default());
+                times.push(start.elapsed().as_nanos() as f64);
+                errors.push(got.map_or(f64::INFINITY, |g| (g - r.value).abs() / norm));
+            }
+        }
+        let (max, med, time, n) = stats(errors, times);
+        rows.push(Row {
+            quantity: Quantity::Gradient,
+            setting: rule.label(),
+            max_rel_error: max,
+            median_rel_error: med,
+            time_per_eval_ns: time,
+            is_default: rule == StepRule::DEFAULT,
+            samples: n,
+            evaluations_per_value: rule.evaluations(),
+        });
+    }
+    WorkPrecision {
+        rows,
+        grid_points: points.len(),
+        wear_points: wear_scenes.len(),
+        gradient_points,
+        reference_error,
+        reference_gradient_error,
+        scenes: scenes.iter().map(|(n, _)| n.clone()).collect(),
+    }
+}

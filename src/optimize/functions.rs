@@ -1,0 +1,276 @@
+//! The study as functions of a unit design point: the objective (in ln) and
+//! the constraint rows `g_j(x) ≤ 0`, scaled so that all are O(1).
+
+use crate::model::{evaluate_from, Evaluation, EvaluationOptions, Quadrature, SearchHints, Status};
+use crate::problem::{Constraint, ConstraintQuantity, Objective};
+
+use super::design::DesignSpace;
+
+/// ln of the smallest/largest magnitudes kept finite (ln of 1e-323 and 1e308 ≈ ±744/709).
+const LN_FLOOR: f64 = -744.0;
+const LN_CEIL: f64 = 709.0;
+
+fn ln_clamped(x: f64) -> f64 {
+    if x.is_nan() {
+        LN_FLOOR
+    } else {
+        x.ln().clamp(LN_FLOOR, LN_CEIL)
+    }
+}
+
+/// Which side of a constraint a row enforces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// quantity ≥ limit.
+    Min,
+    /// quantity ≤ limit.
+    Max,
+}
+
+/// How a quantity is scaled into a row.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Scaling {
+    /// `ln q - ln limit` (positive quantities).
+    Log,
+    /// `(q - limit) / scale` (quantities that may be ≤ 0).
+    Linear(f64),
+}
+
+/// One scalar constraint row `g(x) ≤ 0`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Row {
+    /// Index of the `[[constraint]]` it comes from.
+    pub constraint: usize,
+    /// The quantity.
+    pub quantity: ConstraintQuantity,
+    /// Min or max side.
+    pub side: Side,
+    /// The limit (SI).
+    pub limit: f64,
+    /// Scaling of the row.
+    pub scaling: Scaling,
+}
+
+impl Row {
+    /// d(ln objective)/d(ln limit) for a multiplier λ of this row (envelope theorem).
+    pub fn shadow_price(&self, multiplier: f64) -> f64 {
+        let per_unit_b = match self.scaling {
+            Scaling::Log => 1.0,
+            Scaling::Linear(scale) => self.limit / scale,
+        };
+        match self.side {
+            Side::Max => -multiplier * per_unit_b,
+            Side::Min => multiplier * per_unit_b,
+        }
+    }
+}
+
+/// The value of a constraint quantity in SI (None where it does not exist).
+pub fn quantity_value(
+    q: ConstraintQuantity,
+    ev: &Evaluation,
+    scene: &crate::model::Scene,
+) -> Option<f64> {
+    Some(match q {
+        ConstraintQuantity::PullOffForce => ev.pull_off_force?,
+        ConstraintQuantity::PlasticityIndex => ev.indices.plasticity_index,
+        ConstraintQuantity::ElasticAdhesionIndex => ev.indices.elastic_adhesion_index,
+        ConstraintQuantity::PlasticAdhesionIndex => ev.indices.plastic_adhesion_index,
+        ConstraintQuantity::TaborParameter => ev.indices.tabor_parameter,
+        ConstraintQuantity::HardnessToModulus => scene.hardness / scene.youngs_modulus_a,
+        ConstraintQuantity::RealAreaFraction => ev.real_area_fraction,
+        ConstraintQuantity::PlasticAreaFraction => ev.plastic_area_fraction,
+        ConstraintQuantity::MeanRealPressure => ev.mean_real_pressure?,
+        ConstraintQuantity::ContactCount => ev.contact_count,
+        ConstraintQuantity::Separation => ev.separation?,
+        ConstraintQuantity::WearRate => ev.wear_rate,
+    })
+}
+
+/// ln of a positive quantity, using the log10 companions where the value can underflow.
+fn ln_quantity(q: ConstraintQuantity, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
+    let ln10 = std::f64::consts::LN_10;
+    match q {
+        ConstraintQuantity::PullOffForce => ev
+            .log10_pull_off_force
+            .map_or(LN_FLOOR, |l| (l * ln10).clamp(LN_FLOOR, LN_CEIL)),
+        ConstraintQuantity::WearRate => (ev.log10_wear_rate * ln10).clamp(LN_FLOOR, LN_CEIL),
+        ConstraintQuantity::RealAreaFraction => {
+            (ev.log10_real_area * ln10 - scene.nominal_area.ln()).clamp(LN_FLOOR, LN_CEIL)
+        }
+        _ => ln_clamped(quantity_value(q, ev, scene).unwrap_or(0.0)),
+    }
+}
+
+/// The objective's ln value at an evaluation.
+pub fn ln_objective(o: Objective, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
+    let ln10 = std::f64::consts::LN_10;
+    let v = match o {
+        Objective::WearRate => ev.log10_wear_rate * ln10,
+        Objective::WearVolume => {
+            ev.log10_wear_rate * ln10
+                + if scene.sliding_distance > 0.0 {
+                    scene.sliding_distance.ln()
+                } else {
+                    0.0
+                }
+        }
+        Objective::RealArea => ev.log10_real_area * ln10,
+        Objective::PullOffForce => ev.log10_pull_off_force.map_or(LN_FLOOR, |l| l * ln10),
+    };
+    if v.is_nan() {
+        LN_CEIL
+    } else {
+        v.clamp(LN_FLOOR, LN_CEIL)
+    }
+}
+
+/// The objective in SI at an evaluation.
+pub fn objective_value(o: Objective, ev: &Evaluation) -> f64 {
+    match o {
+        Objective::WearRate => ev.wear_rate,
+        Objective::WearVolume => ev.wear_volume,
+        Objective::RealArea => ev.real_area,
+        Objective::PullOffForce => ev.pull_off_force.unwrap_or(0.0),
+    }
+    .max(0.0)
+}
+
+/// The study's functions at a design point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Point {
+    /// The unit design point.
+    pub x: Vec<f64>,
+    /// ln of the objective.
+    pub objective: f64,
+    /// The constraint rows' values (≤ 0 is feasible).
+    pub rows: Vec<f64>,
+    /// The separation and pull-off found here, to start nearby searches from.
+    pub hints: SearchHints,
+}
+
+impl Point {
+    /// Σ max(0, g_j): the ℓ1 infeasibility.
+    pub fn violation(&self) -> f64 {
+        self.rows.iter().map(|g| g.max(0.0)).sum()
+    }
+
+    /// max_j max(0, g_j).
+    pub fn max_violation(&self) -> f64 {
+        self.rows.iter().fold(0.0, |m, g| m.max(*g))
+    }
+}
+
+/// A study ready to evaluate: design space, objective, constraint rows.
+#[derive(Debug, Clone)]
+pub struct StudyFunctions {
+    /// The scaled design space.
+    pub space: DesignSpace,
+    /// What to minimise.
+    pub objective: Objective,
+    /// The constraint rows.
+    pub rows: Vec<Row>,
+    /// What each evaluation computes.
+    pub options: EvaluationOptions,
+}
+
+impl StudyFunctions {
+    /// The functions of a study; the pull-off search runs only when the
+    /// objective or a constraint asks for the pull-off force.
+    pub fn new(space: DesignSpace, objective: Objective, constraints: &[Constraint]) -> Self {
+        let mut rows = Vec::new();
+        for (i, c) in constraints.iter().enumerate() {
+            let linear = matches!(
+                c.quantity,
+                ConstraintQuantity::Separation | ConstraintQuantity::PlasticAreaFraction
+            );
+            for (side, limit) in [(Side::Min, c.min), (Side::Max, c.max)] {
+                let Some(limit) = limit else { continue };
+                let scaling = if linear {
+                    let reference = match c.quantity {
+                        ConstraintQuantity::Separation => space.baseline.sigma,
+                        _ => 0.01,
+                    };
+                    Scaling::Linear(limit.abs().max(reference))
+                } else {
+                    Scaling::Log
+                };
+                rows.push(Row {
+                    constraint: i,
+                    quantity: c.quantity,
+                    side,
+                    limit,
+                    scaling,
+                });
+            }
+        }
+        let pull_off = objective == Objective::PullOffForce
+            || constraints
+                .iter()
+                .any(|c| c.quantity == ConstraintQuantity::PullOffForce);
+        StudyFunctions {
+            space,
+            objective,
+            rows,
+            options: EvaluationOptions {
+                pull_off,
+                quadrature: Quadrature::default(),
+            },
+        }
+    }
+
+    /// n.
+    pub fn dim(&self) -> usize {
+        self.space.dim()
+    }
+
+    /// Objective and rows at x (None when the surfaces are not in contact there).
+    pub fn at(&self, x: &[f64]) -> Option<Point> {
+        self.at_from(x, SearchHints::default())
+    }
+
+    /// As [`StudyFunctions::at`], starting the model's searches from `hints`
+    /// (those of a nearby point); the result does not depend on them beyond
+    /// the last few ulps of the separation.
+    pub fn at_from(&self, x: &[f64], hints: SearchHints) -> Option<Point> {
+        let scene = self.space.scene_at(x);
+        let ev = evaluate_from(&scene, &self.options, hints);
+        if ev.status != Status::Ok {
+            return None;
+        }
+        Some(self.point_of(x, &ev, &scene))
+    }
+
+    /// Objective and rows from an evaluation already made.
+    pub fn point_of(&self, x: &[f64], ev: &Evaluation, scene: &crate::model::Scene) -> Point {
+        let rows = self
+            .rows
+            .iter()
+            .map(|r| match r.scaling {
+                Scaling::Log => {
+                    let lq = ln_quantity(r.quantity, ev, scene);
+                    match r.side {
+                        Side::Max => lq - r.limit.ln(),
+                        Side::Min => r.limit.ln() - lq,
+                    }
+                }
+                Scaling::Linear(scale) => {
+                    let q = quantity_value(r.quantity, ev, scene).unwrap_or(0.0);
+                    match r.side {
+                        Side::Max => (q - r.limit) / scale,
+                        Side::Min => (r.limit - q) / scale,
+                    }
+                }
+            })
+            .collect();
+        Point {
+            x: x.to_vec(),
+            objective: ln_objective(self.objective, ev, scene),
+            rows,
+            hints: SearchHints {
+                separation: ev.nondimensional_separation,
+                pull_off: ev.nondimensional_pull_off_separation,
+            },
+        }
+    }
+}

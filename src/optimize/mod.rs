@@ -1,0 +1,548 @@
+//! The outer optimiser: searches material and roughness parameters to minimise
+//! the predicted wear rate (or another objective) under engineering limits, with
+//! the wear model as its inner evaluator.
+//!
+//! * [`design`]: variables in log space, scaled to the unit box.
+//! * [`functions`]: objective (ln) and constraint rows as functions of a design.
+//! * [`fd`]: central finite-difference sensitivities with error estimates (rayon).
+//! * [`qp`]: the clarabel subproblem (linearised rows, box, trust region as a
+//!   second-order cone, elastic slacks).
+//! * [`sqp`]: the SQP as an argmin `Solver`, driven by argmin's `Executor`.
+//! * [`optimize`]: deterministic low-discrepancy multistart in parallel.
+
+pub mod design;
+pub mod fd;
+pub mod functions;
+pub mod qp;
+pub mod sqp;
+
+use std::time::{Duration, Instant};
+
+use argmin::core::observers::{Observe, ObserverMode};
+use argmin::core::{Executor, State, TerminationReason, KV};
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::model::{Evaluation, Scene};
+use crate::problem::{Constraint, DesignVariable, Objective, OptimizerSettings};
+
+pub use design::DesignSpace;
+pub use functions::{Point, Row, Side, StudyFunctions};
+pub use sqp::{Sqp, SqpState, TraceRow, FEASIBILITY_TOLERANCE};
+
+/// How a study ended (contract words).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OptimizationStatus {
+    /// A feasible point satisfying the KKT conditions to tolerance.
+    Optimal,
+    /// No start found a point meeting every constraint.
+    Infeasible,
+    /// The iteration cap ended the best start.
+    IterationLimit,
+    /// The time limit ended the best start.
+    TimeLimit,
+    /// The best start could make no more progress without meeting the KKT test.
+    Stalled,
+}
+
+impl OptimizationStatus {
+    /// The status word.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            OptimizationStatus::Optimal => "optimal",
+            OptimizationStatus::Infeasible => "infeasible",
+            OptimizationStatus::IterationLimit => "iteration_limit",
+            OptimizationStatus::TimeLimit => "time_limit",
+            OptimizationStatus::Stalled => "stalled",
+        }
+    }
+}
+
+/// What one start of the multistart did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StartOutcome {
+    /// Index of the start (0 = the baseline design).
+    pub index: usize,
+    /// Where it started (unit coordinates).
+    pub x0: Vec<f64>,
+    /// Where it ended, with its values (None when the start had no contact).
+    pub point: Option<Point>,
+    /// Row multipliers at the end.
+    pub multipliers: Vec<f64>,
+    /// KKT residual at the end.
+    pub kkt_residual: f64,
+    /// Finite-difference error estimate of the last gradients.
+    pub gradient_error: f64,
+    /// How it ended.
+    pub status: OptimizationStatus,
+    /// Iterations.
+    pub iterations: u64,
+    /// Model evaluations.
+    pub evaluations: usize,
+    /// Per-iteration trace.
+    pub trace: Vec<TraceRow>,
+    /// Subproblem statuses other than Solved met on the way.
+    pub qp_failures: Vec<String>,
+}
+
+/// One `[[constraint]]` at the reported design.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ConstraintReport {
+    /// The quantity's name.
+    pub quantity: &'static str,
+    /// Its value (SI).
+    pub value: Option<f64>,
+    /// Lower limit.
+    pub min: Option<f64>,
+    /// Upper limit.
+    pub max: Option<f64>,
+    /// At its limit (within tolerance) or carrying a multiplier.
+    pub active: bool,
+    /// The Lagrange multiplier of its scaled row (≥ 0).
+    pub multiplier: f64,
+    /// d ln(objective) / d ln(limit): relaxing the limit by 1 % changes the
+    /// objective by about this many per cent.
+    pub shadow_price: f64,
+    /// Violation of the scaled row (0 when satisfied).
+    pub violation: f64,
+}
+
+/// A bound of the design box on which the optimum lies.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ActiveBound {
+    /// The design variable.
+    pub variable: &'static str,
+    /// "min" or "max".
+    pub side: &'static str,
+    /// The bound's value (SI).
+    pub value: f64,
+}
+
+/// Counts over the multistart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct StartsSummary {
+    /// Starts run.
+    pub total: usize,
+    /// Starts that converged (KKT test met) at a feasible point.
+    pub converged: usize,
+    /// Starts whose result agrees with the best to 1e-6 relative.
+    pub reached_best: usize,
+}
+
+/// The result of a study.
+#[derive(Debug, Clone)]
+pub struct Optimum {
+    /// How it ended.
+    pub status: OptimizationStatus,
+    /// Variable names, in file order.
+    pub names: Vec<&'static str>,
+    /// The design found (SI), by variable.
+    pub design: Vec<f64>,
+    /// The baseline design (SI).
+    pub baseline_design: Vec<f64>,
+    /// The objective at the design (SI).
+    pub objective: f64,
+    /// The objective at the baseline (SI).
+    pub baseline_objective: f64,
+    /// Which objective.
+    pub objective_name: &'static str,
+    /// Constraints at the design.
+    pub constraints: Vec<ConstraintReport>,
+    /// Bounds on which the design lies.
+    pub active_bounds: Vec<ActiveBound>,
+    /// For an infeasible study: the constraints still violated at the least-violating design.
+    pub conflicting: Vec<&'static str>,
+    /// KKT residual at the design.
+    pub kkt_residual: f64,
+    /// Finite-difference error estimate at the design.
+    pub gradient_error: f64,
+    /// Model evaluations over all starts.
+    pub evaluations: usize,
+    /// Multistart counts.
+    pub starts: StartsSummary,
+    /// Wall time (s).
+    pub time_seconds: f64,
+    /// The full evaluation at the design.
+    pub evaluation: Evaluation,
+    /// The full evaluation at the baseline.
+    pub baseline_evaluation: Option<Evaluation>,
+    /// The scene at the design.
+    pub scene: Scene,
+    /// Every start, in index order.
+    pub start_outcomes: Vec<StartOutcome>,
+    /// The index of the start reported.
+    pub best_start: usize,
+}
+
+/// Errors of a study definition (bad input).
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum OptimizeError {
+    /// No `[design]` variables.
+    #[error("the study has no [design] variables: nothing to optimise (add e.g. sigma = {{ min = \"0.5 nm\", max = \"20 nm\" }})")]
+    NoDesign,
+    /// No `[objective]`.
+    #[error("the study has no [objective]: add [objective] minimize = \"wear_rate\"")]
+    NoObjective,
+    /// The baseline scene has no contact and no start found one.
+    #[error("no start of the multistart has the surfaces in contact: the load cannot hold them together anywhere tried")]
+    NoContact,
+}
+
+/// A study: what may move, what to minimise, the limits, the settings.
+#[derive(Debug, Clone)]
+pub struct Study<'a> {
+    /// The baseline scene.
+    pub scene: &'a Scene,
+    /// Design variables.
+    pub design: &'a [DesignVariable],
+    /// Objective.
+    pub objective: Option<Objective>,
+    /// Constraints.
+    pub constraints: &'a [Constraint],
+    /// Settings.
+    pub settings: &'a OptimizerSettings,
+}
+
+/// Prints an iteration table to stderr (the `--verbose` observer).
+pub struct IterationTable {
+    /// Which start it reports.
+    pub start: usize,
+}
+
+impl Observe<SqpState> for IterationTable {
+    fn observe_init(
+        &mut self,
+        name: &str,
+        _state: &SqpState,
+        _kv: &KV,
+    ) -> Result<(), argmin::core::Error> {
+        eprintln!("start {:>3}: {name}", self.start);
+        eprintln!(
+            "start iter    ln(objective)    violation          KKT       radius         step        ratio  evaluations"
+        );
+        Ok(())
+    }
+
+    fn observe_iter(&mut self, state: &SqpState, kv: &KV) -> Result<(), argmin::core::Error> {
+        let get = |k: &str| kv.get(k).and_then(|v| v.get_float()).unwrap_or(f64::NAN);
+        eprintln!(
+            "{:>5} {:>4} {:>16.10} {:>12.3e} {:>12.3e} {:>12.3e} {:>12.3e} {:>12.3e} {:>12}",
+            self.start,
+            state.get_iter(),
+            get("objective"),
+            get("violation"),
+            get("kkt"),
+            get("radius"),
+            get("step"),
+            get("ratio"),
+            get("evaluations") as u64
+        );
+        Ok(())
+    }
+}
+
+/// The k-th point of a Halton sequence in the given prime base.
+fn halton(mut k: u64, base: u64) -> f64 {
+    let mut f = 1.0;
+    let mut r = 0.0;
+    while k > 0 {
+        f /= base as f64;
+        r += f * (k % base) as f64;
+        k /= base;
+    }
+    r
+}
+
+/// splitmix64: a deterministic shift per seed and dimension.
+fn splitmix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+const PRIMES: [u64; 10] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29];
+
+/// The start points: the baseline, then a Halton sequence with a
+/// Cranley–Patterson shift drawn from the seed (deterministic).
+pub fn start_points(baseline: &[f64], starts: usize, seed: u64) -> Vec<Vec<f64>> {
+    let n = baseline.len();
+    let shift: Vec<f64> = (0..n)
+        .map(|i| {
+            (splitmix(seed.wrapping_mul(31).wrapping_add(i as u64)) >> 11) as f64
+                / (1u64 << 53) as f64
+        })
+        .collect();
+    let mut out = vec![baseline.to_vec()];
+    for k in 1..starts.max(1) {
+        out.push(
+            (0..n)
+                .map(|i| {
+                    let u = halton(k as u64, PRIMES[i % PRIMES.len()]) + shift[i];
+                    // Keep starts off the faces, where the stencil is one-sided.
+                    0.02 + 0.96 * (u - u.floor())
+                })
+                .collect(),
+        );
+    }
+    out
+}
+
+fn run_start(
+    functions: &StudyFunctions,
+    index: usize,
+    x0: Vec<f64>,
+    settings: &OptimizerSettings,
+    deadline: Instant,
+    verbose: bool,
+) -> StartOutcome {
+    let remaining = deadline.saturating_duration_since(Instant::now());
+    let mut exec = Executor::new(functions.clone(), Sqp::new(settings.tolerance))
+        .configure(|s| {
+            s.param(x0.clone())
+                .max_iters(settings.max_iterations as u64)
+        })
+        .timeout(remaining.max(Duration::from_nanos(1)));
+    if verbose {
+        exec = exec.add_observer(IterationTable { start: index }, ObserverMode::Always);
+    }
+    let (solver, reason, iterations) = match exec.run() {
+        Ok(res) => {
+            let reason = res.state.get_termination_reason().cloned();
+            let iters = res.state.get_iter();
+            (res.solver, reason, iters)
+        }
+        Err(_) => (Sqp::new(settings.tolerance), None, 0),
+    };
+    let point = solver.point().cloned();
+    let status = match (&reason, solver.exit) {
+        (_, Some("converged")) => OptimizationStatus::Optimal,
+        (_, Some("infeasible")) => OptimizationStatus::Infeasible,
+        (_, Some("stalled")) => OptimizationStatus::Stalled,
+        (Some(TerminationReason::Timeout), _) => OptimizationStatus::TimeLimit,
+        (Some(TerminationReason::MaxItersReached), _) => OptimizationStatus::IterationLimit,
+        _ => OptimizationStatus::Stalled,
+    };
+    // A converged point that violates a row is a stationary point of the
+    // violation: infeasible, not optimal.
+    let status = match (&point, status) {
+        (Some(p), OptimizationStatus::Optimal) if p.max_violation() > FEASIBILITY_TOLERANCE => {
+            OptimizationStatus::Infeasible
+        }
+        (None, _) => OptimizationStatus::Infeasible,
+        (_, s) => s,
+    };
+    StartOutcome {
+        index,
+        x0,
+        point,
+        multipliers: solver.multipliers.clone(),
+        kkt_residual: solver.kkt_residual,
+        gradient_error: solver.gradient_error,
+        status,
+        iterations,
+        evaluations: solver.evaluations,
+        trace: solver.trace.clone(),
+        qp_failures: solver.qp_failures.clone(),
+    }
+}
+
+/// Runs a study: multistart SQP in parallel, deterministic for any thread count.
+pub fn optimize(study: &Study, verbose: bool) -> Result<Optimum, OptimizeError> {
+    if study.design.is_empty() {
+        return Err(OptimizeError::NoDesign);
+    }
+    let objective = study.objective.ok_or(OptimizeError::NoObjective)?;
+    let t0 = Instant::now();
+    let deadline = t0 + study.settings.time_limit;
+    let space = DesignSpace::new(study.scene, study.design);
+    let functions = StudyFunctions::new(space, objective, study.constraints);
+    let baseline_x = functions.space.baseline_unit();
+    let starts = start_points(&baseline_x, study.settings.starts, study.settings.seed);
+    let outcomes: Vec<StartOutcome> = starts
+        .into_par_iter()
+        .enumerate()
+        .map(|(i, x0)| run_start(&functions, i, x0, study.settings, deadline, verbose))
+        .collect();
+    let evaluations = outcomes.iter().map(|o| o.evaluations).sum();
+
+    // The best: lowest objective among feasible ends (optimal first), else the least violating.
+    let feasible = |o: &&StartOutcome| {
+        o.point
+            .as_ref()
+            .is_some_and(|p| p.max_violation() <= FEASIBILITY_TOLERANCE)
+    };
+    let by_objective = |a: &&StartOutcome, b: &&StartOutcome| {
+        let (pa, pb) = (a.point.as_ref().unwrap(), b.point.as_ref().unwrap());
+        pa.objective
+            .total_cmp(&pb.objective)
+            .then(a.index.cmp(&b.index))
+    };
+    let optimal = outcomes
+        .iter()
+        .filter(|o| o.status == OptimizationStatus::Optimal)
+        .filter(feasible)
+        .min_by(by_objective);
+    let any_feasible = outcomes.iter().filter(feasible).min_by(by_objective);
+    let best = match optimal.or(any_feasible) {
+        Some(b) => b,
+        None => outcomes
+            .iter()
+            .filter(|o| o.point.is_some())
+            .min_by(|a, b| {
+                let (pa, pb) = (a.point.as_ref().unwrap(), b.point.as_ref().unwrap());
+                pa.max_violation()
+                    .total_cmp(&pb.max_violation())
+                    .then(a.index.cmp(&b.index))
+            })
+            .ok_or(OptimizeError::NoContact)?,
+    };
+    let best_point = best.point.clone().expect("best start has a point");
+    let status = if best_point.max_violation() > FEASIBILITY_TOLERANCE {
+        OptimizationStatus::Infeasible
+    } else {
+        best.status
+    };
+    let reached_best = outcomes
+        .iter()
+        .filter(feasible)
+        .filter(|o| {
+            let f = o.point.as_ref().unwrap().objective;
+            (f - best_point.objective).abs() <= 1e-6 * (1.0 + best_point.objective.abs())
+        })
+        .count();
+    let converged = outcomes
+        .iter()
+        .filter(|o| o.status == OptimizationStatus::Optimal)
+        .filter(feasible)
+        .count();
+
+    let scene = functions.space.scene_at(&best_point.x);
+    let evaluation = crate::model::evaluate(&scene, &functions.options);
+    let baseline_evaluation = {
+        let ev = crate::model::evaluate(study.scene, &functions.options);
+        (ev.status == crate::model::Status::Ok).then_some(ev)
+    };
+    let constraints = constraint_reports(
+        &functions,
+        study.constraints,
+        &best_point,
+        &best.multipliers,
+        &evaluation,
+        &scene,
+    );
+    let conflicting = if status == OptimizationStatus::Infeasible {
+        constraints
+            .iter()
+            .filter(|c| c.violation > FEASIBILITY_TOLERANCE)
+            .map(|c| c.quantity)
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let names: Vec<&'static str> = functions
+        .space
+        .variables
+        .iter()
+        .map(|v| v.quantity.as_str())
+        .collect();
+    let design = functions.space.values(&best_point.x);
+    let active_bounds = functions
+        .space
+        .variables
+        .iter()
+        .zip(&best_point.x)
+        .filter_map(|(v, &u)| {
+            if u <= 1e-6 {
+                Some(ActiveBound {
+                    variable: v.quantity.as_str(),
+                    side: "min",
+                    value: v.min,
+                })
+            } else if u >= 1.0 - 1e-6 {
+                Some(ActiveBound {
+                    variable: v.quantity.as_str(),
+                    side: "max",
+                    value: v.max,
+                })
+            } else {
+                None
+            }
+        })
+        .collect();
+    Ok(Optimum {
+        status,
+        baseline_design: functions.space.values(&baseline_x),
+        names,
+        design,
+        objective: functions::objective_value(objective, &evaluation),
+        baseline_objective: baseline_evaluation
+            .as_ref()
+            .map_or(f64::NAN, |ev| functions::objective_value(objective, ev)),
+        objective_name: objective.as_str(),
+        constraints,
+        active_bounds,
+        conflicting,
+        kkt_residual: best.kkt_residual,
+        gradient_error: best.gradient_error,
+        evaluations,
+        starts: StartsSummary {
+            total: outcomes.len(),
+            converged,
+            reached_best,
+        },
+        time_seconds: t0.elapsed().as_secs_f64(),
+        evaluation,
+        baseline_evaluation,
+        scene,
+        best_start: best.index,
+        start_outcomes: outcomes,
+    })
+}
+
+fn constraint_reports(
+    functions: &StudyFunctions,
+    constraints: &[Constraint],
+    point: &Point,
+    multipliers: &[f64],
+    ev: &Evaluation,
+    scene: &Scene,
+) -> Vec<ConstraintReport> {
+    constraints
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let rows: Vec<(usize, &Row)> = functions
+                .rows
+                .iter()
+                .enumerate()
+                .filter(|(_, r)| r.constraint == i)
+                .collect();
+            let (mut multiplier, mut shadow, mut violation, mut active) =
+                (0.0f64, 0.0, 0.0f64, false);
+            for (j, r) in rows {
+                let l = multipliers.get(j).copied().unwrap_or(0.0);
+                let g = point.rows[j];
+                violation = violation.max(g.max(0.0));
+                if g >= -1e-6 || l > 1e-9 {
+                    active = true;
+                }
+                if l >= multiplier {
+                    multiplier = l;
+                    shadow = r.shadow_price(l);
+                }
+            }
+            ConstraintReport {
+                quantity: c.quantity.as_str(),
+                value: functions::quantity_value(c.quantity, ev, scene),
+                min: c.min,
+                max: c.max,
+                active,
+                multiplier,
+                shadow_price: shadow,
+                violation,
+            }
+        })
+        .collect()
+}

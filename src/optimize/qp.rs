@@ -1,0 +1,293 @@
+//! The SQP subproblem, solved by clarabel:
+//!
+//! ```text
+//! min_{p,t}  ½ pᵀBp + ∇fᵀp + ρ Σ t_j
+//! s.t.       g_j + ∇g_jᵀp ≤ t_j,  t_j ≥ 0          (elastic mode: always feasible)
+//!            0 ≤ x + p ≤ 1                          (the scaled box)
+//!            ‖p‖₂ ≤ Δ                               (trust region, a second-order cone)
+//! ```
+//!
+//! Every linear row carries a nonzero coefficient (the -1 on t_j, the ±1 of the
+//! box), so clarabel never sees a zero row. Only `Solved` counts as solved.
+
+#![allow(non_snake_case)]
+
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{
+    DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SecondOrderConeT,
+    SolverStatus,
+};
+use nalgebra::DMatrix;
+
+/// The data of one subproblem.
+pub struct Subproblem<'a> {
+    /// The current unit design point.
+    pub x: &'a [f64],
+    /// The quasi-Newton Hessian of the Lagrangian (positive definite).
+    pub hessian: &'a DMatrix<f64>,
+    /// ∇f.
+    pub gradient: &'a [f64],
+    /// g_j(x).
+    pub rows: &'a [f64],
+    /// ∇g_j(x).
+    pub jacobian: &'a [Vec<f64>],
+    /// Trust-region radius Δ.
+    pub radius: f64,
+    /// Elastic penalty ρ on the slack of each linearised row.
+    pub penalty: f64,
+}
+
+/// What the subproblem gave.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Step {
+    /// The step p.
+    pub p: Vec<f64>,
+    /// The elastic slacks t_j (0 where the linearisation is satisfied).
+    pub slack: Vec<f64>,
+    /// Multipliers λ_j ≥ 0 of the linearised rows.
+    pub multipliers: Vec<f64>,
+    /// The model's change of the objective, ∇fᵀp + ½pᵀBp.
+    pub objective_change: f64,
+}
+
+/// Why a subproblem gave no usable step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QpFailure {
+    /// clarabel's status, as text.
+    pub status: String,
+}
+
+/// Solves the subproblem.
+pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
+    let n = sp.x.len();
+    let m = sp.rows.len();
+    let nv = n + m;
+    // P: upper triangle of B.
+    let (mut pi, mut pj, mut pv) = (Vec::new(), Vec::new(), Vec::new());
+    for j in 0..n {
+        for i in 0..=j {
+            pi.push(i);
+            pj.push(j);
+            pv.push(sp.hessian[(i, j)]);
+        }
+    }
+    let P = CscMatrix::new_from_triplets(nv, nv, pi, pj, pv);
+    let mut q = sp.gradient.to_vec();
+    q.extend(std::iter::repeat_n(sp.penalty, m));
+
+    let (mut ai, mut aj, mut av) = (Vec::new(), Vec::new(), Vec::new());
+    let mut b = Vec::new();
+    let mut row = 0;
+    // Linearised rows: ∇g_jᵀp - t_j ≤ -g_j.
+    for j in 0..m {
+        for (i, &d) in sp.jacobian[j].iter().enumerate() {
+            if d != 0.0 {
+                ai.push(row);
+                aj.push(i);
+                av.push(d);
+            }
+        }
+        ai.push(row);
+        aj.push(n + j);
+        av.push(-1.0);
+        b.push(-sp.rows[j]);
+        row += 1;
+    }
+    // t_j ≥ 0.
+    for j in 0..m {
+        ai.push(row);
+        aj.push(n + j);
+        av.push(-1.0);
+        b.push(0.0);
+        row += 1;
+    }
+    // Box: p_i ≤ 1 - x_i and -p_i ≤ x_i.
+    for i in 0..n {
+        ai.push(row);
+        aj.push(i);
+        av.push(1.0);
+        b.push(1.0 - sp.x[i]);
+        row += 1;
+        ai.push(row);
+        aj.push(i);
+        av.push(-1.0);
+        b.push(sp.x[i]);
+        row += 1;
+    }
+    let linear_rows = row;
+    // Trust region: s = [Δ; p] in the second-order cone.
+    b.push(sp.radius);
+    row += 1;
+    for i in 0..n {
+        ai.push(row);
+        aj.push(i);
+        av.push(-1.0);
+        b.push(0.0);
+        row += 1;
+    }
+    let A = CscMatrix::new_from_triplets(row, nv, ai, aj, av);
+    let cones = [NonnegativeConeT(linear_rows), SecondOrderConeT(n + 1)];
+    // Near convergence the model's changes are ~1e-12: solve to match.
+    let settings = DefaultSettingsBuilder::default()
+        .verbose(false)
+        .max_iter(100)
+        .tol_gap_abs(1e-12)
+        .tol_gap_rel(1e-12)
+        .build()
+        .map_err(|e| QpFailure {
+            status: format!("settings: {e:?}"),
+        })?;
+    let mut solver =
+        DefaultSolver::new(&P, &q, &A, &b, &cones, settings).map_err(|e| QpFailure {
+            status: format!("setup: {e:?}"),
+        })?;
+    solver.solve();
+    let sol = &solver.solution;
+    if sol.status != SolverStatus::Solved {
+        return Err(QpFailure {
+            status: format!("{:?}", sol.status),
+        });
+    }
+    let p: Vec<f64> = sol.x[..n].to_vec();
+    let slack: Vec<f64> = sol.x[n..].iter().map(|t| t.max(0.0)).collect();
+    let multipliers: Vec<f64> = sol.z[..m].iter().map(|z| z.max(0.0)).collect();
+    let mut quad = 0.0;
+    for i in 0..n {
+        for j in 0..n {
+            quad += p[i] * sp.hessian[(i, j)] * p[j];
+        }
+    }
+    let lin: f64 = sp.gradient.iter().zip(&p).map(|(g, d)| g * d).sum();
+    Ok(Step {
+        p,
+        slack,
+        multipliers,
+        objective_change: lin + 0.5 * quad,
+    })
+}
+
+/// First-order multiplier estimate: the λ ≥ 0 of the active rows (g_j ≥
+/// -`active`) and μ ≥ 0 of the active bounds that minimise the stationarity
+/// residual `‖∇f + Σ_j λ_j ∇g_j - Σ_lower μ_i e_i + Σ_upper μ_i e_i‖²`; other
+/// rows get 0. Unlike the subproblem's multipliers it does not depend on the
+/// quasi-Newton matrix, which near a degenerate vertex can be far from the true
+/// Hessian. Where the active set is degenerate the minimiser is not unique, but
+/// every minimiser has the same residual. None if clarabel does not solve it.
+pub fn least_squares_multipliers(
+    x: &[f64],
+    gradient: &[f64],
+    rows: &[f64],
+    jacobian: &[Vec<f64>],
+    active: f64,
+) -> Option<Vec<f64>> {
+    let n = x.len();
+    let act: Vec<usize> = (0..rows.len()).filter(|&j| rows[j] >= -active).collect();
+    let mut out = vec![0.0; rows.len()];
+    if act.is_empty() {
+        return Some(out);
+    }
+    // Columns of M: active rows' gradients, then ∓e_i for bounds that hold.
+    let mut columns: Vec<Vec<f64>> = act.iter().map(|&j| jacobian[j].clone()).collect();
+    for i in 0..n {
+        let sign = if x[i] <= 0.0 {
+            -1.0
+        } else if x[i] >= 1.0 {
+            1.0
+        } else {
+            continue;
+        };
+        let mut e = vec![0.0; n];
+        e[i] = sign;
+        columns.push(e);
+    }
+    let k = columns.len();
+    let (mut pi, mut pj, mut pv) = (Vec::new(), Vec::new(), Vec::new());
+    for b in 0..k {
+        for a in 0..=b {
+            let v: f64 = (0..n).map(|i| columns[a][i] * columns[b][i]).sum();
+            pi.push(a);
+            pj.push(b);
+            pv.push(if a == b { v + 1e-14 } else { v });
+        }
+    }
+    let p = CscMatrix::new_from_triplets(k, k, pi, pj, pv);
+    let q: Vec<f64> = columns
+        .iter()
+        .map(|c| (0..n).map(|i| c[i] * gradient[i]).sum())
+        .collect();
+    // All unknowns ≥ 0, written -v ≤ 0.
+    let a = CscMatrix::new_from_triplets(k, k, (0..k).collect(), (0..k).collect(), vec![-1.0; k]);
+    let b = vec![0.0; k];
+    let settings = DefaultSettingsBuilder::default()
+        .verbose(false)
+        .tol_gap_abs(1e-14)
+        .tol_gap_rel(1e-14)
+        .build()
+        .ok()?;
+    let mut solver = DefaultSolver::new(&p, &q, &a, &b, &[NonnegativeConeT(k)], settings).ok()?;
+    solver.solve();
+    if solver.solution.status != SolverStatus::Solved {
+        return None;
+    }
+    for (a, &j) in act.iter().enumerate() {
+        out[j] = solver.solution.x[a].max(0.0);
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// min ½‖p‖² + (-1, -1)ᵀp  s.t. p1 + p2 ≤ 0.5 (as g = -0.5 + [1,1]ᵀp), ‖p‖ ≤ 10, box from x = (0.5, 0.5).
+    /// Closed form: p = (0.25, 0.25), λ = 0.75 (stationarity p - 1 + λ = 0).
+    #[test]
+    fn solves_a_qp_with_known_solution() {
+        let b = DMatrix::identity(2, 2);
+        let jac = vec![vec![1.0, 1.0]];
+        let sp = Subproblem {
+            x: &[0.5, 0.5],
+            hessian: &b,
+            gradient: &[-1.0, -1.0],
+            rows: &[-0.5],
+            jacobian: &jac,
+            radius: 10.0,
+            penalty: 100.0,
+        };
+        let s = solve(&sp).unwrap();
+        assert!(
+            (s.p[0] - 0.25).abs() < 1e-7 && (s.p[1] - 0.25).abs() < 1e-7,
+            "{:?}",
+            s.p
+        );
+        assert!(
+            (s.multipliers[0] - 0.75).abs() < 1e-6,
+            "{:?}",
+            s.multipliers
+        );
+        assert!(s.slack[0] < 1e-7);
+        // With the trust region binding at Δ = 0.1 the step is (0.1/√2)(1, 1).
+        let sp = Subproblem { radius: 0.1, ..sp };
+        let s = solve(&sp).unwrap();
+        assert!((s.p[0] - 0.1 / 2f64.sqrt()).abs() < 1e-6, "{:?}", s.p);
+    }
+
+    /// An inconsistent linearisation (g = 1 with a zero gradient) is absorbed by the slack.
+    #[test]
+    fn elastic_mode_keeps_it_feasible() {
+        let b = DMatrix::identity(1, 1);
+        let jac = vec![vec![0.0]];
+        let sp = Subproblem {
+            x: &[0.5],
+            hessian: &b,
+            gradient: &[1.0],
+            rows: &[1.0],
+            jacobian: &jac,
+            radius: 1.0,
+            penalty: 10.0,
+        };
+        let s = solve(&sp).unwrap();
+        assert!((s.slack[0] - 1.0).abs() < 1e-6);
+        assert!((s.p[0] + 0.5).abs() < 1e-6, "{:?}", s.p);
+    }
+}

@@ -1,0 +1,189 @@
+//! The report of a design study (`wearopt optimize`): text, JSON, and the
+//! per-iteration trace as CSV.
+
+use serde_json::{json, Map, Value};
+
+use super::{number, si, sig, sig_exp};
+use crate::optimize::{OptimizationStatus, Optimum};
+use crate::problem::units::{format_quantity, Dimension};
+use crate::problem::{DesignQuantity, Named};
+
+fn unit_of(name: &str) -> Dimension {
+    DesignQuantity::from_name(name).map_or(Dimension::Dimensionless, |q| q.dimension())
+}
+
+fn design_object(names: &[&str], values: &[f64]) -> Value {
+    let mut m = Map::new();
+    for (n, v) in names.iter().zip(values) {
+        m.insert((*n).to_string(), json!(v));
+    }
+    Value::Object(m)
+}
+
+/// One JSON object, SI units.
+pub fn json(name: &str, o: &Optimum) -> String {
+    let v = json!({
+        "name": name,
+        "status": o.status.as_str(),
+        "objective_name": o.objective_name,
+        "objective": o.objective,
+        "baseline_objective": o.baseline_objective,
+        "improvement_factor": o.baseline_objective / o.objective,
+        "design": design_object(&o.names, &o.design),
+        "baseline_design": design_object(&o.names, &o.baseline_design),
+        "wear_rate": o.evaluation.wear_rate,
+        "baseline_wear_rate": o.baseline_evaluation.as_ref().map(|e| e.wear_rate),
+        "constraints": o.constraints,
+        "active_bounds": o.active_bounds,
+        "conflicting_constraints": o.conflicting,
+        "kkt_residual": o.kkt_residual,
+        "gradient_error": o.gradient_error,
+        "evaluations": o.evaluations,
+        "starts": o.starts,
+        "best_start": o.best_start,
+        "time_seconds": o.time_seconds,
+        "evaluation": o.evaluation,
+    });
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
+    s.push('\n');
+    s
+}
+
+/// The per-iteration trace of every start: error against run time.
+pub fn trace_csv(o: &Optimum) -> String {
+    let mut out = String::from(
+        "start,iteration,time_s,objective,ln_objective,kkt_residual,constraint_violation\n",
+    );
+    for s in &o.start_outcomes {
+        for r in &s.trace {
+            out.push_str(&format!(
+                "{},{},{},{},{},{},{}\n",
+                s.index,
+                r.iteration,
+                number(r.time),
+                number(r.objective.exp()),
+                number(r.objective),
+                number(r.kkt_residual),
+                number(r.violation)
+            ));
+        }
+    }
+    out
+}
+
+/// A report for people.
+pub fn text(name: &str, o: &Optimum) -> String {
+    let mut out = String::new();
+    let mut line = |s: String| {
+        out.push_str(&s);
+        out.push('\n');
+    };
+    line(format!("wearopt optimize — {name}"));
+    line(String::new());
+    let verdict = match o.status {
+        OptimizationStatus::Optimal => {
+            "optimal: the KKT conditions hold to tolerance at a feasible design"
+        }
+        OptimizationStatus::Infeasible => {
+            "infeasible: no design meets every constraint; the least-violating design is shown"
+        }
+        OptimizationStatus::IterationLimit => {
+            "iteration_limit: stopped by max_iterations before the KKT test was met"
+        }
+        OptimizationStatus::TimeLimit => {
+            "time_limit: stopped by time_limit before the KKT test was met"
+        }
+        OptimizationStatus::Stalled => {
+            "stalled: no further progress was possible, but the KKT test was not met"
+        }
+    };
+    line(format!("Status: {verdict}"));
+    line(String::new());
+    line(format!(
+        "{:<18} {:>16} {:>16}",
+        "design", "optimum", "baseline"
+    ));
+    for ((n, v), b) in o.names.iter().zip(&o.design).zip(&o.baseline_design) {
+        let d = unit_of(n);
+        line(format!(
+            "{:<18} {:>16} {:>16}",
+            n,
+            format_quantity(*v, d),
+            format_quantity(*b, d)
+        ));
+    }
+    for b in &o.active_bounds {
+        line(format!(
+            "  bound active: {} at its {} ({})",
+            b.variable,
+            b.side,
+            format_quantity(b.value, unit_of(b.variable))
+        ));
+    }
+    if !o.active_bounds.is_empty() && o.active_bounds.len() == o.names.len() {
+        line("  every variable sits on a bound: the optimum is a corner of the design box".into());
+    }
+    line(String::new());
+    let unit = match o.objective_name {
+        "wear_rate" => "m³/m",
+        "wear_volume" => "m³",
+        "real_area" => "m²",
+        _ => "N",
+    };
+    line(format!(
+        "{}: {} at the optimum, {} at the baseline (improvement ×{})",
+        o.objective_name,
+        si(o.objective, unit, 4),
+        si(o.baseline_objective, unit, 4),
+        sig(o.baseline_objective / o.objective, 4)
+    ));
+    if o.objective_name != "wear_rate" {
+        line(format!(
+            "wear rate: {} at the optimum, {} at the baseline",
+            si(o.evaluation.wear_rate, "m³/m", 4),
+            o.baseline_evaluation
+                .as_ref()
+                .map_or("—".into(), |e| si(e.wear_rate, "m³/m", 4))
+        ));
+    }
+    if !o.constraints.is_empty() {
+        line(String::new());
+        line(format!(
+            "{:<22} {:>14} {:>12} {:>12} {:>7} {:>12} {:>14}",
+            "constraint", "value", "min", "max", "active", "multiplier", "shadow price"
+        ));
+        for c in &o.constraints {
+            let f = |x: Option<f64>| x.map_or("—".to_string(), |v| sig_exp(v, 4));
+            line(format!(
+                "{:<22} {:>14} {:>12} {:>12} {:>7} {:>12} {:>14}",
+                c.quantity,
+                f(c.value),
+                f(c.min),
+                f(c.max),
+                if c.active { "yes" } else { "no" },
+                sig_exp(c.multiplier, 3),
+                sig_exp(c.shadow_price, 3)
+            ));
+        }
+        line("  shadow price = d ln(objective) / d ln(limit): relaxing a limit by 1 % changes the objective by about that many per cent".into());
+    }
+    if !o.conflicting.is_empty() {
+        line(format!(
+            "  conflicting constraints (violated at the least-violating design): {}",
+            o.conflicting.join(", ")
+        ));
+    }
+    line(String::new());
+    line(format!(
+        "KKT residual {} (finite-difference gradient error ≈ {}); {} model evaluations; {} s",
+        sig_exp(o.kkt_residual, 3),
+        sig_exp(o.gradient_error, 2),
+        o.evaluations,
+        sig(o.time_seconds, 3)
+    ));
+    line(format!(
+        "starts: {} run, {} converged, {} reached the best (start {} reported)",
+        o.starts.total, o.starts.converged, o.starts.reached_best, o.best_start
+    ));
+    out
+}

@@ -1,0 +1,666 @@
+//! A small SVG line-plot exporter: linear or log10 axes, several series with a
+//! legend, markers, a title and axis labels with units. Written by hand (SVG is
+//! a little XML), so it costs no dependency; every piece of text is escaped.
+//!
+//! ```
+//! use wearopt::report::svg::{Axis, LinePlot, Marker, Series};
+//! let svg = LinePlot::new(
+//!     "Wear against load",
+//!     Axis::linear("load").with_unit("µN"),
+//!     Axis::log("wear rate").with_unit("m³/m"),
+//! )
+//! .with_series(Series::new("θ = 10", vec![(1.0, 1e-18), (2.0, 3e-18)]).with_marker(Marker::Square))
+//! .to_svg();
+//! assert!(svg.starts_with("<?xml"));
+//! ```
+//!
+//! Points that cannot be drawn (not finite, or ≤ 0 on a log axis) are left out and
+//! break the series' line there. Axis ranges default to the drawable data widened to
+//! "nice" ticks (1, 2, 5 × 10^k on linear axes, decades on log axes).
+
+use std::fmt::Write as _;
+
+/// How an axis maps values to positions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scale {
+    /// Evenly spaced values.
+    Linear,
+    /// Evenly spaced decades (values must be > 0).
+    Log,
+}
+
+/// One axis: label, optional unit, scale and optional fixed range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    /// What the axis shows, e.g. "non-dimensional load P̄".
+    pub label: String,
+    /// The unit, shown as "label (unit)"; None for none (non-dimensional).
+    pub unit: Option<String>,
+    /// Linear or log10.
+    pub scale: Scale,
+    /// A fixed range (lo < hi; both > 0 on a log axis); None fits the data.
+    pub range: Option<(f64, f64)>,
+}
+
+impl Axis {
+    /// A linear axis fitted to the data.
+    pub fn linear(label: impl Into<String>) -> Self {
+        Axis {
+            label: label.into(),
+            unit: None,
+            scale: Scale::Linear,
+            range: None,
+        }
+    }
+
+    /// A log10 axis fitted to the data.
+    pub fn log(label: impl Into<String>) -> Self {
+        Axis {
+            scale: Scale::Log,
+            ..Axis::linear(label)
+        }
+    }
+
+    /// Sets the unit.
+    pub fn with_unit(mut self, unit: impl Into<String>) -> Self {
+        self.unit = Some(unit.into());
+        self
+    }
+
+    /// Fixes the range instead of fitting it to the data.
+    pub fn with_range(mut self, lo: f64, hi: f64) -> Self {
+        self.range = Some((lo, hi));
+        self
+    }
+
+    /// The label with its unit.
+    pub fn title(&self) -> String {
+        match &self.unit {
+            Some(u) if !u.is_empty() => format!("{} ({u})", self.label),
+            _ => self.label.clone(),
+        }
+    }
+
+    fn drawable(&self, v: f64) -> bool {
+        v.is_finite() && (self.scale == Scale::Linear || v > 0.0)
+    }
+
+    /// Value → axis coordinate (log10 on a log axis).
+    fn coord(&self, v: f64) -> f64 {
+        match self.scale {
+            Scale::Linear => v,
+            Scale::Log => v.log10(),
+        }
+    }
+}
+
+/// The symbol drawn at a series' points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Marker {
+    /// No symbol (line only).
+    None,
+    /// A filled circle.
+    Circle,
+    /// A filled square.
+    Square,
+    /// A filled upward triangle.
+    Triangle,
+    /// A filled diamond.
+    Diamond,
+    /// An × of two strokes.
+    Cross,
+}
+
+impl Marker {
+    /// The markers in the order [`LinePlot`] hands them to series that keep the default.
+    pub const CYCLE: [Marker; 5] = [
+        Marker::Circle,
+        Marker::Square,
+        Marker::Triangle,
+        Marker::Diamond,
+        Marker::Cross,
+    ];
+}
+
+/// One named series of (x, y) points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// The legend entry.
+    pub name: String,
+    /// The points, drawn in the given order.
+    pub points: Vec<(f64, f64)>,
+    /// Join the points with a line.
+    pub line: bool,
+    /// The marker; None picks one from [`Marker::CYCLE`] by the series' position.
+    pub marker: Option<Marker>,
+    /// Draw a marker at every n-th point (1: all; the first and last always get one).
+    pub marker_every: usize,
+    /// Stroke and fill colour (any SVG colour); None picks one from [`PALETTE`].
+    pub color: Option<String>,
+}
+
+impl Series {
+    /// A line with markers at every point, colour and marker picked by position.
+    pub fn new(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            name: name.into(),
+            points,
+            line: true,
+            marker: None,
+            marker_every: 1,
+            color: None,
+        }
+    }
+
+    /// Sets the marker.
+    pub fn with_marker(mut self, marker: Marker) -> Self {
+        self.marker = Some(marker);
+        self
+    }
+
+    /// Markers only, no line (a scatter, e.g. a Pareto front's points).
+    pub fn without_line(mut self) -> Self {
+        self.line = false;
+        self
+    }
+
+    /// A marker at every n-th point only (n ≥ 1).
+    pub fn with_marker_every(mut self, n: usize) -> Self {
+        self.marker_every = n.max(1);
+        self
+    }
+
+    /// Sets the colour.
+    pub fn with_color(mut self, color: impl Into<String>) -> Self {
+        self.color = Some(color.into());
+        self
+    }
+}
+
+/// Okabe–Ito colours (distinguishable with the common colour-vision deficiencies),
+/// without the yellow that vanishes on white.
+pub const PALETTE: [&str; 7] = [
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000",
+];
+
+/// A plot: title, two axes, series. Render with [`LinePlot::to_svg`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinePlot {
+    /// Shown above the plot.
+    pub title: String,
+    /// Horizontal axis.
+    pub x: Axis,
+    /// Vertical axis.
+    pub y: Axis,
+    /// The series, in legend order.
+    pub series: Vec<Series>,
+    /// Total width in px.
+    pub width: f64,
+    /// Total height in px.
+    pub height: f64,
+}
+
+const MARGIN_LEFT: f64 = 84.0;
+const MARGIN_TOP: f64 = 48.0;
+const MARGIN_BOTTOM: f64 = 62.0;
+const FONT: &str = "font-family=\"DejaVu Sans, Arial, Helvetica, sans-serif\"";
+
+/// Escapes text for XML content and attribute values.
+pub fn escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            // Control characters other than tab/newline are not allowed in XML 1.0.
+            c if (c as u32) < 0x20 && c != '\t' && c != '\n' => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A tick: its axis coordinate, its label (empty for a minor tick).
+struct Tick {
+    at: f64,
+    label: String,
+}
+
+/// The shortest string for a tick value.
+fn tick_label(v: f64) -> String {
+    let v = if v == 0.0 { 0.0 } else { v }; // no "-0"
+    let a = v.abs();
+    if v == 0.0 || (1e-4..1e6).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// Nice linear ticks covering [lo, hi]: the widened range and the ticks.
+fn linear_ticks(lo: f64, hi: f64) -> ((f64, f64), Vec<Tick>) {
+    let raw = (hi - lo) / 5.0;
+    let exp = raw.log10().floor() as i32;
+    let mag = 10f64.powi(exp);
+    let m = [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .find(|m| m * mag >= raw * (1.0 - 1e-9))
+        .unwrap_or(10.0);
+    // step = m · 10^exp; tick k is k·m·10^exp, computed as an integer times a
+    // power of ten (or divided by one) so 0.1 steps print as 0.3, not 0.30000000000000004.
+    let step = m * mag;
+    let value = |k: i64| -> f64 {
+        let n = k as f64 * m;
+        if exp >= 0 {
+            n * 10f64.powi(exp)
+        } else {
+            n / 10f64.powi(-exp)
+        }
+    };
+    let k0 = (lo / step + 1e-9).floor() as i64;
+    let k1 = (hi / step - 1e-9).ceil() as i64;
+    let ticks = (k0..=k1)
+        .map(|k| {
+            let v = value(k);
+            Tick {
+                at: v,
+                label: tick_label(v),
+            }
+        })
+        .collect();
+    ((value(k0), value(k1)), ticks)
+}
+
+/// Decade ticks (with unlabelled 2…9 minors when few decades) covering [lo, hi] (log10 coordinates).
+fn log_ticks(lo: f64, hi: f64) -> ((f64, f64), Vec<Tick>) {
+    let d0 = (lo + 1e-9).floor() as i32;
+    let d1 = ((hi - 1e-9).ceil() as i32).max(d0 + 1);
+    let decades = d1 - d0;
+    let every = ((decades + 7) / 8).max(1); // at most ~8 labelled decades
+    let mut ticks = Vec::new();
+    for d in d0..=d1 {
+        let label = if (d - d0) % every == 0 {
+            let v: f64 = format!("1e{d}").parse().unwrap_or(f64::NAN);
+            tick_label(v)
+        } else {
+            String::new()
+        };
+        ticks.push(Tick {
+            at: d as f64,
+            label,
+        });
+        if decades <= 4 && d < d1 {
+            for m in 2..10 {
+                ticks.push(Tick {
+                    at: d as f64 + (m as f64).log10(),
+                    label: String::new(),
+                });
+            }
+        }
+    }
+    ((d0 as f64, d1 as f64), ticks)
+}
+
+/// The axis range in axis coordinates and its ticks.
+fn axis_layout(axis: &Axis, values: impl Iterator<Item = f64>) -> ((f64, f64), Vec<Tick>) {
+    let (mut lo, mut hi) = match axis.range {
+        Some((a, b)) if axis.drawable(a) && axis.drawable(b) && a < b => {
+            (axis.coord(a), axis.coord(b))
+        }
+        _ => values
+            .filter(|&v| axis.drawable(v))
+            .map(|v| axis.coord(v))
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), c| {
+                (l.min(c), h.max(c))
+            }),
+    };
+    if lo > hi {
+        // No drawable data.
+        (lo, hi) = match axis.scale {
+            Scale::Linear => (0.0, 1.0),
+            Scale::Log => (0.0, 1.0),
+        };
+    }
+    if lo == hi {
+        let pad = match axis.scale {
+            Scale::Linear => (lo.abs() * 0.1)
+                .max(1e-300)
+                .max(if lo == 0.0 { 1.0 } else { 0.0 }),
+            Scale::Log => 0.5,
+        };
+        lo -= pad;
+        hi += pad;
+    }
+    let ((nlo, nhi), ticks) = match axis.scale {
+        Scale::Linear => linear_ticks(lo, hi),
+        Scale::Log => log_ticks(lo, hi),
+    };
+    if axis.range.is_some() {
+        // A fixed range is kept exactly; ticks outside it are dropped.
+        let eps = (hi - lo) * 1e-9;
+        let ticks = ticks
+            .into_iter()
+            .filter(|t| t.at >= lo - eps && t.at <= hi + eps)
+            .collect();
+        ((lo, hi), ticks)
+    } else {
+        ((nlo, nhi), ticks)
+    }
+}
+
+fn marker_svg(out: &mut String, marker: Marker, x: f64, y: f64, color: &str) {
+    let r = 3.2;
+    let _ = match marker {
+        Marker::None => Ok(()),
+        Marker::Circle => writeln!(
+            out,
+            "<circle cx=\"{x:.2}\" cy=\"{y:.2}\" r=\"{r}\" fill=\"{color}\"/>"
+        ),
+        Marker::Square => writeln!(
+            out,
+            "<rect x=\"{:.2}\" y=\"{:.2}\" width=\"{w:.2}\" height=\"{w:.2}\" fill=\"{color}\"/>",
+            x - r * 0.9,
+            y - r * 0.9,
+            w = 1.8 * r
+        ),
+        Marker::Triangle => writeln!(
+            out,
+            "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{color}\"/>",
+            x,
+            y - 1.2 * r,
+            x + 1.1 * r,
+            y + 0.8 * r,
+            x - 1.1 * r,
+            y + 0.8 * r
+        ),
+        Marker::Diamond => writeln!(
+            out,
+            "<polygon points=\"{:.2},{:.2} {:.2},{:.2} {:.2},{:.2} {:.2},{:.2}\" fill=\"{color}\"/>",
+            x,
+            y - 1.3 * r,
+            x + 1.1 * r,
+            y,
+            x,
+            y + 1.3 * r,
+            x - 1.1 * r,
+            y
+        ),
+        Marker::Cross => writeln!(
+            out,
+            "<path d=\"M{:.2},{:.2}L{:.2},{:.2}M{:.2},{:.2}L{:.2},{:.2}\" stroke=\"{color}\" stroke-width=\"1.6\" fill=\"none\"/>",
+            x - r,
+            y - r,
+            x + r,
+            y + r,
+            x - r,
+            y + r,
+            x + r,
+            y - r
+        ),
+    };
+}
+
+impl LinePlot {
+    /// An empty 760 × 480 plot.
+    pub fn new(title: impl Into<String>, x: Axis, y: Axis) -> Self {
+        LinePlot {
+            title: title.into(),
+            x,
+            y,
+            series: Vec::new(),
+            width: 760.0,
+            height: 480.0,
+        }
+    }
+
+    /// Adds a series.
+    pub fn with_series(mut self, series: Series) -> Self {
+        self.series.push(series);
+        self
+    }
+
+    /// The SVG document (UTF-8, standalone, with an XML declaration).
+    pub fn to_svg(&self) -> String {
+        let (w, h) = (self.width.max(200.0), self.height.max(150.0));
+        // The legend sits right of the plot; its width follows the longest name.
+        let longest = self
+            .series
+            .iter()
+            .map(|s| s.name.chars().count())
+            .max()
+            .unwrap_or(0);
+        let legend_w = if self.series.is_empty() {
+            20.0
+        } else {
+            (62.0 + 8.0 * longest as f64).clamp(100.0, 0.4 * w)
+        };
+        let (left, top) = (MARGIN_LEFT, MARGIN_TOP);
+        let right = w - legend_w;
+        let bottom = h - MARGIN_BOTTOM;
+
+        let ((x0, x1), xticks) = axis_layout(
+            &self.x,
+            self.series
+                .iter()
+                .flat_map(|s| s.points.iter().map(|p| p.0)),
+        );
+        let ((y0, y1), yticks) = axis_layout(
+            &self.y,
+            self.series
+                .iter()
+                .flat_map(|s| s.points.iter().map(|p| p.1)),
+        );
+        let px = |c: f64| left + (c - x0) / (x1 - x0) * (right - left);
+        let py = |c: f64| bottom - (c - y0) / (y1 - y0) * (bottom - top);
+
+        let mut o = String::new();
+        let _ = writeln!(
+            o,
+            "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>"
+        );
+        let _ = writeln!(
+            o,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" {FONT} font-size=\"13\">"
+        );
+        let _ = writeln!(o, "<title>{}</title>", escape(&self.title));
+        let _ = writeln!(
+            o,
+            "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<defs><clipPath id=\"plot-area\"><rect x=\"{left}\" y=\"{top}\" width=\"{:.2}\" height=\"{:.2}\"/></clipPath></defs>",
+            right - left,
+            bottom - top
+        );
+        let _ = writeln!(
+            o,
+            "<text class=\"title\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">{}</text>",
+            (left + right) / 2.0,
+            top - 18.0,
+            escape(&self.title)
+        );
+
+        // Grid, ticks and tick labels.
+        let _ = writeln!(o, "<g class=\"x-axis\">");
+        for t in &xticks {
+            let x = px(t.at);
+            let major = !t.label.is_empty();
+            let _ = writeln!(
+                o,
+                "<line x1=\"{x:.2}\" y1=\"{top}\" x2=\"{x:.2}\" y2=\"{bottom}\" stroke=\"{}\" stroke-width=\"1\"/>",
+                if major { "#dddddd" } else { "#f0f0f0" }
+            );
+            let len = if major { 6.0 } else { 3.0 };
+            let _ = writeln!(
+                o,
+                "<line x1=\"{x:.2}\" y1=\"{bottom}\" x2=\"{x:.2}\" y2=\"{:.2}\" stroke=\"black\"/>",
+                bottom + len
+            );
+            if major {
+                let _ = writeln!(
+                    o,
+                    "<text x=\"{x:.2}\" y=\"{:.2}\" text-anchor=\"middle\">{}</text>",
+                    bottom + 20.0,
+                    escape(&t.label)
+                );
+            }
+        }
+        let _ = writeln!(
+            o,
+            "<text class=\"x-label\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n</g>",
+            (left + right) / 2.0,
+            h - 16.0,
+            escape(&self.x.title())
+        );
+        let _ = writeln!(o, "<g class=\"y-axis\">");
+        for t in &yticks {
+            let y = py(t.at);
+            let major = !t.label.is_empty();
+            let _ = writeln!(
+                o,
+                "<line x1=\"{left}\" y1=\"{y:.2}\" x2=\"{right:.2}\" y2=\"{y:.2}\" stroke=\"{}\" stroke-width=\"1\"/>",
+                if major { "#dddddd" } else { "#f0f0f0" }
+            );
+            let len = if major { 6.0 } else { 3.0 };
+            let _ = writeln!(
+                o,
+                "<line x1=\"{:.2}\" y1=\"{y:.2}\" x2=\"{left}\" y2=\"{y:.2}\" stroke=\"black\"/>",
+                left - len
+            );
+            if major {
+                let _ = writeln!(
+                    o,
+                    "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"end\">{}</text>",
+                    left - 9.0,
+                    y + 4.5,
+                    escape(&t.label)
+                );
+            }
+        }
+        let (lx, ly) = (18.0, (top + bottom) / 2.0);
+        let _ = writeln!(
+            o,
+            "<text class=\"y-label\" x=\"{lx}\" y=\"{ly:.2}\" text-anchor=\"middle\" font-size=\"14\" transform=\"rotate(-90 {lx} {ly:.2})\">{}</text>\n</g>",
+            escape(&self.y.title())
+        );
+        let _ = writeln!(
+            o,
+            "<rect class=\"frame\" x=\"{left}\" y=\"{top}\" width=\"{:.2}\" height=\"{:.2}\" fill=\"none\" stroke=\"black\"/>",
+            right - left,
+            bottom - top
+        );
+
+        // Series, clipped to the plot area.
+        let mut legend = String::new();
+        for (i, s) in self.series.iter().enumerate() {
+            let color = s
+                .color
+                .clone()
+                .unwrap_or_else(|| PALETTE[i % PALETTE.len()].to_string());
+            let color = escape(&color);
+            let marker = s.marker.unwrap_or(Marker::CYCLE[i % Marker::CYCLE.len()]);
+            let _ = writeln!(
+                o,
+                "<g class=\"series\" data-name=\"{}\" clip-path=\"url(#plot-area)\">",
+                escape(&s.name)
+            );
+            let pts: Vec<Option<(f64, f64)>> = s
+                .points
+                .iter()
+                .map(|&(x, y)| {
+                    (self.x.drawable(x) && self.y.drawable(y))
+                        .then(|| (px(self.x.coord(x)), py(self.y.coord(y))))
+                })
+                .collect();
+            if s.line {
+                for run in pts.split(|p| p.is_none()).filter(|r| r.len() >= 2) {
+                    let coords: Vec<String> = run
+                        .iter()
+                        .flatten()
+                        .map(|(x, y)| format!("{x:.2},{y:.2}"))
+                        .collect();
+                    let _ = writeln!(
+                        o,
+                        "<polyline fill=\"none\" stroke=\"{color}\" stroke-width=\"1.8\" stroke-linejoin=\"round\" points=\"{}\"/>",
+                        coords.join(" ")
+                    );
+                }
+            }
+            let last = pts.len().saturating_sub(1);
+            for (k, p) in pts.iter().enumerate() {
+                if let Some((x, y)) = p {
+                    if k % s.marker_every == 0 || k == last {
+                        marker_svg(&mut o, marker, *x, *y, &color);
+                    }
+                }
+            }
+            let _ = writeln!(o, "</g>");
+
+            // Legend entry.
+            let ey = top + 14.0 + 22.0 * i as f64;
+            let ex = right + 14.0;
+            let _ = writeln!(legend, "<g class=\"legend-entry\">");
+            if s.line {
+                let _ = writeln!(
+                    legend,
+                    "<line x1=\"{ex:.2}\" y1=\"{ey:.2}\" x2=\"{:.2}\" y2=\"{ey:.2}\" stroke=\"{color}\" stroke-width=\"1.8\"/>",
+                    ex + 26.0
+                );
+            }
+            marker_svg(&mut legend, marker, ex + 13.0, ey, &color);
+            let _ = writeln!(
+                legend,
+                "<text x=\"{:.2}\" y=\"{:.2}\">{}</text>\n</g>",
+                ex + 34.0,
+                ey + 4.5,
+                escape(&s.name)
+            );
+        }
+        if !self.series.is_empty() {
+            let _ = writeln!(o, "<g class=\"legend\">\n{legend}</g>");
+        }
+        let _ = writeln!(o, "</svg>");
+        o
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn escapes_markup() {
+        assert_eq!(
+            escape("a<b & \"c\" 'd'>"),
+            "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;"
+        );
+    }
+
+    #[test]
+    fn linear_ticks_are_round() {
+        let ((lo, hi), ticks) = linear_ticks(0.05, 5.0);
+        assert_eq!((lo, hi), (0.0, 5.0));
+        let labels: Vec<&str> = ticks.iter().map(|t| t.label.as_str()).collect();
+        assert_eq!(labels, ["0", "1", "2", "3", "4", "5"]);
+        // Steps of 0.1 print as 0.3, not 0.30000000000000004; no "-0".
+        let ((lo, hi), ticks) = linear_ticks(-0.23, 0.27);
+        assert_eq!((lo, hi), (-0.3, 0.3));
+        let labels: Vec<&str> = ticks.iter().map(|t| t.label.as_str()).collect();
+        assert_eq!(labels, ["-0.3", "-0.2", "-0.1", "0", "0.1", "0.2", "0.3"]);
+        let ((lo, hi), _) = linear_ticks(2.0e-9, 7.5e-9);
+        assert_eq!((lo, hi), (2e-9, 8e-9));
+    }
+
+    #[test]
+    fn log_axis_drops_non_positive_points() {
+        let svg = LinePlot::new("t", Axis::log("x"), Axis::linear("y"))
+            .with_series(Series::new(
+                "s",
+                vec![(-1.0, 1.0), (1.0, 2.0), (10.0, 3.0), (100.0, 4.0)],
+            ))
+            .to_svg();
+        let line = svg.lines().find(|l| l.starts_with("<polyline")).unwrap();
+        assert_eq!(line.matches(',').count(), 3);
+        assert!(svg.contains(">1</text>") && svg.contains(">100</text>"));
+    }
+}

@@ -1,0 +1,325 @@
+//! The work–precision reference (`wearopt::accuracy::reference`, adaptive
+//! G7K15 on the direct form of MODEL.md §3) against the 40-digit mpmath table
+//! `tests/data/reference_points.csv` (scripts/reference.py; two independent
+//! methods agreeing to ≥ 25 digits), then the default quadrature against the
+//! reference, the finite-difference reference, and the CSV contract.
+//!
+//! Tolerances (why they are what they are):
+//! * [`REFERENCE_TOLERANCE`] 2e-15: the reference's quadrature tolerance is 1e-15
+//!   of ∫|f| per part; a load is measured against |elastic| + |plastic| (P̄
+//!   crosses zero), an area against itself, dP̄/dh against its parts.
+//! * [`DEFAULT_TOLERANCE`] 1e-13: what README claims of the default quadrature
+//!   (4e-14 against a finer rule), with room for the reference's own error.
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+use wearopt::accuracy::finite_difference::{self, StepRule};
+use wearopt::accuracy::reference::ReferenceModel;
+use wearopt::accuracy::{self, Quantity, Row, WorkPrecision};
+use wearopt::model::{Coefficients, Model, Quadrature, SensitivityParameter};
+
+const REFERENCE_TOLERANCE: f64 = 2e-15;
+const DEFAULT_TOLERANCE: f64 = 1e-13;
+
+fn data_dir() -> PathBuf {
+    std::env::var_os("WEAROPT_REFERENCE_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")))
+}
+
+fn table(name: &str) -> Vec<HashMap<String, String>> {
+    let text = std::fs::read_to_string(data_dir().join(name)).expect("reference table present");
+    let mut lines = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty());
+    let header: Vec<String> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    lines
+        .map(|l| {
+            header
+                .iter()
+                .cloned()
+                .zip(l.split(',').map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
+
+fn num(s: &str) -> f64 {
+    s.parse().unwrap_or_else(|_| panic!("not a number: {s}"))
+}
+
+fn coefficients_of(row: &HashMap<String, String>) -> Coefficients {
+    match row["case"].as_str() {
+        "adhesive" => Coefficients::from_indices(num(&row["theta"]), num(&row["lambda"])),
+        _ => Coefficients::new(num(&row["c_a"]), num(&row["c_h"])),
+    }
+}
+
+/// |got − want| / max(|want|, scale); both below the double range count as equal.
+fn rel(got: f64, want: f64, scale: f64) -> f64 {
+    if got == want || (got.abs() < 1e-290 && want.abs() < 1e-290) {
+        0.0
+    } else {
+        (got - want).abs() / scale.max(want.abs()).max(f64::MIN_POSITIVE)
+    }
+}
+
+#[test]
+fn reference_matches_the_mpmath_table() {
+    let rows = table("reference_points.csv");
+    assert!(rows.len() >= 100, "table too small: {}", rows.len());
+    let mut worst = (0.0f64, String::new());
+    let mut underestimated = Vec::new();
+    for row in &rows {
+        let m = ReferenceModel::new(coefficients_of(row));
+        let dc = num(&row["critical_interference"]);
+        // Δc enters the plastic parts through e^{-Δc(h + Δc/2)}: one ulp of Δc
+        // moves them by ≈ Δc(h + Δc)·ε (2e-13 at θ = 0.1, λ = 1e-3, h = 8). That
+        // is the conditioning of the problem, not the quadrature's error, so the
+        // quadrature is checked at the table's Δc (Δc on its own below), and the
+        // half ulp by which the table's 20-digit Δc is rounded to a double is
+        // allowed for: `conditioning` = ε Δc (|h + Δc| + 1).
+        let at_table_dc = ReferenceModel {
+            critical_interference: dc,
+            ..m
+        };
+        let h = num(&row["h"]);
+        let r = at_table_dc.at(h);
+        let conditioning = if dc.is_finite() {
+            f64::EPSILON * dc * ((h + dc).abs() + 1.0)
+        } else {
+            0.0
+        };
+        let (le, lp) = (num(&row["load_elastic"]), num(&row["load_plastic"]));
+        // Loads against |elastic| + |plastic|, or the size of the integrands'
+        // terms where they change sign (p_p = c_p Δ − c_0 does at Δ = c_0/c_p).
+        let parts = (le.abs() + lp.abs()).max(r.load_elastic.magnitude + r.load_plastic.magnitude);
+        let checks = [
+            ("load", r.load(), num(&row["load"]), parts, r.load_error()),
+            (
+                "load_elastic",
+                r.load_elastic.value,
+                le,
+                parts,
+                r.load_elastic.error,
+            ),
+            (
+                "load_plastic",
+                r.load_plastic.value,
+                lp,
+                parts,
+                r.load_plastic.error,
+            ),
+            ("area", r.area.value, num(&row["area"]), 0.0, r.area.error),
+            (
+                "plastic_area",
+                r.plastic_area.value,
+                num(&row["plastic_area"]),
+                0.0,
+                r.plastic_area.error,
+            ),
+            (
+                "dload_dh",
+                r.dload_dh.value,
+                num(&row["dload_dh"]),
+                r.dload_dh_parts,
+                r.dload_dh.error,
+            ),
+        ];
+        for (what, got, want, scale, estimate) in checks {
+            let allowed = if what == "area" { 0.0 } else { conditioning };
+            // In units of the tolerance: ≤ 1 passes.
+            let e = rel(got, want, scale) / (REFERENCE_TOLERANCE + allowed);
+            if e > worst.0 {
+                worst = (
+                    e,
+                    format!(
+                        "{what} {} θ={} λ={} h={h}: {got:e} vs {want:e}",
+                        row["case"], row["theta"], row["lambda"]
+                    ),
+                );
+            }
+            // The error estimate must cover the actual error (up to rounding of
+            // the comparison itself).
+            let actual = (got - want).abs();
+            if actual > estimate + (4.0 * f64::EPSILON + allowed) * scale.max(want.abs()) {
+                underestimated.push(format!(
+                    "{what} θ={} λ={} h={h}: {actual:e} > {estimate:e}",
+                    row["theta"], row["lambda"]
+                ));
+            }
+        }
+        assert!(
+            rel(m.critical_interference, dc, 0.0) < 4e-15
+                || dc.is_infinite() && m.critical_interference.is_infinite(),
+            "Δc at {row:?}: {}",
+            m.critical_interference
+        );
+    }
+    eprintln!(
+        "reference vs mpmath: worst error over {} rows {:.3} of the tolerance ({})",
+        rows.len(),
+        worst.0,
+        worst.1
+    );
+    assert!(
+        worst.0 <= 1.0,
+        "worst {:.3} of the tolerance: {}",
+        worst.0,
+        worst.1
+    );
+    assert!(
+        underestimated.is_empty(),
+        "error estimate too small: {underestimated:#?}"
+    );
+}
+
+#[test]
+fn default_quadrature_agrees_with_the_reference() {
+    // A coarse cut of the report's grid (the report covers it densely).
+    let mut worst = (0.0f64, String::new());
+    for &theta in &[1e-3, 0.1, 10.0, 1e4, 1e8] {
+        for &lambda in &[1e-6, 1e-2, 1.0, 1e6] {
+            for &h in &[-4.0, -1.0, 0.0, 1.0, 4.0, 15.0, 60.0] {
+                let c = Coefficients::from_indices(theta, lambda);
+                let r = ReferenceModel::new(c).at(h);
+                let at = Model::new(c).at(h);
+                let e = rel(at.load_elastic + at.load_plastic, r.load(), r.load_parts());
+                if e > worst.0 {
+                    worst = (e, format!("θ={theta} λ={lambda} h={h}"));
+                }
+            }
+        }
+    }
+    eprintln!("default vs reference: worst {:e} at {}", worst.0, worst.1);
+    assert!(worst.0 <= DEFAULT_TOLERANCE, "{:e} at {}", worst.0, worst.1);
+}
+
+#[test]
+fn quadrature_settings_are_valid_and_include_the_default() {
+    let s = accuracy::settings();
+    assert!(s.contains(&Quadrature::default()));
+    for q in &s {
+        assert!(q.validate().is_ok(), "{q:?}");
+    }
+    assert_eq!(
+        accuracy::setting_label(&Quadrature::default()),
+        "order=20;step=6;cut=46"
+    );
+    assert!(accuracy::step_rules().contains(&StepRule::DEFAULT));
+}
+
+#[test]
+fn finite_differences_against_the_reference_derivative() {
+    let problem = wearopt::problem::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/micro-gear.toml"
+    )))
+    .expect("shipped problem loads");
+    let scene = &problem.scene;
+    let p = SensitivityParameter::Sigma;
+    let r = finite_difference::reference_elasticity(scene, p).expect("reference derivative");
+    assert!(r.error < 1e-10, "{r:?}");
+    // The model's own sensitivity (Richardson, δ = 1e-4) is the default rule.
+    let model = wearopt::model::sensitivities(scene, Quadrature::default());
+    let own = model
+        .iter()
+        .find(|s| s.parameter == p)
+        .and_then(|s| s.elasticity)
+        .unwrap();
+    let mine =
+        finite_difference::elasticity(scene, p, StepRule::DEFAULT, Quadrature::default()).unwrap();
+    assert!(
+        (own - mine).abs() <= 1e-12 * own.abs().max(1.0),
+        "{own} {mine}"
+    );
+    assert!(
+        (own - r.value).abs() <= 1e-8 * r.value.abs().max(1.0),
+        "{own} vs {r:?}"
+    );
+}
+
+#[test]
+fn csv_has_the_contract_columns() {
+    let row = |quantity, setting: &str, is_default| Row {
+        quantity,
+        setting: setting.to_string(),
+        max_rel_error: 2.5e-14,
+        median_rel_error: 0.0,
+        time_per_eval_ns: 1234.5,
+        is_default,
+        samples: 3,
+        evaluations_per_value: 1,
+    };
+    let wp = WorkPrecision {
+        rows: vec![
+            row(Quantity::Load, "order=20;step=6;cut=46", true),
+            row(Quantity::Gradient, "fd=central;delta=1e-4", false),
+        ],
+        grid_points: 3,
+        wear_points: 0,
+        gradient_points: 0,
+        reference_error: 1e-15,
+        reference_gradient_error: 0.0,
+        scenes: vec![],
+    };
+    let csv = wearopt::report::accuracy::csv(&wp);
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default")
+    );
+    assert_eq!(
+        lines.next(),
+        Some("load,order=20;step=6;cut=46,2.5e-14,0,1234.5,true")
+    );
+    assert_eq!(
+        lines.next(),
+        Some("gradient,fd=central;delta=1e-4,2.5e-14,0,1234.5,false")
+    );
+    let svg = wearopt::report::accuracy::svg(&wp);
+    assert!(svg.contains("<svg") && svg.trim_end().ends_with("</svg>"));
+    for label in [
+        "time per evaluation (ns)",
+        "max relative error",
+        "load",
+        "gradient",
+    ] {
+        assert!(svg.contains(label), "{label}");
+    }
+}
+
+/// Known model issue (reported, not fixed here: src/model is not ours): just
+/// left of h = 0 with weak or no adhesion the default quadrature is off by up to
+/// 8e-12 (Greenwood–Williamson at h = −1e-300; 5e-14 already at c_a = 0.05),
+/// against 4e-14 claimed. The peak Δ = −h sits at the left end of [0, Δc], so the
+/// first panel is [0, −h] and the quartic-start split lands there instead of on
+/// [−h, −h + √12], where Δ(s) = s⁴ − c_d s is quartic. Run with `--ignored`.
+#[test]
+#[ignore = "known model issue: default quadrature ≈ 8e-12 off for h ∈ (-0.01, 0) at small c_a"]
+fn default_quadrature_just_left_of_zero() {
+    let mut worst = (0.0f64, String::new());
+    for &(c_a, c_h) in &[
+        (0.0, f64::INFINITY),
+        (0.0, 12.576935472483921),
+        (0.05, 3.0),
+        (1.0, 5.0),
+    ] {
+        let c = Coefficients::new(c_a, c_h);
+        for &h in &[-1e-300, -1e-9, -1e-6, -1e-3, -1e-2, -0.1] {
+            let r = ReferenceModel::new(c).at(h);
+            let at = Model::new(c).at(h);
+            let e = rel(at.load_elastic + at.load_plastic, r.load(), r.load_parts());
+            if e > worst.0 {
+                worst = (e, format!("c_a={c_a} c_h={c_h} h={h:e}"));
+            }
+        }
+    }
+    assert!(worst.0 <= DEFAULT_TOLERANCE, "{:e} at {}", worst.0, worst.1);
+}
