@@ -67,7 +67,7 @@ HOW / PRECISION
     mpmath.findroot (Anderson, bracketing) on (dP/dh)/|P| and P is evaluated there by both methods.
     Roots: P - target is scanned on the same grid (extended downwards in steps of max(1, |h|/20)
     while P < 1.01 * the largest target + 1; for h < -(Dc+17) P is linear and monotone), each sign change refined
-    with findroot (Anderson) on the bounded function (P - T)/(|P| + |T|), in scaled form.
+    with findroot (Anderson) on log(P/T) in scaled form (on P / sum of |parts| for T = 0).
 
 USAGE
     python3 scripts/reference.py --out tests/data            # full tables (~see README for time)
@@ -920,7 +920,7 @@ def main():
             worst = min(worst, w)
             print("  roots %s %s %s %s: %.0fs" % (out[0][0], out[0][1], out[0][2], out[0][4], dt), flush=True)
         head = header(args, "separation roots P(h) = target", m1 + "; roots bracketed by a scan (method 1) and refined "
-                      "with mpmath.findroot (anderson) on (P - T)/(|P| + |T|) in scaled form",
+                      "with mpmath.findroot (anderson) on log(P/T) in scaled form (P/sum|parts| for T = 0)",
                       "P(h_root) by method (2) equals the target to %.1f digits (relative to the sum of |parts|)" % worst,
                       ["rule (MODEL.md section 4): compressive target (and 0) -> largest h with P = target; tensile target -> "
                        "largest root below the h of the deepest minimum (pull-off); none_separates if there is none",

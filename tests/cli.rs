@@ -198,3 +198,116 @@ fn tensile_beyond_pull_off_is_an_outcome() {
     assert_eq!(v["status"], "separated");
     assert_eq!(v["wear_rate"], 0.0);
 }
+
+#[test]
+fn optimize_json_contract_and_exit_codes() {
+    let out = wearopt()
+        .args([
+            "optimize",
+            "problems/micro-gear-study.toml",
+            "--format",
+            "json",
+        ])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    for key in [
+        "status",
+        "design",
+        "baseline_design",
+        "objective",
+        "baseline_objective",
+        "constraints",
+        "kkt_residual",
+        "evaluations",
+        "starts",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(v["status"], "optimal");
+    for key in [
+        "youngs_modulus",
+        "hardness",
+        "work_of_adhesion",
+        "sigma",
+        "asperity_radius",
+    ] {
+        assert!(v["design"][key].as_f64().unwrap() > 0.0, "design.{key}");
+        assert!(v["baseline_design"][key].as_f64().unwrap() > 0.0);
+    }
+    for c in v["constraints"].as_array().unwrap() {
+        for key in ["quantity", "value", "min", "max", "active", "multiplier"] {
+            assert!(c.get(key).is_some(), "constraint.{key}");
+        }
+    }
+    assert!(v["objective"].as_f64().unwrap() < v["baseline_objective"].as_f64().unwrap());
+
+    // Infeasible: exit 1, status and the conflicting constraint named.
+    let out = wearopt()
+        .args([
+            "optimize",
+            "problems/infeasible-study.toml",
+            "--format",
+            "json",
+        ])
+        .assert()
+        .code(1)
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["status"], "infeasible");
+    assert_eq!(v["conflicting_constraints"][0], "plasticity_index");
+
+    // No [design]: bad input, exit 2, the file named.
+    let out = wearopt()
+        .args(["optimize", "problems/dlc-contact.toml"])
+        .assert()
+        .code(2)
+        .get_output()
+        .stderr
+        .clone();
+    let msg = String::from_utf8(out).unwrap();
+    assert!(
+        msg.contains("dlc-contact.toml") && msg.contains("[design]"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn optimize_trace_has_one_row_per_iteration() {
+    let dir = std::env::temp_dir().join(format!("wearopt-trace-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let trace = dir.join("trace.csv");
+    wearopt()
+        .args([
+            "optimize",
+            "problems/switch-study.toml",
+            "--trace",
+            trace.to_str().unwrap(),
+        ])
+        .assert()
+        .success();
+    let text = std::fs::read_to_string(&trace).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "start,iteration,time_s,objective,ln_objective,kkt_residual,constraint_violation"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() >= 4);
+    // The KKT residual of each start's last row is what the report calls converged.
+    let last = rows.last().unwrap();
+    assert!(last[5] < 1e-6, "{last:?}");
+    // Time never runs backwards within a start.
+    for w in rows.windows(2) {
+        if w[0][0] == w[1][0] {
+            assert!(w[1][2] >= w[0][2]);
+        }
+    }
+}

@@ -258,6 +258,10 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
         let dg = if h > 0.0 { d2 + h * d1 } else { d2 };
         let newton = h - d1 / dg;
         let curvature_ok = dg > 0.0;
+        if curvature_ok && (newton - h).abs() <= 4.0 * f64::EPSILON * h.abs().max(1.0) {
+            // Converged: the step is below the spacing of doubles at h.
+            return Some(at);
+        }
         let next = if curvature_ok && newton.is_finite() && newton > lo && newton < hi {
             newton
         } else if lo.is_finite() && hi.is_finite() {

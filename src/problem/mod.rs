@@ -1131,7 +1131,8 @@ impl Reader<'_> {
             let seconds = self.quantity(
                 "optimizer.time_limit",
                 v,
-                Accept::positive(Dimension::Time).why("wall-clock limit, e.g. \"30 s\""),
+                Accept::non_negative(Dimension::Time)
+                    .why("wall-clock limit, e.g. \"30 s\" (0: evaluate the starts only)"),
             )?;
             settings.time_limit = Duration::try_from_secs_f64(seconds).map_err(|_| {
                 self.invalid(

@@ -361,13 +361,8 @@ impl OptimizerSettings {
                 "must be an integer in 1..=10000 (iterations per start)",
             ));
         }
-        if self.time_limit.is_zero() {
-            return Err(err(
-                "time_limit",
-                format!("{:?}", self.time_limit),
-                "must be > 0 s, e.g. \"30 s\"",
-            ));
-        }
+        // A zero time limit is accepted: the study then stops after evaluating
+        // its starts, with status time_limit.
         Ok(())
     }
 }
