@@ -295,14 +295,10 @@ fn csv_has_the_contract_columns() {
     }
 }
 
-/// Known model issue (reported, not fixed here: src/model is not ours): just
-/// left of h = 0 with weak or no adhesion the default quadrature is off by up to
-/// 8e-12 (Greenwood–Williamson at h = −1e-300; 5e-14 already at c_a = 0.05),
-/// against 4e-14 claimed. The peak Δ = −h sits at the left end of [0, Δc], so the
-/// first panel is [0, −h] and the quartic-start split lands there instead of on
-/// [−h, −h + √12], where Δ(s) = s⁴ − c_d s is quartic. Run with `--ignored`.
+/// Just left of h = 0 with weak or no adhesion the peak Δ = −h sits at the left
+/// end of [0, Δc]; the panel after it, where Δ(s) = s⁴ − c_d s is quartic, must
+/// be split too (it was not: 8e-12 for Greenwood–Williamson at h = −1e-300).
 #[test]
-#[ignore = "known model issue: default quadrature ≈ 8e-12 off for h ∈ (-0.01, 0) at small c_a"]
 fn default_quadrature_just_left_of_zero() {
     let mut worst = (0.0f64, String::new());
     for &(c_a, c_h) in &[

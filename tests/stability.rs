@@ -244,11 +244,8 @@ fn load_continuous_as_critical_interference_moves(
         left.load_elastic + left.load_plastic,
         right.load_elastic + right.load_plastic,
     );
-    // 2e-11: the default quadrature is up to 8e-12 off just left of 0 at small c_a
-    // (known model issue, tests/accuracy.rs `default_quadrature_just_left_of_zero`);
-    // tighten to 1e-13 once that is fixed.
     prop_assert!(
-        close(ll, lr, parts(&left), 2e-11),
+        close(ll, lr, parts(&left), 1e-13),
         "{what}: P̄ jumps across h = 0: {ll} → {lr}"
     );
     Ok(())

@@ -304,12 +304,13 @@ impl Model {
         // A panel near Δ = 0 that reaches far beyond Δ0 = c_d^{4/3}, where Δ(s) is
         // already quartic, carries a weight like e^{-q x⁸} in s: split it at half
         // its length in s (Δ/16), where the exponent is q/256, so both halves are
-        // smooth. The panel may start at 0 or at a tiny peak -h just right of it.
+        // smooth. Every such panel is split once: the one from 0 and, when a tiny
+        // peak -h sits just right of 0, the long one after it.
         let delta0 = self.c_d_cubed.powf(4.0 / 9.0);
-        if n < bounds.len() {
-            if let Some(k) =
-                (0..n - 1).find(|&k| 16.0 * bounds[k] < bounds[k + 1] && delta0 < bounds[k + 1])
-            {
+        let mut k = n - 1;
+        while k > 0 && n < bounds.len() {
+            k -= 1;
+            if 16.0 * bounds[k] < bounds[k + 1] && delta0 < bounds[k + 1] {
                 bounds.copy_within(k + 1..n, k + 2);
                 bounds[k + 1] = bounds[k + 2] / 16.0;
                 n += 1;
