@@ -192,3 +192,60 @@ fn default_quadrature_agrees_with_a_finer_rule() {
     // the accuracy proper is checked against the 40-digit tables (reference.rs).
     assert!(worst < 2.5e-13, "worst {worst:e}");
 }
+
+/// The wear-rate elasticities of `eval` against plain central differences at a
+/// different step (independent of the Richardson rule used inside).
+#[test]
+fn sensitivities_match_plain_central_differences() {
+    use wearopt::model::{evaluate, sensitivities, EvaluationOptions, SensitivityParameter};
+    let p = wearopt::problem::load(std::path::Path::new("problems/gold-switch.toml")).unwrap();
+    let opts = EvaluationOptions::default();
+    let sens = sensitivities(&p.scene, opts.quadrature);
+    let ln_wear =
+        |s: &wearopt::model::Scene| evaluate(s, &opts).log10_wear_rate * std::f64::consts::LN_10;
+    let d: f64 = 1e-5;
+    for s in &sens {
+        let mut up = p.scene.clone();
+        let mut down = p.scene.clone();
+        let f = d.exp();
+        match s.parameter {
+            SensitivityParameter::YoungsModulus => {
+                up.youngs_modulus_a *= f;
+                down.youngs_modulus_a /= f;
+                // gold on gold: both bodies share E and move together.
+                up.youngs_modulus_b *= f;
+                down.youngs_modulus_b /= f;
+            }
+            SensitivityParameter::Hardness => {
+                up.hardness *= f;
+                down.hardness /= f;
+            }
+            SensitivityParameter::WorkOfAdhesion => {
+                up.work_of_adhesion *= f;
+                down.work_of_adhesion /= f;
+            }
+            SensitivityParameter::Sigma => {
+                up.sigma *= f;
+                down.sigma /= f;
+            }
+            SensitivityParameter::AsperityRadius => {
+                up.asperity_radius *= f;
+                down.asperity_radius /= f;
+            }
+        }
+        let plain = (ln_wear(&up) - ln_wear(&down)) / (2.0 * d);
+        let got = s.elasticity.unwrap();
+        // Central differences at 1e-5 carry ~1e-13/1e-5 = 1e-8 of rounding.
+        assert!(
+            (got - plain).abs() < 1e-6 * (1.0 + plain.abs()),
+            "{:?}: {got} vs {plain}",
+            s.parameter
+        );
+        eprintln!(
+            "{:?}: {got} vs {plain}, error estimate {:e}",
+            s.parameter,
+            s.error.unwrap()
+        );
+        assert!(s.error.unwrap() < 1e-6);
+    }
+}

@@ -381,7 +381,7 @@ fn bad_problems_end_with_clear_statuses() {
     // A time limit of zero: the starts are evaluated, then time is up.
     let no_time = OptimizerSettings {
         time_limit: Duration::ZERO,
-        ..quick.clone()
+        ..quick
     };
     let o = custom(&p.scene, &design, &[], &no_time);
     assert_eq!(o.status, OptimizationStatus::TimeLimit);
