@@ -517,7 +517,8 @@ fn mutated_problem() -> impl Strategy<Value = String> {
 }
 
 /// The domain on which `Model::new(Coefficients::new(c_a, c_h)).at(h)` gives
-/// no NaN and no panic (found by these properties; the model has no guard):
+/// no NaN and no panic (found by these properties; `Coefficients::checked` and
+/// `Model::checked_at` admit exactly this domain):
 /// c_a ∈ [0, 1e100], c_h ∈ (0, 1e100] or ∞, h finite with |h| ≤ 1e6.
 /// NaN anywhere panics inside puruspe's erfc; c_h ≳ 5e102 overflows
 /// c_p Δc = 2c_h³ and gives dP̄/dh = ∞·0 = NaN.
@@ -655,9 +656,13 @@ proptest! {
     fn model_is_defined_wherever_the_domain_predicate_admits(
         c_a in any_f64(), c_h in any_f64(), h in any_f64(),
     ) {
-        // No guard exists, so arbitrary floats (NaN, ±∞, subnormals) are passed
-        // through the predicate a guard would apply; what it admits must work.
-        if valid_domain(c_a, c_h, h) {
+        // Arbitrary floats (NaN, ±∞, subnormals) through the guarded entry
+        // points: they admit exactly the valid domain, and what they admit works.
+        let guarded = Coefficients::checked(c_a, c_h)
+            .ok()
+            .and_then(|c| Model::new(c).checked_at(h).ok());
+        prop_assert_eq!(guarded.is_some(), valid_domain(c_a, c_h, h));
+        if guarded.is_some() {
             model_at_valid_inputs(c_a, c_h, h)?;
         }
         // The transition alone never panics (no erfc there).

@@ -30,14 +30,20 @@ pub struct Coefficients {
     pub c_0: f64,
 }
 
+/// The largest finite c_a or c_h the guarded entry points accept.
+pub const MAX_COEFFICIENT: f64 = 1e100;
+
+/// The largest |h| the guarded entry point accepts.
+pub const MAX_SEPARATION: f64 = 1e6;
+
 /// An input outside the model's domain (the guarded entry points return it).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DomainError {
     /// c_a must be finite and >= 0.
-    #[error("c_a = {0}: must be finite and >= 0 (0 means no adhesion)")]
+    #[error("c_a = {0}: must lie in [0, 1e100] (0 means no adhesion)")]
     AdhesiveCoefficient(f64),
     /// c_h must be > 0 (inf allowed).
-    #[error("c_h = {0}: must be > 0 (inf means no plasticity)")]
+    #[error("c_h = {0}: must lie in (0, 1e100] or be inf (no plasticity)")]
     HardnessCoefficient(f64),
     /// theta, lambda must be > 0 and not NaN.
     #[error("{name} = {value}: must be > 0")]
@@ -48,7 +54,7 @@ pub enum DomainError {
         value: f64,
     },
     /// h must be finite.
-    #[error("h = {0}: the separation must be finite")]
+    #[error("h = {0}: the separation must lie in [-1e6, 1e6]")]
     Separation(f64),
 }
 
@@ -56,11 +62,16 @@ impl Coefficients {
     /// As [`Coefficients::new`], refusing inputs outside the model's domain
     /// (NaN anywhere, c_a < 0 or infinite, c_h <= 0) instead of letting them
     /// reach the special functions.
+    ///
+    /// The accepted box, c_a in [0, 1e100] and c_h in (0, 1e100] or inf, is where
+    /// the stability properties hold (tests/stability.rs); it reaches far past any
+    /// physical scene (theta = 6 pi / c_a^2 >= 2e-199).
     pub fn checked(c_a: f64, c_h: f64) -> Result<Self, DomainError> {
-        if !(c_a.is_finite() && c_a >= 0.0) {
+        if !(0.0..=MAX_COEFFICIENT).contains(&c_a) {
             return Err(DomainError::AdhesiveCoefficient(c_a));
         }
-        if c_h.is_nan() || c_h <= 0.0 {
+        let finite_ok = c_h > 0.0 && c_h <= MAX_COEFFICIENT;
+        if !finite_ok && c_h != f64::INFINITY {
             return Err(DomainError::HardnessCoefficient(c_h));
         }
         Ok(Coefficients::new(c_a, c_h))

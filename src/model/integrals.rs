@@ -237,7 +237,7 @@ impl Model {
     /// As [`Model::at`], refusing a non-finite h (the guarded entry point; build
     /// the model from [`Coefficients::checked`] to guard the coefficients too).
     pub fn checked_at(&self, h: f64) -> Result<Integrals, super::coefficients::DomainError> {
-        if !h.is_finite() {
+        if h.is_nan() || h.abs() > super::coefficients::MAX_SEPARATION {
             return Err(super::coefficients::DomainError::Separation(h));
         }
         Ok(self.at(h))
