@@ -12,6 +12,7 @@
 //! * [`report`]: rendering results as text, JSON and CSV.
 
 pub mod accuracy;
+pub mod calibrate;
 pub mod figures;
 pub mod model;
 pub mod optimize;

@@ -2,6 +2,9 @@
 
 mod accuracy;
 mod figures;
+mod fit_adhesion;
+mod materials;
+mod pareto;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -60,6 +63,12 @@ enum Command {
 Example:\n  wearopt figures\n  wearopt figures --out figs --points 101 --format json"
     )]
     Figures(figures::FiguresArgs),
+    /// Fit the work of adhesion γ (and μ) to friction measurements with the JKR friction law (eq. 14), with a 95 % interval, per-point γ and bond strength.
+    #[command(
+        after_help = "Example:\n  wearopt fit-adhesion problems/ando-friction.csv --radius 0.3mm --materials steel,silicon\n  \
+wearopt fit-adhesion data.csv --radius \"1 mm\" --fit-mu --format json"
+    )]
+    FitAdhesion(fit_adhesion::FitAdhesionArgs),
     /// Search the design variables of a study for the least wear under its constraints.
     #[command(
         after_help = "Example:\n  wearopt optimize problems/micro-gear-study.toml\n  \
@@ -79,6 +88,11 @@ Exit code 1 when the study is infeasible."
         #[arg(long, value_name = "TRACE.csv")]
         trace: Option<PathBuf>,
     },
+    /// The wear–adhesion trade-off of a study with a [pareto] section: least wear at each adhesion (ε-constraint), the Pareto front and its knee.
+    #[command(after_help = "Example:\n  wearopt pareto problems/micro-gear.toml\n  \
+wearopt pareto problems/micro-gear.toml --points 9 --format csv --plot front.svg\n\n\
+Exit code 1 when no point meets the study's constraints; 2 when the file has no [pareto] section.")]
+    Pareto(pareto::ParetoArgs),
     /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
     #[command(
         after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh.\n\
@@ -128,6 +142,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             trace,
         } => optimize(file, format, verbose, trace),
         Command::Figures(args) => figures::run(args),
+        Command::Pareto(args) => pareto::run(args),
+        Command::FitAdhesion(args) => fit_adhesion::run(args),
         Command::Curve {
             theta,
             lambda,
@@ -178,6 +194,15 @@ fn optimize(
     trace: Option<PathBuf>,
 ) -> Result<ExitCode> {
     let problem = wearopt::problem::load(&file)?;
+    if !problem.study.materials.is_empty() {
+        return materials::run(
+            &file,
+            &problem,
+            matches!(format, EvalFormat::Json),
+            verbose,
+            trace,
+        );
+    }
     let study = wearopt::optimize::Study {
         scene: &problem.scene,
         design: &problem.study.design,
@@ -298,6 +323,9 @@ pub fn exit_code(err: &anyhow::Error) -> u8 {
         .downcast_ref::<wearopt::problem::ProblemError>()
         .is_some()
         || err.downcast_ref::<UsageError>().is_some()
+        || err
+            .downcast_ref::<wearopt::calibrate::CalibrationError>()
+            .is_some()
     {
         2
     } else {

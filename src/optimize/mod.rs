@@ -13,6 +13,8 @@
 pub mod design;
 pub mod fd;
 pub mod functions;
+pub mod materials;
+pub mod pareto;
 pub mod qp;
 pub mod sqp;
 
@@ -530,7 +532,7 @@ fn constraint_reports(
                 }
                 if l >= multiplier {
                     multiplier = l;
-                    shadow = r.shadow_price(l);
+                    shadow = r.shadow_price(l) + 0.0; // no "-0" in reports
                 }
             }
             ConstraintReport {

@@ -3,9 +3,12 @@
 //! string that round-trips the f64 exactly.
 
 pub mod accuracy;
+pub mod calibrate;
 pub mod curve;
 pub mod eval;
+pub mod materials;
 pub mod optimize;
+pub mod pareto;
 pub mod svg;
 
 /// The shortest round-trip form of an f64, in plain notation for moderate

@@ -1,0 +1,120 @@
+//! `wearopt fit-adhesion`: the work of adhesion (and μ) from friction measurements.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::Result;
+use clap::{Args, ValueEnum};
+
+use wearopt::calibrate::{self, CalibrationError, FitSettings, FrictionCoefficient, Quoted};
+use wearopt::problem::units::{parse_quantity, Dimension};
+use wearopt::report;
+
+/// Output format of the calibration report.
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum FitFormat {
+    /// A report for people.
+    Text,
+    /// One JSON object, SI units.
+    Json,
+}
+
+/// Arguments of `wearopt fit-adhesion`.
+#[derive(Debug, Args)]
+pub struct FitAdhesionArgs {
+    /// Friction measurements: CSV with the header `load,friction`, one row per
+    /// measurement; numbers in newtons or strings such as "20 uN".
+    pub data: PathBuf,
+    /// Radius R of the sphere, e.g. "0.3 mm" (a plain number is metres).
+    #[arg(long)]
+    pub radius: String,
+    /// Friction coefficient μ, held fixed (default 0.1, the paper's value).
+    #[arg(long, conflicts_with = "fit_mu")]
+    pub mu: Option<f64>,
+    /// Fit μ together with γ.
+    #[arg(long)]
+    pub fit_mu: bool,
+    /// Equivalent modulus E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹, e.g. "100 GPa", for the
+    /// contact radius and the bond strength F/(πr²).
+    #[arg(long, conflicts_with = "materials")]
+    pub modulus: Option<String>,
+    /// Catalogue materials of the sphere and the flat (one name: both), for E.
+    #[arg(long, value_delimiter = ',', value_name = "A,B")]
+    pub materials: Vec<String>,
+    /// A quoted work of adhesion to compare the fit with, e.g. "0.1 N/m" (the paper's
+    /// 0.1 N/m and 65 MPa are compared automatically for its own table).
+    #[arg(long, value_name = "GAMMA")]
+    pub quoted_gamma: Option<String>,
+    /// A quoted bond strength F/(πr²) to compare with, e.g. "65 MPa".
+    #[arg(long, value_name = "STRESS")]
+    pub quoted_bond_strength: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = FitFormat::Text)]
+    pub format: FitFormat,
+}
+
+fn quantity(name: &'static str, text: &str, dim: Dimension) -> Result<f64> {
+    parse_quantity(text, dim).map_err(|e| {
+        CalibrationError::Setting {
+            name,
+            value: text.to_string(),
+            expected: e.to_string(),
+        }
+        .into()
+    })
+}
+
+/// Runs the calibration.
+pub fn run(args: FitAdhesionArgs) -> Result<ExitCode> {
+    let radius = quantity("--radius", &args.radius, Dimension::Length)?;
+    let friction_coefficient = match (args.mu, args.fit_mu) {
+        (Some(mu), _) => FrictionCoefficient::Given(mu),
+        (None, true) => FrictionCoefficient::Fit,
+        (None, false) => FrictionCoefficient::Default,
+    };
+    let equivalent_modulus = match (&args.modulus, args.materials.is_empty()) {
+        (Some(e), _) => Some(quantity("--modulus", e, Dimension::Pressure)?),
+        (None, false) => {
+            let m = calibrate::lookup_materials(&args.materials)?;
+            Some(calibrate::equivalent_modulus(m[0], m[m.len() - 1]))
+        }
+        (None, true) => None,
+    };
+    let data = calibrate::read_csv(&args.data)?;
+    let quoted_gamma = args
+        .quoted_gamma
+        .as_deref()
+        .map(|q| quantity("--quoted-gamma", q, Dimension::SurfaceEnergy))
+        .transpose()?;
+    let quoted_bond = args
+        .quoted_bond_strength
+        .as_deref()
+        .map(|q| quantity("--quoted-bond-strength", q, Dimension::Pressure))
+        .transpose()?;
+    // The paper's own table: compare with what the paper quotes from it.
+    let ando = data.is_ando_table() && (radius / calibrate::ANDO_RADIUS - 1.0).abs() < 1e-9;
+    let quoted = if quoted_gamma.is_some() || quoted_bond.is_some() {
+        Some(Quoted {
+            source: "the quoted values (--quoted-gamma, --quoted-bond-strength)".into(),
+            work_of_adhesion: quoted_gamma,
+            bond_strength: quoted_bond,
+        })
+    } else if ando {
+        Some(Quoted::paper())
+    } else {
+        None
+    };
+    let settings = FitSettings {
+        radius,
+        friction_coefficient,
+        equivalent_modulus,
+        quoted,
+    };
+    let calibration = calibrate::fit(&data, &settings)?;
+    let out = match args.format {
+        FitFormat::Text => report::calibrate::text(&calibration),
+        FitFormat::Json => report::calibrate::json(&calibration),
+    };
+    print!("{out}");
+    Ok(ExitCode::SUCCESS)
+}

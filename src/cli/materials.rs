@@ -1,0 +1,76 @@
+//! `wearopt optimize` on a file with `[design] materials`: one study per catalogue
+//! material of body a, run in parallel, and a ranking.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use anyhow::Result;
+
+use wearopt::optimize::materials::{rank_materials, MaterialOutcome};
+use wearopt::problem::{catalogue, Problem};
+use wearopt::report;
+
+/// Runs the material study of `problem` (read from `file`) and prints the ranking.
+/// Exit code 1 when no material meets every constraint.
+pub fn run(
+    file: &Path,
+    problem: &Problem,
+    json: bool,
+    verbose: bool,
+    trace: Option<PathBuf>,
+) -> Result<ExitCode> {
+    let materials = problem
+        .study
+        .materials
+        .iter()
+        .map(|n| {
+            catalogue::lookup(n).ok_or_else(|| {
+                super::usage(format!(
+                    "{}: design.materials: {n:?} is not a catalogue material",
+                    file.display()
+                ))
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let study = wearopt::optimize::Study {
+        scene: &problem.scene,
+        design: &problem.study.design,
+        objective: problem.study.objective,
+        constraints: &problem.study.constraints,
+        settings: &problem.study.optimizer,
+    };
+    let ranking = rank_materials(&study, &materials, verbose)
+        .map_err(|e| super::usage(format!("{}: {e}", file.display())))?;
+    if let Some(path) = trace {
+        let mut csv = String::new();
+        for r in &ranking.results {
+            if let MaterialOutcome::Optimized(o) = &r.outcome {
+                let t = report::optimize::trace_csv(o);
+                for (i, l) in t.lines().enumerate() {
+                    if i == 0 && csv.is_empty() {
+                        csv.push_str(&format!("material,{l}\n"));
+                    } else if i > 0 {
+                        csv.push_str(&format!("{},{l}\n", r.name()));
+                    }
+                }
+            }
+        }
+        if path.as_os_str() == "-" {
+            print!("{csv}");
+        } else {
+            std::fs::write(&path, csv)
+                .map_err(|e| anyhow::anyhow!("writing the trace to {}: {e}", path.display()))?;
+        }
+    }
+    let out = if json {
+        report::materials::json(&problem.name, &ranking)
+    } else {
+        report::materials::text(&problem.name, &ranking)
+    };
+    print!("{out}");
+    Ok(if ranking.best().is_some() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}

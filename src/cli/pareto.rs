@@ -1,0 +1,211 @@
+//! `wearopt pareto`: the wear–adhesion front of a study with a `[pareto]`
+//! section, by the ε-constraint method. CSV and JSON rows go to stdout as the
+//! points are final (flushed each time), so an interrupted sweep keeps what it
+//! computed; a progress bar shows on a terminal.
+
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::sync::Mutex;
+
+use anyhow::{Context, Result};
+use clap::ValueEnum;
+
+use wearopt::optimize::pareto::{self, FrontPoint, FrontStatus, Observer};
+use wearopt::optimize::Study;
+use wearopt::problem::ParetoSpec;
+use wearopt::report::pareto as out;
+
+use super::usage;
+
+/// Output format on stdout.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ParetoFormat {
+    /// Human-readable table.
+    Text,
+    /// One row per point (header row), the design flattened into columns.
+    Csv,
+    /// One object: status, adhesion_measure, points, knee, …
+    Json,
+}
+
+/// Arguments of `wearopt pareto`.
+#[derive(Debug, clap::Args)]
+pub struct ParetoArgs {
+    /// The problem file (TOML) with [design], [objective] and [pareto] sections.
+    pub file: PathBuf,
+    /// Points on the curve (2 to 200; default: [pareto] points).
+    #[arg(long)]
+    pub points: Option<usize>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = ParetoFormat::Text)]
+    pub format: ParetoFormat,
+    /// Also draw the front as SVG to this file.
+    #[arg(long, value_name = "FRONT.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Whether a progress bar may be drawn: stderr is a terminal, and neither
+/// NO_COLOR nor CI asks for plain output.
+fn progress_wanted() -> bool {
+    std::io::stderr().is_terminal()
+        && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+        && std::env::var_os("CI").is_none_or(|v| v.is_empty() || v == "false")
+}
+
+/// Streams finished points to stdout and drives the progress bar.
+struct Stream<'a> {
+    format: ParetoFormat,
+    names: &'a [&'static str],
+    bar: Option<indicatif::ProgressBar>,
+    /// Points written so far, and the first write error.
+    state: Mutex<(usize, Option<std::io::Error>)>,
+}
+
+impl Stream<'_> {
+    fn write(&self, text: &str) {
+        let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
+        if st.1.is_some() {
+            return;
+        }
+        let mut stdout = std::io::stdout().lock();
+        if let Err(e) = stdout
+            .write_all(text.as_bytes())
+            .and_then(|_| stdout.flush())
+        {
+            st.1 = Some(e);
+        }
+    }
+}
+
+impl Observer for Stream<'_> {
+    fn range_started(&self) {
+        if let Some(b) = &self.bar {
+            b.set_message("finding the reachable adhesion range");
+        }
+    }
+
+    fn probe_done(&self) {
+        if let Some(b) = &self.bar {
+            b.tick();
+        }
+    }
+
+    fn sweep_started(&self, points: usize) {
+        if let Some(b) = &self.bar {
+            b.set_length(points as u64);
+            b.set_position(0);
+            b.set_message("points");
+        }
+    }
+
+    fn point_done(&self, p: &FrontPoint) {
+        if let Some(b) = &self.bar {
+            b.inc(1);
+        }
+        let first = {
+            let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
+            st.0 += 1;
+            st.0 == 1
+        };
+        match self.format {
+            ParetoFormat::Csv => self.write(&out::csv_row(p)),
+            ParetoFormat::Json => self.write(&out::json_point(self.names, p, first)),
+            ParetoFormat::Text => {}
+        }
+    }
+}
+
+/// Runs `wearopt pareto`.
+pub fn run(args: ParetoArgs) -> Result<ExitCode> {
+    let problem = wearopt::problem::load(&args.file)?;
+    let file = args.file.display();
+    let Some(mut spec) = problem.study.pareto else {
+        return Err(usage(format!(
+            "{file}: no [pareto] section: add one to trade wear against adhesion, e.g.\n\n[pareto]\nadhesion = \"pull_off_force\"   # or \"work_of_adhesion\", \"elastic_adhesion_index\"\npoints = {}\ndirection = \"low\"             # \"high\" when more adhesion is wanted (a latch, a switch)",
+            ParetoSpec::DEFAULT_POINTS
+        )));
+    };
+    if problem.study.objective.is_none() {
+        return Err(usage(format!(
+            "{file}: no [objective]: add [objective] minimize = \"wear_rate\" to say what the front trades against adhesion"
+        )));
+    }
+    if let Some(n) = args.points {
+        if !(ParetoSpec::MIN_POINTS..=ParetoSpec::MAX_POINTS).contains(&n) {
+            return Err(usage(format!(
+                "--points {n}: must lie in {}..={}",
+                ParetoSpec::MIN_POINTS,
+                ParetoSpec::MAX_POINTS
+            )));
+        }
+        spec.points = n;
+    }
+    let study = Study {
+        scene: &problem.scene,
+        design: &problem.study.design,
+        objective: problem.study.objective,
+        constraints: &problem.study.constraints,
+        settings: &problem.study.optimizer,
+    };
+    let names: Vec<&'static str> = study.design.iter().map(|d| d.name.as_str()).collect();
+    let bar = progress_wanted().then(|| {
+        let b = indicatif::ProgressBar::new(spec.points as u64);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{msg:>12} [{bar:30}] {pos}/{len} {elapsed}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+                .progress_chars("=> "),
+        );
+        b
+    });
+    let stream = Stream {
+        format: args.format,
+        names: &names,
+        bar,
+        state: Mutex::new((0, None)),
+    };
+    let head = out::Head {
+        name: &problem.name,
+        measure: spec.adhesion,
+        direction: spec.direction,
+        objective_name: problem.study.objective.map_or("", |o| o.as_str()),
+        names: &names,
+    };
+    match args.format {
+        ParetoFormat::Csv => stream.write(&out::csv_header(&names)),
+        ParetoFormat::Json => stream.write(&out::json_head(&head)),
+        ParetoFormat::Text => {}
+    }
+    let front =
+        pareto::pareto(&study, &spec, &stream).map_err(|e| usage(format!("{file}: {e}")))?;
+    if let Some(b) = &stream.bar {
+        b.finish_and_clear();
+    }
+    match args.format {
+        ParetoFormat::Csv => {}
+        ParetoFormat::Json => stream.write(&out::json_tail(&front)),
+        ParetoFormat::Text => stream.write(&out::text(
+            &problem.name,
+            &front,
+            &problem.study.constraints,
+        )),
+    }
+    if let Some(e) = stream
+        .state
+        .into_inner()
+        .unwrap_or_else(|e| e.into_inner())
+        .1
+    {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            return Err(e).context("writing to stdout");
+        }
+    }
+    if let Some(path) = &args.plot {
+        std::fs::write(path, out::svg(&problem.name, &front))
+            .with_context(|| format!("writing the plot to {}", path.display()))?;
+    }
+    Ok(match front.status {
+        FrontStatus::Infeasible => ExitCode::from(1),
+        _ => ExitCode::SUCCESS,
+    })
+}

@@ -1,0 +1,970 @@
+//! The wear–adhesion trade-off of a study by the ε-constraint method.
+//!
+//! Wear (the study's objective) is minimised with the adhesion measure held at
+//! a target ε, for ε across the whole reachable adhesion range; every
+//! constraint of the study stays in force. That gives the full wear-versus-
+//! adhesion curve; its non-dominated part, for the chosen
+//! [`ParetoDirection`], is the Pareto front.
+//!
+//! * **Strength.** Points are compared on the *adhesion strength* s, in log10
+//!   units: `log10 F` for the pull-off force, `log10 γ` for the work of
+//!   adhesion and `-log10 θ` for the elastic adhesion index (a larger θ means
+//!   less adhesion).
+//! * **Holding the measure at ε.** The pull-off force and θ are held by two
+//!   constraint rows `min = max = ε`; γ, a design variable, is removed from
+//!   the design and set to ε in the scene. One-sided targets (range search,
+//!   the floor end) use one row, or for γ a narrowed bound.
+//! * **Range.** The least-wear design of the study sits at strength `s_w`. The
+//!   reachable range is bracketed by the design box's corners (θ and γ are
+//!   monotone in every variable; the pull-off nearly so) and by the study's
+//!   own limits on the measure, then each end is found by bisection on the
+//!   feasibility of "strength ≥ s" (or ≤ s), warm-started from the last
+//!   feasible probe. A pull-off force below [`PULL_OFF_FLOOR`] counts as
+//!   none: that end of the sweep is the one-sided point "pull-off ≤ floor".
+//! * **Targets.** `points` strengths evenly spaced in log10 when the range
+//!   spans a decade or more, evenly in value otherwise, ordered from the
+//!   preferred end; the target nearest `s_w` is moved onto it, so the front
+//!   ends exactly at the study's least-wear design.
+//! * **Solves.** Points are solved in waves of [`WAVE`] in parallel (rayon).
+//!   Each point runs the study's multistart from the baseline scene and one
+//!   start from the previous wave's last solution (its nearest solved
+//!   neighbour), and keeps the better. Waves are fixed in size, so the result
+//!   is the same for any thread count, and each wave's points are final when
+//!   it ends: an [`Observer`] receives them in order as they are.
+//! * **Dominance.** A point is dominated when an earlier point of the sweep
+//!   (nearer the preferred end, so with an adhesion at least as good) has a
+//!   wear no larger (to [`WEAR_TOLERANCE`] relative): it is decided as soon as
+//!   the point is known. Feasible, non-dominated points are the front.
+//! * **Knee.** In normalised log coordinates (strength and log10 wear, each
+//!   scaled to [0, 1] over the front), the interior front point farthest from
+//!   the chord joining the front's ends; none when the front has two points
+//!   or is straight (distance < [`KNEE_MIN_DISTANCE`]); a one-point front is
+//!   its own knee.
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use super::{optimize, OptimizationStatus, OptimizeError, Study};
+use crate::model::{self, Evaluation, EvaluationOptions, Quadrature, Scene, Status};
+use crate::problem::{
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective,
+    OptimizerSettings, ParetoDirection, ParetoSpec,
+};
+
+/// A pull-off force below this (N) counts as none: a femtonewton is three
+/// decades under the thermal-noise force of an AFM cantilever, and far under
+/// any restoring force a MEMS structure has.
+pub const PULL_OFF_FLOOR: f64 = 1e-15;
+
+/// Points solved together; fixed, so that warm starts do not depend on the
+/// thread count.
+pub const WAVE: usize = 4;
+
+/// Relative wear difference below which two points count as equally good.
+pub const WEAR_TOLERANCE: f64 = 1e-6;
+
+/// Strength difference (log10 units) below which two adhesions count as equal.
+pub const STRENGTH_TOLERANCE: f64 = 1e-6;
+
+/// Smallest normalised distance to the chord for a knee.
+pub const KNEE_MIN_DISTANCE: f64 = 1e-3;
+
+/// Bisection stops when the bracket of a range end is this narrow (decades).
+pub const RANGE_RESOLUTION: f64 = 0.01;
+
+/// Most feasibility probes per end of the range.
+pub const MAX_PROBES: usize = 12;
+
+/// How the front came out (contract words).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FrontStatus {
+    /// A front of two or more designs: wear and adhesion pull against each other.
+    Ok,
+    /// The front is one design: the least-wear design is also the best-adhesion design.
+    NoTradeOff,
+    /// No point met the study's constraints.
+    Infeasible,
+}
+
+impl FrontStatus {
+    /// The status word.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            FrontStatus::Ok => "ok",
+            FrontStatus::NoTradeOff => "no_trade_off",
+            FrontStatus::Infeasible => "infeasible",
+        }
+    }
+}
+
+/// The adhesion measure held at a target.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Target {
+    /// Strength equal to s.
+    Equal(f64),
+    /// Strength at most s.
+    AtMost(f64),
+    /// Strength at least s.
+    AtLeast(f64),
+}
+
+/// One design on the wear–adhesion curve.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrontPoint {
+    /// Position in the sweep (0 = the preferred adhesion end).
+    pub index: usize,
+    /// The target ε of the measure (SI; θ dimensionless).
+    pub target: f64,
+    /// Whether ε was held exactly ("equal") or as a bound ("at_most", "at_least").
+    pub target_kind: &'static str,
+    /// The measure at the design (SI; may underflow to 0 for the pull-off).
+    pub adhesion: f64,
+    /// log10 of the measure (finite where the value underflows).
+    pub log10_adhesion: f64,
+    /// The adhesion strength (log10 units, larger = more adhesion).
+    pub strength: f64,
+    /// The study's objective at the design (SI).
+    pub objective: f64,
+    /// Wear rate k·A_r at the design (m³/m).
+    pub wear_rate: f64,
+    /// How the solve ended.
+    pub status: OptimizationStatus,
+    /// An earlier point is at least as good in adhesion and wear.
+    pub dominated: bool,
+    /// Feasible and not dominated.
+    pub on_front: bool,
+    /// The design (SI), in the study's variable order.
+    pub design: Vec<f64>,
+    /// The solution came from the neighbour's warm start, not the multistart.
+    pub warm_started: bool,
+    /// Model evaluations spent on this point.
+    pub evaluations: usize,
+}
+
+/// A design with its measure and wear (the baseline, the least-wear design).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Reference {
+    /// The measure (SI).
+    pub adhesion: f64,
+    /// log10 of the measure.
+    pub log10_adhesion: f64,
+    /// The objective (SI).
+    pub objective: f64,
+    /// Wear rate (m³/m).
+    pub wear_rate: f64,
+    /// The design (SI).
+    pub design: Vec<f64>,
+    /// Whether the design meets every constraint of the study.
+    pub feasible: bool,
+}
+
+/// The result of a sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Front {
+    /// How it came out.
+    pub status: FrontStatus,
+    /// The adhesion measure.
+    pub measure: AdhesionMeasure,
+    /// The preferred end.
+    pub direction: ParetoDirection,
+    /// The objective minimised.
+    pub objective_name: &'static str,
+    /// Design variable names, in file order.
+    pub names: Vec<&'static str>,
+    /// Every point of the sweep, from the preferred adhesion end.
+    pub points: Vec<FrontPoint>,
+    /// Index in `points` of the knee.
+    pub knee: Option<usize>,
+    /// The reachable range of the measure, (lowest, highest) strength in log10 units.
+    pub strength_range: (f64, f64),
+    /// The low end is the pull-off floor (one-sided).
+    pub floor_end: bool,
+    /// The study's baseline scene.
+    pub baseline: Option<Reference>,
+    /// The study's least-wear design (no adhesion target).
+    pub least_wear: Reference,
+    /// The strength of `least_wear`.
+    pub least_wear_strength: f64,
+    /// Model evaluations over the whole sweep (range search included).
+    pub evaluations: usize,
+    /// Range-search probes run.
+    pub probes: usize,
+    /// Wall time (s).
+    pub time_seconds: f64,
+}
+
+impl Front {
+    /// The indices of the front's points.
+    pub fn front_indices(&self) -> Vec<usize> {
+        self.points
+            .iter()
+            .filter(|p| p.on_front)
+            .map(|p| p.index)
+            .collect()
+    }
+}
+
+/// Receives the sweep as it runs. Every method has a default that does nothing.
+pub trait Observer: Sync {
+    /// The range search begins.
+    fn range_started(&self) {}
+    /// A range probe finished (any thread).
+    fn probe_done(&self) {}
+    /// The sweep of `points` targets begins.
+    fn sweep_started(&self, _points: usize) {}
+    /// A point is final: called in sweep order from the calling thread.
+    fn point_done(&self, _point: &FrontPoint) {}
+}
+
+/// An observer that ignores everything.
+pub struct Silent;
+impl Observer for Silent {}
+
+/// Errors of a sweep definition (bad input).
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum ParetoError {
+    /// The study itself is not optimisable.
+    #[error(transparent)]
+    Study(#[from] OptimizeError),
+    /// `work_of_adhesion` is the measure but not a design variable.
+    #[error("[pareto] adhesion = \"work_of_adhesion\" needs work_of_adhesion among the [design] variables")]
+    WorkOfAdhesionFixed,
+    /// Points out of range.
+    #[error("{0} points: a front needs 2..=200 points")]
+    Points(usize),
+}
+
+/// The measure's value and log10 at an evaluation (None where it does not exist).
+pub fn measure_of(m: AdhesionMeasure, ev: &Evaluation, scene: &Scene) -> Option<(f64, f64)> {
+    match m {
+        AdhesionMeasure::PullOffForce => ev.pull_off_force.zip(ev.log10_pull_off_force),
+        AdhesionMeasure::ElasticAdhesionIndex => {
+            let t = ev.indices.elastic_adhesion_index;
+            Some((t, t.log10()))
+        }
+        AdhesionMeasure::WorkOfAdhesion => {
+            let g = scene.work_of_adhesion;
+            Some((g, g.log10()))
+        }
+    }
+}
+
+/// Strength (log10 units, larger = more adhesion) of a measure's log10.
+pub fn strength_of(m: AdhesionMeasure, log10: f64) -> f64 {
+    match m {
+        AdhesionMeasure::ElasticAdhesionIndex => -log10,
+        _ => log10,
+    }
+}
+
+/// The measure's value at a strength.
+pub fn value_at(m: AdhesionMeasure, strength: f64) -> f64 {
+    match m {
+        AdhesionMeasure::ElasticAdhesionIndex => 10f64.powf(-strength),
+        _ => 10f64.powf(strength),
+    }
+}
+
+/// The SI unit of a measure ("" for θ).
+pub fn unit_of(m: AdhesionMeasure) -> &'static str {
+    match m {
+        AdhesionMeasure::PullOffForce => "N",
+        AdhesionMeasure::WorkOfAdhesion => "J/m²",
+        AdhesionMeasure::ElasticAdhesionIndex => "",
+    }
+}
+
+/// One solve of the ε-constrained study.
+#[derive(Debug, Clone)]
+struct Solved {
+    status: OptimizationStatus,
+    feasible: bool,
+    objective: f64,
+    wear_rate: f64,
+    value: f64,
+    log10: f64,
+    strength: f64,
+    design: Vec<f64>,
+    scene: Scene,
+    evaluations: usize,
+}
+
+/// A study with a Pareto spec, ready to sweep.
+struct Sweep<'a> {
+    study: &'a Study<'a>,
+    measure: AdhesionMeasure,
+    objective: Objective,
+    options: EvaluationOptions,
+    warm_settings: OptimizerSettings,
+}
+
+impl Sweep<'_> {
+    fn evaluate(&self, scene: &Scene) -> Evaluation {
+        model::evaluate(scene, &self.options)
+    }
+
+    /// The original design vector at a scene.
+    fn design_at(&self, scene: &Scene) -> Vec<f64> {
+        self.study
+            .design
+            .iter()
+            .map(|d| d.name.get(scene))
+            .collect()
+    }
+
+    fn reference(&self, scene: &Scene, feasible: bool) -> Option<Reference> {
+        let ev = self.evaluate(scene);
+        if ev.status != Status::Ok {
+            return None;
+        }
+        let (value, log10) = measure_of(self.measure, &ev, scene)?;
+        Some(Reference {
+            adhesion: value,
+            log10_adhesion: log10,
+            objective: super::functions::objective_value(self.objective, &ev),
+            wear_rate: ev.wear_rate,
+            design: self.design_at(scene),
+            feasible,
+        })
+    }
+
+    /// Minimise the objective with the measure held at `target`, from `scene`
+    /// (its design is start 0) with `settings`.
+    fn solve(&self, target: Target, scene: &Scene, settings: &OptimizerSettings) -> Option<Solved> {
+        let mut scene = scene.clone();
+        let mut design: Vec<DesignVariable> = self.study.design.to_vec();
+        let mut constraints: Vec<Constraint> = self.study.constraints.to_vec();
+        let quantity = match self.measure {
+            AdhesionMeasure::PullOffForce => Some(ConstraintQuantity::PullOffForce),
+            AdhesionMeasure::ElasticAdhesionIndex => Some(ConstraintQuantity::ElasticAdhesionIndex),
+            AdhesionMeasure::WorkOfAdhesion => None,
+        };
+        let inverted = self.measure == AdhesionMeasure::ElasticAdhesionIndex;
+        match (quantity, target) {
+            (Some(q), Target::Equal(s)) => {
+                let v = value_at(self.measure, s);
+                constraints.push(Constraint {
+                    quantity: q,
+                    min: Some(v),
+                    max: Some(v),
+                });
+            }
+            (Some(q), Target::AtMost(s) | Target::AtLeast(s)) => {
+                let v = value_at(self.measure, s);
+                // "At most this strength" is an upper bound on the value, or a
+                // lower one for θ.
+                let upper = matches!(target, Target::AtMost(_)) != inverted;
+                constraints.push(Constraint {
+                    quantity: q,
+                    min: (!upper).then_some(v),
+                    max: upper.then_some(v),
+                });
+            }
+            (None, t) => {
+                let i = design
+                    .iter()
+                    .position(|d| d.name == DesignQuantity::WorkOfAdhesion)?;
+                let v = match t {
+                    Target::Equal(s) | Target::AtMost(s) | Target::AtLeast(s) => {
+                        value_at(self.measure, s)
+                    }
+                };
+                match t {
+                    Target::Equal(_) => {
+                        design.remove(i);
+                        scene.work_of_adhesion = v;
+                    }
+                    Target::AtMost(_) | Target::AtLeast(_) => {
+                        let var = &mut design[i];
+                        if matches!(t, Target::AtMost(_)) {
+                            if v <= var.min {
+                                return None;
+                            }
+                            var.max = var.max.min(v);
+                        } else {
+                            if v >= var.max {
+                                return None;
+                            }
+                            var.min = var.min.max(v);
+                        }
+                        scene.work_of_adhesion = scene.work_of_adhesion.clamp(var.min, var.max);
+                    }
+                }
+            }
+        }
+        let sub = Study {
+            scene: &scene,
+            design: &design,
+            objective: Some(self.objective),
+            constraints: &constraints,
+            settings,
+        };
+        let (status, end_scene, evaluations) = if design.is_empty() {
+            // Only γ moved and it is fixed: the point is the scene itself.
+            let space = super::DesignSpace::new(&scene, &[]);
+            let f = super::StudyFunctions::new(space, self.objective, &constraints);
+            let p = f.at(&[])?;
+            let status = if p.max_violation() <= super::FEASIBILITY_TOLERANCE {
+                OptimizationStatus::Optimal
+            } else {
+                OptimizationStatus::Infeasible
+            };
+            (status, scene.clone(), 1)
+        } else {
+            let o = optimize(&sub, false).ok()?;
+            (o.status, o.scene, o.evaluations)
+        };
+        let ev = self.evaluate(&end_scene);
+        if ev.status != Status::Ok {
+            return None;
+        }
+        let (value, log10) = measure_of(self.measure, &ev, &end_scene)?;
+        Some(Solved {
+            status,
+            feasible: status != OptimizationStatus::Infeasible,
+            objective: super::functions::objective_value(self.objective, &ev),
+            wear_rate: ev.wear_rate,
+            value,
+            log10,
+            strength: strength_of(self.measure, log10),
+            design: self.design_at(&end_scene),
+            scene: end_scene,
+            evaluations: evaluations + 1,
+        })
+    }
+
+    /// One start from `warm` (the nearest solved neighbour), then one from
+    /// the baseline scene; the study's whole multistart only where neither
+    /// ends optimal. Returns the best solution, whether a single warm start
+    /// gave it, and the evaluations spent.
+    fn solve_point(&self, target: Target, warm: Option<&Scene>) -> (Option<Solved>, bool, usize) {
+        let better = |a: &Solved, b: &Solved| {
+            // a strictly better than b: feasible first, then a lower objective.
+            (a.feasible && !b.feasible)
+                || (a.feasible == b.feasible && a.objective < b.objective * (1.0 - 1e-12))
+        };
+        let mut evaluations = 0;
+        let mut best: Option<(Solved, bool)> = None;
+        let singles = warm.into_iter().chain(std::iter::once(self.study.scene));
+        for (k, from) in singles.enumerate() {
+            let r = self.solve(target, from, &self.warm_settings);
+            evaluations += r.as_ref().map_or(0, |s| s.evaluations);
+            if let Some(r) = r {
+                let optimal = r.status == OptimizationStatus::Optimal;
+                if best.as_ref().is_none_or(|b| better(&r, &b.0)) {
+                    best = Some((r, k == 0 && warm.is_some()));
+                }
+                if optimal {
+                    let (b, w) = best.expect("set above");
+                    return (Some(b), w, evaluations);
+                }
+            }
+        }
+        let cold = self.solve(target, self.study.scene, self.study.settings);
+        evaluations += cold.as_ref().map_or(0, |s| s.evaluations);
+        match (cold, best) {
+            (Some(c), Some(b)) if better(&b.0, &c) => (Some(b.0), b.1, evaluations),
+            (Some(c), _) => (Some(c), false, evaluations),
+            (None, Some(b)) => (Some(b.0), b.1, evaluations),
+            (None, None) => (None, false, evaluations),
+        }
+    }
+}
+
+/// The study's own limits on the measure, as (lowest, highest) strength.
+fn study_limits(m: AdhesionMeasure, constraints: &[Constraint]) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    let q = match m {
+        AdhesionMeasure::PullOffForce => ConstraintQuantity::PullOffForce,
+        AdhesionMeasure::ElasticAdhesionIndex => ConstraintQuantity::ElasticAdhesionIndex,
+        AdhesionMeasure::WorkOfAdhesion => return (lo, hi),
+    };
+    for c in constraints.iter().filter(|c| c.quantity == q) {
+        for (bound, is_max) in [(c.min, false), (c.max, true)] {
+            let Some(b) = bound.filter(|b| *b > 0.0) else {
+                continue;
+            };
+            let s = strength_of(m, b.log10());
+            // A maximum of the value caps the strength, except for θ.
+            if is_max != (m == AdhesionMeasure::ElasticAdhesionIndex) {
+                hi = hi.min(s);
+            } else {
+                lo = lo.max(s);
+            }
+        }
+    }
+    (lo, hi)
+}
+
+/// Strengths at the corners of the design box (where the surfaces touch),
+/// with the corners' scenes.
+fn corner_strengths(sweep: &Sweep) -> Vec<(f64, Scene)> {
+    let space = super::DesignSpace::new(sweep.study.scene, sweep.study.design);
+    let n = space.dim();
+    (0..1usize << n)
+        .into_par_iter()
+        .filter_map(|mask| {
+            let x: Vec<f64> = (0..n).map(|i| ((mask >> i) & 1) as f64).collect();
+            let scene = space.scene_at(&x);
+            let ev = sweep.evaluate(&scene);
+            (ev.status == Status::Ok)
+                .then(|| measure_of(sweep.measure, &ev, &scene))
+                .flatten()
+                .map(|(_, l)| (strength_of(sweep.measure, l), scene))
+        })
+        .collect()
+}
+
+/// One end of the reachable range: from the feasible `start` toward `bound`
+/// (inclusive), by probing "strength ≥ s" (upward) or "≤ s" (downward), each
+/// probe warm-started from the last feasible one and, when that fails, from
+/// `corner` (the box corner nearest the bound: a start where the measure is
+/// not lost below the floor of a double, so its row has a gradient).
+fn find_end(
+    sweep: &Sweep,
+    start: &Solved,
+    bound: f64,
+    corner: Option<&Scene>,
+    observer: &dyn Observer,
+) -> (f64, Solved, usize, usize) {
+    let up = bound > start.strength;
+    let mut good = start.clone();
+    let mut good_s = start.strength;
+    let mut bad: Option<f64> = None;
+    let mut probes = 0;
+    let mut evaluations = 0;
+    if (bound - good_s).abs() <= STRENGTH_TOLERANCE {
+        return (good_s, good, probes, evaluations);
+    }
+    let mut probe = bound;
+    while probes < MAX_PROBES {
+        let target = if up {
+            Target::AtLeast(probe)
+        } else {
+            Target::AtMost(probe)
+        };
+        let mut r = sweep.solve(target, &good.scene, &sweep.warm_settings);
+        evaluations += r.as_ref().map_or(0, |r| r.evaluations);
+        if !r.as_ref().is_some_and(|r| r.feasible) {
+            if let Some(c) = corner {
+                let rc = sweep.solve(target, c, &sweep.warm_settings);
+                evaluations += rc.as_ref().map_or(0, |r| r.evaluations);
+                if rc.as_ref().is_some_and(|r| r.feasible) {
+                    r = rc;
+                }
+            }
+        }
+        probes += 1;
+        observer.probe_done();
+        match r {
+            Some(r) if r.feasible => {
+                good_s = probe;
+                good = r;
+            }
+            _ => bad = Some(probe),
+        }
+        match bad {
+            None => break, // the bound itself is reachable
+            Some(b) if (b - good_s).abs() <= RANGE_RESOLUTION => break,
+            Some(b) => probe = 0.5 * (good_s + b),
+        }
+    }
+    (good_s, good, probes, evaluations)
+}
+
+/// Target strengths from the preferred end: evenly in log10 when the range
+/// spans a decade, else evenly in value; the one nearest `snap` moved onto it.
+pub fn targets(
+    measure: AdhesionMeasure,
+    lo: f64,
+    hi: f64,
+    points: usize,
+    direction: ParetoDirection,
+    snap: Option<f64>,
+) -> Vec<f64> {
+    let n = points.max(1);
+    let frac = |k: usize| {
+        if n == 1 {
+            0.0
+        } else {
+            k as f64 / (n - 1) as f64
+        }
+    };
+    let mut s: Vec<f64> = if hi - lo >= 1.0 {
+        (0..n).map(|k| lo + (hi - lo) * frac(k)).collect()
+    } else {
+        let (vlo, vhi) = (value_at(measure, lo), value_at(measure, hi));
+        (0..n)
+            .map(|k| strength_of(measure, (vlo + (vhi - vlo) * frac(k)).log10()))
+            .collect()
+    };
+    // Exact ends, whatever the rounding of the value spacing.
+    s[0] = lo;
+    s[n - 1] = hi;
+    if let Some(w) = snap {
+        if w > lo + STRENGTH_TOLERANCE && w < hi - STRENGTH_TOLERANCE && n > 2 {
+            let k = (1..n - 1)
+                .min_by(|&a, &b| (s[a] - w).abs().total_cmp(&(s[b] - w).abs()))
+                .unwrap_or(1);
+            s[k] = w;
+        }
+    }
+    if direction == ParetoDirection::High {
+        s.reverse();
+    }
+    s
+}
+
+/// Dominance of the newest point against the earlier ones (see the module docs).
+fn dominated_by_earlier(
+    earlier: &[FrontPoint],
+    p: &FrontPoint,
+    direction: ParetoDirection,
+) -> bool {
+    let pref = |s: f64| match direction {
+        ParetoDirection::Low => s,
+        ParetoDirection::High => -s,
+    };
+    earlier
+        .iter()
+        .filter(|q| q.status != OptimizationStatus::Infeasible)
+        .any(|q| {
+            pref(q.strength) <= pref(p.strength) + STRENGTH_TOLERANCE
+                && q.objective <= p.objective * (1.0 + WEAR_TOLERANCE)
+        })
+}
+
+/// The knee of the front (see the module docs).
+pub fn knee(points: &[FrontPoint]) -> Option<usize> {
+    let front: Vec<&FrontPoint> = points.iter().filter(|p| p.on_front).collect();
+    match front.len() {
+        0 | 2 => return None,
+        1 => return Some(front[0].index),
+        _ => {}
+    }
+    let xy: Vec<(f64, f64)> = front
+        .iter()
+        .map(|p| (p.strength, p.objective.max(f64::MIN_POSITIVE).log10()))
+        .collect();
+    let span = |f: fn(&(f64, f64)) -> f64| {
+        let lo = xy.iter().map(f).fold(f64::INFINITY, f64::min);
+        let hi = xy.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
+        (lo, if hi > lo { hi - lo } else { 1.0 })
+    };
+    let (x0, dx) = span(|p| p.0);
+    let (y0, dy) = span(|p| p.1);
+    let norm: Vec<(f64, f64)> = xy
+        .iter()
+        .map(|&(x, y)| ((x - x0) / dx, (y - y0) / dy))
+        .collect();
+    let (a, b) = (norm[0], norm[norm.len() - 1]);
+    let (cx, cy) = (b.0 - a.0, b.1 - a.1);
+    let len = (cx * cx + cy * cy).sqrt();
+    if len == 0.0 {
+        return None;
+    }
+    let (k, d) = norm
+        .iter()
+        .enumerate()
+        .skip(1)
+        .take(norm.len() - 2)
+        .map(|(k, &(x, y))| (k, ((x - a.0) * cy - (y - a.1) * cx).abs() / len))
+        .fold((0, -1.0), |best, c| if c.1 > best.1 { c } else { best });
+    (d >= KNEE_MIN_DISTANCE).then(|| front[k].index)
+}
+
+/// Sweeps the wear–adhesion curve of a study (see the module docs). The
+/// result is the same for any number of rayon threads.
+pub fn pareto(
+    study: &Study,
+    spec: &ParetoSpec,
+    observer: &dyn Observer,
+) -> Result<Front, ParetoError> {
+    let t0 = Instant::now();
+    if study.design.is_empty() {
+        return Err(OptimizeError::NoDesign.into());
+    }
+    let objective = study.objective.ok_or(OptimizeError::NoObjective)?;
+    if !(ParetoSpec::MIN_POINTS..=ParetoSpec::MAX_POINTS).contains(&spec.points) {
+        return Err(ParetoError::Points(spec.points));
+    }
+    let measure = spec.adhesion;
+    if measure == AdhesionMeasure::WorkOfAdhesion
+        && !study
+            .design
+            .iter()
+            .any(|d| d.name == DesignQuantity::WorkOfAdhesion)
+    {
+        return Err(ParetoError::WorkOfAdhesionFixed);
+    }
+    let sweep = Sweep {
+        study,
+        measure,
+        objective,
+        options: EvaluationOptions {
+            pull_off: measure == AdhesionMeasure::PullOffForce,
+            quadrature: Quadrature::default(),
+        },
+        warm_settings: OptimizerSettings {
+            starts: 1,
+            ..*study.settings
+        },
+    };
+    let names: Vec<&'static str> = study.design.iter().map(|d| d.name.as_str()).collect();
+
+    // The least-wear design: the study without an adhesion target.
+    observer.range_started();
+    let optimum = optimize(study, false)?;
+    let mut evaluations = optimum.evaluations;
+    let least_wear_feasible = optimum.status != OptimizationStatus::Infeasible;
+    let least_wear = sweep
+        .reference(&optimum.scene, least_wear_feasible)
+        .ok_or(OptimizeError::NoContact)?;
+    let s_w = strength_of(measure, least_wear.log10_adhesion);
+    let start = Solved {
+        status: optimum.status,
+        feasible: least_wear_feasible,
+        objective: least_wear.objective,
+        wear_rate: least_wear.wear_rate,
+        value: least_wear.adhesion,
+        log10: least_wear.log10_adhesion,
+        strength: s_w,
+        design: least_wear.design.clone(),
+        scene: optimum.scene.clone(),
+        evaluations: 0,
+    };
+    let baseline = sweep.reference(study.scene, false).map(|mut r| {
+        r.feasible = {
+            let space = super::DesignSpace::new(study.scene, study.design);
+            let f = super::StudyFunctions::new(space.clone(), objective, study.constraints);
+            f.at(&space.baseline_unit())
+                .is_some_and(|p| p.max_violation() <= super::FEASIBILITY_TOLERANCE)
+        };
+        r
+    });
+
+    // The reachable range.
+    let corners = corner_strengths(&sweep);
+    let (limit_lo, limit_hi) = study_limits(measure, study.constraints);
+    let floor = match measure {
+        AdhesionMeasure::PullOffForce => PULL_OFF_FLOOR.log10(),
+        _ => f64::NEG_INFINITY,
+    };
+    let extreme = |better: fn(f64, f64) -> bool| {
+        corners
+            .iter()
+            .fold(None::<&(f64, Scene)>, |best, c| match best {
+                Some(b) if !better(c.0, b.0) => Some(b),
+                _ => Some(c),
+            })
+    };
+    let weakest = extreme(|a, b| a < b);
+    let strongest = extreme(|a, b| a > b);
+    let box_lo = weakest.map_or(s_w, |c| c.0.min(s_w)).max(limit_lo);
+    let box_hi = strongest.map_or(s_w, |c| c.0.max(s_w)).min(limit_hi);
+    let mut probes = 0;
+    let (lo, lo_solved, floor_end) = if !least_wear_feasible {
+        (s_w, start.clone(), false)
+    } else if s_w <= floor {
+        // The least-wear design has no pull-off to speak of: it is the low end.
+        (floor, start.clone(), true)
+    } else {
+        let (lo, solved, p, e) = find_end(
+            &sweep,
+            &start,
+            box_lo.max(floor),
+            weakest.map(|c| &c.1),
+            observer,
+        );
+        probes += p;
+        evaluations += e;
+        (lo, solved, lo <= floor + STRENGTH_TOLERANCE)
+    };
+    let (hi, hi_solved) = if least_wear_feasible {
+        let (hi, solved, p, e) = find_end(
+            &sweep,
+            &start,
+            box_hi.max(floor),
+            strongest.map(|c| &c.1),
+            observer,
+        );
+        probes += p;
+        evaluations += e;
+        (hi.max(lo), solved)
+    } else {
+        (s_w.max(lo), start.clone())
+    };
+    let snap = (s_w > lo).then_some(s_w);
+    let strengths = targets(measure, lo, hi, spec.points, spec.direction, snap);
+
+    // The sweep, in waves from the preferred end.
+    observer.sweep_started(strengths.len());
+    let floor_index = floor_end.then(|| match spec.direction {
+        ParetoDirection::Low => 0,
+        ParetoDirection::High => strengths.len() - 1,
+    });
+    // Solutions to warm-start from: the range search's, then each wave's.
+    // Only those whose measure a double can hold (a pull-off below 1e-300 N
+    // leaves its row without a gradient).
+    let mut known: Vec<(f64, Scene)> = Vec::new();
+    let remember = |known: &mut Vec<(f64, Scene)>, r: &Solved| {
+        if r.feasible && r.log10 > -300.0 {
+            known.push((r.strength, r.scene.clone()));
+        }
+    };
+    for r in [&lo_solved, &hi_solved, &start] {
+        remember(&mut known, r);
+    }
+    let mut points: Vec<FrontPoint> = Vec::with_capacity(strengths.len());
+    for (w, wave) in strengths.chunks(WAVE).enumerate() {
+        let solved: Vec<(Option<Solved>, bool, usize)> = wave
+            .par_iter()
+            .enumerate()
+            .map(|(j, &s)| {
+                let index = w * WAVE + j;
+                let target = if Some(index) == floor_index {
+                    Target::AtMost(s)
+                } else {
+                    Target::Equal(s)
+                };
+                // The nearest solution known before this wave.
+                let warm = known
+                    .iter()
+                    .min_by(|a, b| (a.0 - s).abs().total_cmp(&(b.0 - s).abs()))
+                    .map(|k| &k.1);
+                sweep.solve_point(target, warm)
+            })
+            .collect();
+        for (j, (r, warm_started, evals)) in solved.into_iter().enumerate() {
+            let index = w * WAVE + j;
+            let s = wave[j];
+            evaluations += evals;
+            let kind = if Some(index) == floor_index {
+                "at_most"
+            } else {
+                "equal"
+            };
+            let mut p = match &r {
+                Some(r) => FrontPoint {
+                    index,
+                    target: value_at(measure, s),
+                    target_kind: kind,
+                    adhesion: r.value,
+                    log10_adhesion: r.log10,
+                    strength: r.strength,
+                    objective: r.objective,
+                    wear_rate: r.wear_rate,
+                    status: r.status,
+                    dominated: false,
+                    on_front: false,
+                    design: r.design.clone(),
+                    warm_started,
+                    evaluations: evals,
+                },
+                None => FrontPoint {
+                    index,
+                    target: value_at(measure, s),
+                    target_kind: kind,
+                    adhesion: f64::NAN,
+                    log10_adhesion: f64::NAN,
+                    strength: f64::NAN,
+                    objective: f64::NAN,
+                    wear_rate: f64::NAN,
+                    status: OptimizationStatus::Infeasible,
+                    dominated: false,
+                    on_front: false,
+                    design: vec![f64::NAN; names.len()],
+                    warm_started: false,
+                    evaluations: evals,
+                },
+            };
+            if p.status != OptimizationStatus::Infeasible {
+                p.dominated = dominated_by_earlier(&points, &p, spec.direction);
+                p.on_front = !p.dominated;
+            }
+            if let Some(r) = &r {
+                remember(&mut known, r);
+            }
+            observer.point_done(&p);
+            points.push(p);
+        }
+    }
+    let front = points.iter().filter(|p| p.on_front).count();
+    let status = match front {
+        0 => FrontStatus::Infeasible,
+        1 => FrontStatus::NoTradeOff,
+        _ => FrontStatus::Ok,
+    };
+    Ok(Front {
+        status,
+        measure,
+        direction: spec.direction,
+        objective_name: objective.as_str(),
+        names,
+        knee: knee(&points),
+        points,
+        strength_range: (lo, hi),
+        floor_end,
+        baseline,
+        least_wear,
+        least_wear_strength: s_w,
+        evaluations,
+        probes,
+        time_seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn targets_are_even_in_log_and_snap_to_the_least_wear_strength() {
+        let s = targets(
+            AdhesionMeasure::PullOffForce,
+            -12.0,
+            -4.0,
+            5,
+            ParetoDirection::Low,
+            Some(-7.9),
+        );
+        assert_eq!(s, vec![-12.0, -10.0, -7.9, -6.0, -4.0]);
+        let s = targets(
+            AdhesionMeasure::PullOffForce,
+            -12.0,
+            -4.0,
+            3,
+            ParetoDirection::High,
+            None,
+        );
+        assert_eq!(s, vec![-4.0, -8.0, -12.0]);
+        // Less than a decade: even in value.
+        let s = targets(
+            AdhesionMeasure::WorkOfAdhesion,
+            0.01f64.log10(),
+            0.05f64.log10(),
+            5,
+            ParetoDirection::Low,
+            None,
+        );
+        let v: Vec<f64> = s
+            .iter()
+            .map(|&x| value_at(AdhesionMeasure::WorkOfAdhesion, x))
+            .collect();
+        for (a, b) in v.iter().zip([0.01, 0.02, 0.03, 0.04, 0.05]) {
+            assert!((a / b - 1.0).abs() < 1e-12, "{a} vs {b}");
+        }
+    }
+
+    #[test]
+    fn theta_strength_is_inverted() {
+        assert_eq!(
+            strength_of(AdhesionMeasure::ElasticAdhesionIndex, 2.0),
+            -2.0
+        );
+        assert!((value_at(AdhesionMeasure::ElasticAdhesionIndex, -2.0) - 100.0).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,245 @@
+//! The report of a friction calibration (`wearopt fit-adhesion`): text and JSON.
+
+use serde_json::{json, Value};
+
+use super::{si, sig};
+use crate::calibrate::{Calibration, FrictionCoefficient, CONFIDENCE_LEVEL};
+
+/// One JSON object, SI units (N, m, N/m, Pa). Keys: those of [`Calibration`] plus
+/// `confidence_level` and `model`.
+pub fn json(c: &Calibration) -> String {
+    let mut v = serde_json::to_value(c).unwrap_or(Value::Null);
+    if let Value::Object(obj) = &mut v {
+        obj.insert("confidence_level".into(), json!(CONFIDENCE_LEVEL));
+        obj.insert(
+            "model".into(),
+            json!("F = mu [P + 3 pi gamma R + sqrt(6 pi gamma R P + (3 pi gamma R)^2)] (paper eq. 14, MODEL.md §5)"),
+        );
+    }
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
+    s.push('\n');
+    s
+}
+
+fn gamma(x: f64) -> String {
+    si(x, "N/m", 3)
+}
+
+fn force(x: f64) -> String {
+    si(x, "N", 3)
+}
+
+/// A report for people.
+pub fn text(c: &Calibration) -> String {
+    let mut out = String::new();
+    let mut line = |s: String| {
+        out.push_str(&s);
+        out.push('\n');
+    };
+    let n = c.per_point.len();
+    let fitted_mu = c.friction_coefficient_source == FrictionCoefficient::Fit;
+    line(format!("wearopt fit-adhesion — {}", c.origin));
+    line(String::new());
+    line(format!(
+        "Model: F = μ [P + 3πγR + √(6πγRP + (3πγR)²)] (JKR friction, eq. 14), R = {}",
+        si(c.radius, "m", 3)
+    ));
+    line(format!(
+        "Fit: least squares on F, {n} point{}, {} ({} degree{} of freedom)",
+        if n == 1 { "" } else { "s" },
+        if fitted_mu {
+            "γ and μ fitted".to_string()
+        } else {
+            format!("γ fitted, μ = {} held", sig(c.friction_coefficient, 4))
+        },
+        c.degrees_of_freedom,
+        if c.degrees_of_freedom == 1 { "" } else { "s" }
+    ));
+    line(String::new());
+    let pct = format!("{:.0} %", CONFIDENCE_LEVEL * 100.0);
+    line(format!(
+        "work of adhesion γ      {}{}",
+        gamma(c.work_of_adhesion),
+        c.standard_error.map_or(String::new(), |se| format!(
+            " ± {} (standard error)",
+            gamma(se)
+        ))
+    ));
+    if let (Some(ci), Some(t)) = (c.confidence_interval, c.t_quantile) {
+        line(format!(
+            "  {pct} interval          {} to {}{} (t = {})",
+            gamma(ci[0]),
+            gamma(ci[1]),
+            if c.confidence_interval_clipped {
+                ", clipped at 0"
+            } else {
+                ""
+            },
+            sig(t, 4)
+        ));
+    }
+    let mu_source = match c.friction_coefficient_source {
+        FrictionCoefficient::Fit => String::new(),
+        FrictionCoefficient::Given(_) => " (given)".into(),
+        FrictionCoefficient::Default => " (assumed: the paper's value)".into(),
+    };
+    line(format!(
+        "friction coefficient μ  {}{}{}",
+        sig(c.friction_coefficient, 4),
+        c.friction_coefficient_standard_error
+            .map_or(String::new(), |se| format!(
+                " ± {} (standard error)",
+                sig(se, 2)
+            )),
+        mu_source
+    ));
+    if let Some(ci) = c.friction_coefficient_confidence_interval {
+        line(format!(
+            "  {pct} interval          {} to {}",
+            sig(ci[0], 4),
+            sig(ci[1], 4)
+        ));
+    }
+    if let Some(r) = c.correlation {
+        line(format!("  correlation of γ and μ estimates {}", sig(r, 3)));
+    }
+    line(format!(
+        "residual standard deviation {}; {} Gauss–Newton iteration{}{}",
+        c.residual_standard_deviation.map_or("—".into(), force),
+        c.iterations,
+        if c.iterations == 1 { "" } else { "s" },
+        if c.converged { "" } else { " (not converged)" }
+    ));
+    line(String::new());
+    let with_bond = c.equivalent_modulus.is_some();
+    let mut header = format!(
+        "{:>5} {:>11} {:>11} {:>11} {:>11} {:>15}",
+        "line", "load P", "friction F", "fitted F", "residual", "γ (this point)"
+    );
+    if with_bond {
+        header.push_str(&format!(
+            " {:>11} {:>11} {:>11}",
+            "P₁", "radius r", "F/(πr²)"
+        ));
+    }
+    line(header);
+    for p in &c.per_point {
+        let mut row = format!(
+            "{:>5} {:>11} {:>11} {:>11} {:>11} {:>15}",
+            p.line,
+            force(p.load),
+            force(p.friction),
+            force(p.fitted_friction),
+            force(p.residual),
+            p.work_of_adhesion.map_or("none".into(), gamma)
+        );
+        if with_bond {
+            row.push_str(&format!(
+                " {:>11} {:>11} {:>11}",
+                force(p.apparent_hertz_load),
+                p.contact_radius.map_or("—".into(), |r| si(r, "m", 3)),
+                p.bond_strength.map_or("—".into(), |t| si(t, "Pa", 3))
+            ));
+        }
+        line(row);
+        if let Some(note) = &p.note {
+            line(format!("      line {}: {note}", p.line));
+        }
+    }
+    line("  residual = measured − fitted; γ (this point) solves eq. 14 exactly for that point at the fit's μ".into());
+    if let Some(r) = c.per_point_range {
+        line(format!(
+            "  γ from single points: {} to {}",
+            gamma(r[0]),
+            gamma(r[1])
+        ));
+    }
+    if let (Some(e), Some(mean)) = (c.equivalent_modulus, c.mean_bond_strength) {
+        line(format!(
+            "  contact radius r³ = R P₁ / K with K = 4E/3, E = {} (equivalent modulus), P₁ at the fitted γ; mean bond strength F/(πr²) = {}",
+            si(e, "Pa", 3),
+            si(mean, "Pa", 3)
+        ));
+    } else {
+        line(
+            "  contact radius and bond strength F/(πr²): give --materials A,B or --modulus E"
+                .into(),
+        );
+    }
+
+    if let Some(cmp) = &c.comparison {
+        line(String::new());
+        line(format!("Comparison with {}:", cmp.source));
+        if let Some(q) = &cmp.work_of_adhesion {
+            let where_ = match (q.within_confidence_interval, c.confidence_interval) {
+                (Some(true), Some(_)) => format!("inside the fit's {pct} interval"),
+                (Some(false), Some(ci)) => format!(
+                    "outside the fit's {pct} interval ({} to {})",
+                    gamma(ci[0]),
+                    gamma(ci[1])
+                ),
+                _ if q.within_per_point_range => "inside the range of single-point values".into(),
+                _ => "outside the range of single-point values".into(),
+            };
+            line(format!(
+                "  quoted γ = {} is {}× the fitted {}, {where_}.",
+                gamma(q.quoted),
+                sig(q.ratio_to_fit, 3),
+                gamma(c.work_of_adhesion)
+            ));
+            let predicted: Vec<String> = q
+                .predicted_friction
+                .iter()
+                .map(|f| sig(f * 1e6, 3))
+                .collect();
+            let measured: Vec<String> = c
+                .per_point
+                .iter()
+                .map(|p| sig(p.friction * 1e6, 3))
+                .collect();
+            line(format!(
+                "  With the quoted γ and μ = {}, eq. 14 gives F = {} µN at these loads; measured: {} µN.",
+                sig(c.friction_coefficient, 4),
+                predicted.join(", "),
+                measured.join(", ")
+            ));
+            if let Some(t) = q.implied_bond_strength {
+                line(format!(
+                    "  The quoted γ would make the mean bond strength F/(πr²) {}.",
+                    si(t, "Pa", 3)
+                ));
+            }
+            line(if q.agrees {
+                "  The quoted γ is consistent with these data.".into()
+            } else {
+                "  The quoted γ does NOT follow from these data.".into()
+            });
+        }
+        if let Some(b) = &cmp.bond_strength {
+            line(format!(
+                "  quoted bond strength = {} against {} from the data (mean F/(πr²) at the fitted γ; ratio {}): {}",
+                si(b.quoted, "Pa", 3),
+                si(b.from_data, "Pa", 3),
+                sig(b.ratio, 3),
+                if b.agrees {
+                    "within the range of single points, consistent."
+                } else {
+                    "outside the range of single points: it does NOT follow from these data."
+                }
+            ));
+        }
+        if let Some(tq) = cmp.bond_strength_unchecked {
+            line(format!(
+                "  quoted bond strength = {}: not checked (give --materials A,B or --modulus E for contact radii)",
+                si(tq, "Pa", 3)
+            ));
+        }
+    }
+    if !c.notes.is_empty() {
+        line(String::new());
+        for note in &c.notes {
+            line(format!("Note: {note}"));
+        }
+    }
+    out
+}

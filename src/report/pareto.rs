@@ -1,0 +1,538 @@
+//! The report of a wear–adhesion sweep (`wearopt pareto`): text, CSV, JSON and
+//! an SVG plot of the front. CSV and JSON come in pieces (head, one row per
+//! point, tail) so that a caller can write each point as it is final; the
+//! whole document is the pieces joined, byte for byte.
+
+use std::fmt::Write as _;
+
+use serde_json::{json, Map, Value};
+
+use super::svg::{Axis, LinePlot, Marker, Series};
+use super::{number, si, sig, sig_exp};
+use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
+use crate::problem::units::{format_quantity, Dimension};
+use crate::problem::{AdhesionMeasure, Constraint, DesignQuantity, Named, ParetoDirection};
+
+/// What the head of a streamed report needs (known before the sweep runs).
+#[derive(Debug, Clone, Copy)]
+pub struct Head<'a> {
+    /// The problem's name.
+    pub name: &'a str,
+    /// The adhesion measure.
+    pub measure: AdhesionMeasure,
+    /// The preferred end.
+    pub direction: ParetoDirection,
+    /// The objective minimised.
+    pub objective_name: &'a str,
+    /// Design variable names.
+    pub names: &'a [&'static str],
+}
+
+impl<'a> Head<'a> {
+    /// The head of a finished front.
+    pub fn of(name: &'a str, front: &'a Front) -> Self {
+        Head {
+            name,
+            measure: front.measure,
+            direction: front.direction,
+            objective_name: front.objective_name,
+            names: &front.names,
+        }
+    }
+}
+
+fn unit_of_design(name: &str) -> Dimension {
+    DesignQuantity::from_name(name).map_or(Dimension::Dimensionless, |q| q.dimension())
+}
+
+fn objective_unit(name: &str) -> &'static str {
+    match name {
+        "wear_rate" => "m³/m",
+        "wear_volume" => "m³",
+        "real_area" => "m²",
+        _ => "N",
+    }
+}
+
+fn measure_text(m: AdhesionMeasure, v: f64, log10: f64) -> String {
+    match m {
+        AdhesionMeasure::ElasticAdhesionIndex => sig_exp(v, 4),
+        _ if v == 0.0 && log10.is_finite() => format!("1e{} {}", sig(log10, 4), unit_of(m)),
+        _ => si(v, unit_of(m), 4),
+    }
+}
+
+// ---------------------------------------------------------------- CSV
+
+/// The CSV header: fixed columns, then one column per design variable.
+pub fn csv_header(names: &[&str]) -> String {
+    let mut h = String::from(
+        "index,target,adhesion,log10_adhesion,wear_rate,objective,status,dominated,on_front",
+    );
+    for n in names {
+        h.push(',');
+        h.push_str(n);
+    }
+    h.push('\n');
+    h
+}
+
+/// One CSV row.
+pub fn csv_row(p: &FrontPoint) -> String {
+    let mut r = format!(
+        "{},{},{},{},{},{},{},{},{}",
+        p.index,
+        number(p.target),
+        number(p.adhesion),
+        number(p.log10_adhesion),
+        number(p.wear_rate),
+        number(p.objective),
+        p.status.as_str(),
+        p.dominated,
+        p.on_front
+    );
+    for v in &p.design {
+        r.push(',');
+        r.push_str(&number(*v));
+    }
+    r.push('\n');
+    r
+}
+
+/// The whole CSV.
+pub fn csv(front: &Front) -> String {
+    let mut out = csv_header(&front.names);
+    for p in &front.points {
+        out.push_str(&csv_row(p));
+    }
+    out
+}
+
+// ---------------------------------------------------------------- JSON
+
+fn design_object(names: &[&str], values: &[f64]) -> Value {
+    let mut m = Map::new();
+    for (n, v) in names.iter().zip(values) {
+        m.insert((*n).to_string(), json!(v));
+    }
+    Value::Object(m)
+}
+
+/// The JSON object's head, up to the opening of `points`.
+pub fn json_head(h: &Head) -> String {
+    let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
+    format!(
+        "{{\n  \"name\": {},\n  \"adhesion_measure\": {},\n  \"direction\": {},\n  \"objective_name\": {},\n  \"design_variables\": {},\n  \"points\": [\n",
+        s(json!(h.name)),
+        s(json!(h.measure.as_str())),
+        s(json!(h.direction.as_str())),
+        s(json!(h.objective_name)),
+        s(json!(h.names)),
+    )
+}
+
+/// One point of `points`, on one line; `first` leaves out the separating comma.
+pub fn json_point(names: &[&str], p: &FrontPoint, first: bool) -> String {
+    let v = json!({
+        "index": p.index,
+        "target": p.target,
+        "target_kind": p.target_kind,
+        "adhesion": p.adhesion,
+        "log10_adhesion": p.log10_adhesion,
+        "wear_rate": p.wear_rate,
+        "objective": p.objective,
+        "status": p.status.as_str(),
+        "dominated": p.dominated,
+        "on_front": p.on_front,
+        "warm_started": p.warm_started,
+        "evaluations": p.evaluations,
+        "design": design_object(names, &p.design),
+    });
+    format!(
+        "{}    {}",
+        if first { "" } else { ",\n" },
+        serde_json::to_string(&v).unwrap_or_else(|_| "{}".into())
+    )
+}
+
+/// The rest of the object after the last point.
+pub fn json_tail(front: &Front) -> String {
+    let reference = |r: &crate::optimize::pareto::Reference| {
+        json!({
+            "adhesion": r.adhesion,
+            "log10_adhesion": r.log10_adhesion,
+            "wear_rate": r.wear_rate,
+            "objective": r.objective,
+            "feasible": r.feasible,
+            "design": design_object(&front.names, &r.design),
+        })
+    };
+    let rest = json!({
+        "status": front.status.as_str(),
+        "knee": front.knee,
+        "front": front.front_indices(),
+        "trade_off": front.status == FrontStatus::Ok,
+        "strength_range": [front.strength_range.0, front.strength_range.1],
+        "floor_end": front.floor_end,
+        "least_wear": reference(&front.least_wear),
+        "baseline": front.baseline.as_ref().map(reference),
+        "probes": front.probes,
+        "evaluations": front.evaluations,
+    });
+    let mut out = String::from("\n  ],\n");
+    if let Value::Object(m) = rest {
+        let n = m.len();
+        for (i, (k, v)) in m.into_iter().enumerate() {
+            let v = serde_json::to_string_pretty(&v)
+                .unwrap_or_else(|_| "null".into())
+                .replace('\n', "\n  ");
+            let _ = write!(out, "  {}: {v}", json!(k));
+            out.push_str(if i + 1 < n { ",\n" } else { "\n" });
+        }
+    }
+    out.push_str("}\n");
+    out
+}
+
+/// The whole JSON object.
+pub fn json(name: &str, front: &Front) -> String {
+    let mut out = json_head(&Head::of(name, front));
+    for (i, p) in front.points.iter().enumerate() {
+        out.push_str(&json_point(&front.names, p, i == 0));
+    }
+    out.push_str(&json_tail(front));
+    out
+}
+
+// ---------------------------------------------------------------- text
+
+/// The plain sentence for a front without trade-off.
+pub fn no_trade_off_sentence(direction: ParetoDirection) -> &'static str {
+    match direction {
+        ParetoDirection::Low => {
+            "no trade-off: the least-wear design is also the least-adhesion design"
+        }
+        ParetoDirection::High => {
+            "no trade-off: the least-wear design is also the most-adhesion design"
+        }
+    }
+}
+
+fn constraint_text(c: &Constraint) -> String {
+    let d = c.quantity.dimension();
+    match (c.min, c.max) {
+        (Some(a), Some(b)) => format!(
+            "{} ≤ {} ≤ {}",
+            format_quantity(a, d),
+            c.quantity,
+            format_quantity(b, d)
+        ),
+        (Some(a), None) => format!("{} ≥ {}", c.quantity, format_quantity(a, d)),
+        (None, Some(b)) => format!("{} ≤ {}", c.quantity, format_quantity(b, d)),
+        (None, None) => c.quantity.to_string(),
+    }
+}
+
+/// A report for people; only the sections the study has.
+pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
+    let mut out = String::new();
+    let mut line = |s: String| {
+        out.push_str(&s);
+        out.push('\n');
+    };
+    let m = front.measure;
+    let ounit = objective_unit(front.objective_name);
+    line(format!("wearopt pareto — {name}"));
+    line(String::new());
+    let good_end = match (front.direction, m) {
+        (ParetoDirection::Low, AdhesionMeasure::ElasticAdhesionIndex) => "high θ (little adhesion)",
+        (ParetoDirection::High, AdhesionMeasure::ElasticAdhesionIndex) => "low θ (strong adhesion)",
+        (ParetoDirection::Low, _) => "low adhesion",
+        (ParetoDirection::High, _) => "high adhesion",
+    };
+    line(format!(
+        "{} against {}, direction {}: the good end is {good_end}",
+        front.objective_name,
+        m.as_str(),
+        front.direction.as_str()
+    ));
+    let status = match front.status {
+        FrontStatus::Ok => format!(
+            "ok: {} designs on the front, wear and adhesion pull against each other",
+            front.front_indices().len()
+        ),
+        FrontStatus::NoTradeOff => no_trade_off_sentence(front.direction).to_string(),
+        FrontStatus::Infeasible => {
+            "infeasible: no point of the sweep meets every constraint of the study".to_string()
+        }
+    };
+    line(format!("Status: {status}"));
+    let (lo, hi) = front.strength_range;
+    let (vlo, vhi) = (
+        crate::optimize::pareto::value_at(m, lo),
+        crate::optimize::pareto::value_at(m, hi),
+    );
+    let (a, b) = if m == AdhesionMeasure::ElasticAdhesionIndex {
+        (vhi, vlo)
+    } else {
+        (vlo, vhi)
+    };
+    line(format!(
+        "reachable {}: {} to {}{}",
+        m.as_str(),
+        measure_text(m, a, a.log10()),
+        measure_text(m, b, b.log10()),
+        if front.floor_end {
+            format!(
+                " (pull-off below {} counts as none: that end holds it at most there)",
+                si(PULL_OFF_FLOOR, "N", 3)
+            )
+        } else {
+            String::new()
+        }
+    ));
+    if !constraints.is_empty() {
+        let list: Vec<String> = constraints.iter().map(constraint_text).collect();
+        line(format!("every point also meets: {}", list.join(", ")));
+    }
+    line(String::new());
+    let mut header = format!(
+        "{:>3} {:>14} {:>14} {:<16} {:<6}",
+        "#",
+        match m {
+            AdhesionMeasure::PullOffForce => "pull-off",
+            AdhesionMeasure::WorkOfAdhesion => "γ",
+            AdhesionMeasure::ElasticAdhesionIndex => "θ",
+        },
+        front.objective_name,
+        "status",
+        "front"
+    );
+    for n in &front.names {
+        let _ = write!(header, " {n:>16}");
+    }
+    line(header);
+    for p in &front.points {
+        let mark = if front.knee == Some(p.index) {
+            "knee"
+        } else if p.on_front {
+            "yes"
+        } else if p.dominated {
+            "dom."
+        } else {
+            "—"
+        };
+        let mut row = format!(
+            "{:>3} {:>14} {:>14} {:<16} {:<6}",
+            p.index,
+            measure_text(m, p.adhesion, p.log10_adhesion),
+            si(p.objective, ounit, 4),
+            p.status.as_str(),
+            mark
+        );
+        for (n, v) in front.names.iter().zip(&p.design) {
+            let _ = write!(row, " {:>16}", format_quantity(*v, unit_of_design(n)));
+        }
+        line(row);
+    }
+    line("  front: feasible and not dominated; dom.: an earlier point has as good an adhesion and no more wear".into());
+    line(String::new());
+    if let Some(k) = front.knee.and_then(|k| front.points.get(k)) {
+        line(format!(
+            "knee (farthest from the chord of the front in normalised log coordinates): point {}, {} = {}, {} = {}",
+            k.index,
+            m.as_str(),
+            measure_text(m, k.adhesion, k.log10_adhesion),
+            front.objective_name,
+            si(k.objective, ounit, 4)
+        ));
+    }
+    let lw = &front.least_wear;
+    line(format!(
+        "least-wear design of the study: {} = {}, {} = {}",
+        m.as_str(),
+        measure_text(m, lw.adhesion, lw.log10_adhesion),
+        front.objective_name,
+        si(lw.objective, ounit, 4)
+    ));
+    if let Some(b) = &front.baseline {
+        line(format!(
+            "baseline design: {} = {}, {} = {}{}",
+            m.as_str(),
+            measure_text(m, b.adhesion, b.log10_adhesion),
+            front.objective_name,
+            si(b.objective, ounit, 4),
+            if b.feasible {
+                ""
+            } else {
+                " (violates a constraint)"
+            }
+        ));
+    }
+    line(format!(
+        "{} points, {} range probes, {} model evaluations",
+        front.points.len(),
+        front.probes,
+        front.evaluations
+    ));
+    out
+}
+
+// ---------------------------------------------------------------- SVG
+
+/// The plot: the whole curve, the front, dominated points, the knee and the
+/// baseline; log axes where the data span a decade or more.
+pub fn svg(name: &str, front: &Front) -> String {
+    let m = front.measure;
+    // Underflowed pull-off forces (at most the floor) are drawn at the floor.
+    let floor = (m == AdhesionMeasure::PullOffForce).then_some(PULL_OFF_FLOOR);
+    let mut clamped = false;
+    let mut x_of = |adhesion: f64, log10: f64| -> f64 {
+        match floor {
+            Some(f) if log10 < f.log10() => {
+                clamped = true;
+                f
+            }
+            _ if adhesion == 0.0 => 10f64.powf(log10),
+            _ => adhesion,
+        }
+    };
+    let usable: Vec<&FrontPoint> = front
+        .points
+        .iter()
+        .filter(|p| p.objective.is_finite() && p.log10_adhesion.is_finite())
+        .collect();
+    let mut curve: Vec<(f64, f64, f64)> = usable
+        .iter()
+        .map(|p| (p.strength, x_of(p.adhesion, p.log10_adhesion), p.objective))
+        .collect();
+    curve.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let pick = |f: &dyn Fn(&FrontPoint) -> bool, x_of: &mut dyn FnMut(f64, f64) -> f64| {
+        usable
+            .iter()
+            .filter(|p| f(p))
+            .map(|p| (x_of(p.adhesion, p.log10_adhesion), p.objective))
+            .collect::<Vec<_>>()
+    };
+    let on_front = pick(&|p| p.on_front, &mut x_of);
+    let dominated = pick(&|p| p.dominated, &mut x_of);
+    let infeasible = pick(
+        &|p| p.status == crate::optimize::OptimizationStatus::Infeasible,
+        &mut x_of,
+    );
+    let knee = pick(&|p| front.knee == Some(p.index), &mut x_of);
+    let baseline: Vec<(f64, f64)> = front
+        .baseline
+        .iter()
+        .map(|b| (x_of(b.adhesion, b.log10_adhesion), b.objective))
+        .collect();
+    let xs: Vec<f64> = curve
+        .iter()
+        .map(|c| c.1)
+        .chain(baseline.iter().map(|b| b.0))
+        .collect();
+    let ys: Vec<f64> = curve
+        .iter()
+        .map(|c| c.2)
+        .chain(baseline.iter().map(|b| b.1))
+        .collect();
+    let spans_decades = |v: &[f64]| {
+        let pos: Vec<f64> = v.iter().copied().filter(|x| *x > 0.0).collect();
+        let lo = pos.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = pos.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        pos.len() == v.len() && hi / lo >= 10.0
+    };
+    let axis = |label: String, unit: &str, log: bool| {
+        let a = if log {
+            Axis::log(label)
+        } else {
+            Axis::linear(label)
+        };
+        if unit.is_empty() {
+            a
+        } else {
+            a.with_unit(unit)
+        }
+    };
+    let xlabel = match m {
+        AdhesionMeasure::PullOffForce => "pull-off force".to_string(),
+        AdhesionMeasure::WorkOfAdhesion => "work of adhesion γ".to_string(),
+        AdhesionMeasure::ElasticAdhesionIndex => {
+            "elastic adhesion index θ (larger: less adhesion)".to_string()
+        }
+    };
+    let ylabel = front.objective_name.replace('_', " ");
+    let title = format!(
+        "{name}: {} against {} ({})",
+        ylabel,
+        m.as_str().replace('_', " "),
+        match front.status {
+            FrontStatus::Ok => "trade-off",
+            FrontStatus::NoTradeOff => "no trade-off",
+            FrontStatus::Infeasible => "infeasible",
+        }
+    );
+    let mut plot = LinePlot::new(
+        title,
+        axis(xlabel, unit_of(m), spans_decades(&xs)),
+        axis(
+            ylabel,
+            objective_unit(front.objective_name),
+            spans_decades(&ys),
+        ),
+    );
+    plot = plot.with_series(
+        Series::new(
+            "all points (ε-constraint curve)",
+            curve.iter().map(|c| (c.1, c.2)).collect(),
+        )
+        .with_marker(Marker::None)
+        .with_color("#999999"),
+    );
+    let front_name = if clamped {
+        format!(
+            "Pareto front (pull-off ≤ {} drawn at it)",
+            si(PULL_OFF_FLOOR, "N", 1)
+        )
+    } else {
+        "Pareto front".to_string()
+    };
+    plot = plot.with_series(
+        Series::new(front_name, on_front)
+            .with_marker(Marker::Circle)
+            .with_color("#0072B2"),
+    );
+    if !dominated.is_empty() {
+        plot = plot.with_series(
+            Series::new("dominated", dominated)
+                .without_line()
+                .with_marker(Marker::Cross)
+                .with_color("#D55E00"),
+        );
+    }
+    if !infeasible.is_empty() {
+        plot = plot.with_series(
+            Series::new("infeasible", infeasible)
+                .without_line()
+                .with_marker(Marker::Triangle)
+                .with_color("#CC79A7"),
+        );
+    }
+    if !knee.is_empty() {
+        plot = plot.with_series(
+            Series::new("knee", knee)
+                .without_line()
+                .with_marker(Marker::Diamond)
+                .with_color("#009E73"),
+        );
+    }
+    if !baseline.is_empty() {
+        plot = plot.with_series(
+            Series::new("baseline design", baseline)
+                .without_line()
+                .with_marker(Marker::Square)
+                .with_color("#000000"),
+        );
+    }
+    plot.to_svg()
+}

@@ -1,0 +1,605 @@
+//! `wearopt pareto` and the sweep behind it: the front is non-dominated and
+//! monotone, every point meets the study's constraints, the ends agree with
+//! separate single-objective runs, the output does not depend on the thread
+//! count, the SVG is well-formed with the expected elements, and the command
+//! line end to end (formats, streaming, exit codes).
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use wearopt::model::{evaluate, EvaluationOptions, Scene, Status};
+use wearopt::optimize::pareto::{pareto, Front, FrontStatus, Silent, PULL_OFF_FLOOR};
+use wearopt::optimize::{optimize, OptimizationStatus, Study};
+use wearopt::problem::{
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, ParetoDirection, ParetoSpec,
+    Problem,
+};
+use wearopt::report::pareto as report;
+
+fn wearopt() -> Command {
+    Command::cargo_bin("wearopt").expect("binary builds")
+}
+
+fn problem_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("problems")
+        .join(name)
+}
+
+fn load(name: &str) -> Problem {
+    wearopt::problem::load(&problem_path(name)).expect("problem loads")
+}
+
+fn study(p: &Problem) -> Study<'_> {
+    Study {
+        scene: &p.scene,
+        design: &p.study.design,
+        objective: p.study.objective,
+        constraints: &p.study.constraints,
+        settings: &p.study.optimizer,
+    }
+}
+
+fn spec(adhesion: AdhesionMeasure, points: usize, direction: ParetoDirection) -> ParetoSpec {
+    ParetoSpec {
+        adhesion,
+        points,
+        direction,
+    }
+}
+
+/// The scene at a point's design.
+fn scene_at(p: &Problem, design: &[f64]) -> Scene {
+    let mut scene = p.scene.clone();
+    for (v, &x) in p.study.design.iter().zip(design) {
+        v.name.set(&mut scene, x);
+    }
+    scene
+}
+
+/// Every constraint of the study holds at every feasible point, re-evaluated
+/// from its design alone (with the pull-off, whatever the constraints ask).
+fn assert_points_meet_constraints(p: &Problem, front: &Front) {
+    let options = EvaluationOptions {
+        pull_off: true,
+        ..Default::default()
+    };
+    for pt in &front.points {
+        if pt.status == OptimizationStatus::Infeasible {
+            continue;
+        }
+        let scene = scene_at(p, &pt.design);
+        let ev = evaluate(&scene, &options);
+        assert_eq!(ev.status, Status::Ok, "point {}", pt.index);
+        for c in &p.study.constraints {
+            let v = wearopt::optimize::functions::quantity_value(c.quantity, &ev, &scene)
+                .unwrap_or(0.0);
+            if let Some(max) = c.max {
+                assert!(
+                    v <= max * (1.0 + 1e-6),
+                    "point {}: {} = {v} > {max}",
+                    pt.index,
+                    c.quantity
+                );
+            }
+            if let Some(min) = c.min {
+                assert!(
+                    v >= min * (1.0 - 1e-6),
+                    "point {}: {} = {v} < {min}",
+                    pt.index,
+                    c.quantity
+                );
+            }
+        }
+        for (v, &x) in p.study.design.iter().zip(&pt.design) {
+            assert!(x >= v.min * (1.0 - 1e-12) && x <= v.max * (1.0 + 1e-12));
+        }
+    }
+}
+
+/// The front (feasible, not dominated) is monotone — adhesion gets worse and
+/// wear better along it — and no point of it dominates another; every
+/// dominated point is dominated by a front point.
+fn assert_front_is_monotone_and_non_dominated(front: &Front) {
+    let pref = |s: f64| match front.direction {
+        ParetoDirection::Low => s,
+        ParetoDirection::High => -s,
+    };
+    let f: Vec<_> = front.points.iter().filter(|p| p.on_front).collect();
+    assert!(!f.is_empty());
+    for w in f.windows(2) {
+        assert!(pref(w[1].strength) > pref(w[0].strength), "{w:?}");
+        assert!(w[1].objective < w[0].objective, "{w:?}");
+    }
+    for a in &f {
+        for b in &f {
+            if a.index != b.index {
+                let dominates = pref(a.strength) <= pref(b.strength) && a.objective <= b.objective;
+                assert!(!dominates, "{} dominates {}", a.index, b.index);
+            }
+        }
+    }
+    for d in front.points.iter().filter(|p| p.dominated) {
+        assert!(!d.on_front);
+        assert!(f.iter().any(|q| pref(q.strength) <= pref(d.strength) + 1e-6
+            && q.objective <= d.objective * (1.0 + 1e-6)));
+    }
+    if let Some(k) = front.knee {
+        assert!(front.points[k].on_front);
+    }
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(f64::MIN_POSITIVE)
+}
+
+#[test]
+fn micro_gear_low_has_no_trade_off_and_ends_at_the_least_wear_design() {
+    let p = load("micro-gear.toml");
+    let s = study(&p);
+    let front = pareto(&s, &p.study.pareto.unwrap(), &Silent).unwrap();
+    assert_eq!(front.points.len(), 15);
+    assert_eq!(front.status, FrontStatus::NoTradeOff);
+    assert_eq!(front.front_indices(), vec![0]);
+    assert_eq!(front.knee, Some(0));
+    assert!(front.floor_end);
+    assert_points_meet_constraints(&p, &front);
+    assert_front_is_monotone_and_non_dominated(&front);
+    // The single front point is the study's own least-wear design.
+    let single = optimize(&s, false).unwrap();
+    let end = &front.points[0];
+    assert!(
+        rel(end.objective, single.objective) < 1e-6,
+        "{} vs {}",
+        end.objective,
+        single.objective
+    );
+    // ... and the least pull-off the study can reach is below the floor too.
+    let least_adhesion = optimize(
+        &Study {
+            objective: Some(wearopt::problem::Objective::PullOffForce),
+            ..s.clone()
+        },
+        false,
+    )
+    .unwrap();
+    assert!(least_adhesion.evaluation.pull_off_force.unwrap() < PULL_OFF_FLOOR);
+    assert!(end.log10_adhesion < PULL_OFF_FLOOR.log10());
+    // The whole curve rises: wear grows with adhesion here.
+    for w in front.points.windows(2) {
+        assert!(w[1].strength > w[0].strength && w[1].objective > w[0].objective);
+    }
+    let text = report::text(&p.name, &front, &p.study.constraints);
+    assert!(
+        text.contains("no trade-off: the least-wear design is also the least-adhesion design"),
+        "{text}"
+    );
+}
+
+#[test]
+fn micro_gear_high_is_a_trade_off_whose_ends_agree_with_single_runs() {
+    let p = load("micro-gear.toml");
+    let s = study(&p);
+    let front = pareto(
+        &s,
+        &spec(AdhesionMeasure::PullOffForce, 7, ParetoDirection::High),
+        &Silent,
+    )
+    .unwrap();
+    assert_eq!(front.status, FrontStatus::Ok);
+    assert_points_meet_constraints(&p, &front);
+    assert_front_is_monotone_and_non_dominated(&front);
+    let f: Vec<_> = front.points.iter().filter(|q| q.on_front).collect();
+    assert!(f.len() >= 5, "{f:?}");
+    // The most-adhesion end sits at the study's own cap on the pull-off and
+    // agrees with a separate run of the study with the pull-off pinned there.
+    let top = f[0];
+    assert!(rel(top.adhesion, 100e-6) < 1e-6, "{}", top.adhesion);
+    let mut pinned = p.study.constraints.clone();
+    pinned.push(Constraint {
+        quantity: ConstraintQuantity::PullOffForce,
+        min: Some(100e-6),
+        max: Some(100e-6),
+    });
+    let single = optimize(
+        &Study {
+            constraints: &pinned,
+            ..s.clone()
+        },
+        false,
+    )
+    .unwrap();
+    assert_eq!(single.status, OptimizationStatus::Optimal);
+    assert!(
+        rel(top.objective, single.objective) < 1e-5,
+        "{} vs {}",
+        top.objective,
+        single.objective
+    );
+    // The least-wear end is the study's least-wear design.
+    let last = f[f.len() - 1];
+    let least = optimize(&s, false).unwrap();
+    assert!(
+        rel(last.objective, least.objective) < 1e-6,
+        "{} vs {}",
+        last.objective,
+        least.objective
+    );
+    let knee = front.knee.expect("a curved front has a knee");
+    assert!(knee != top.index && knee != last.index);
+}
+
+#[test]
+fn elastic_adhesion_index_is_inverted_and_work_of_adhesion_is_fixed_in_the_scene() {
+    let p = load("micro-gear.toml");
+    let s = study(&p);
+    // θ: a larger θ is less adhesion, so "low" runs from the largest θ down.
+    let theta = pareto(
+        &s,
+        &spec(
+            AdhesionMeasure::ElasticAdhesionIndex,
+            6,
+            ParetoDirection::Low,
+        ),
+        &Silent,
+    )
+    .unwrap();
+    assert_ne!(theta.status, FrontStatus::Infeasible);
+    assert_points_meet_constraints(&p, &theta);
+    assert_front_is_monotone_and_non_dominated(&theta);
+    let feasible: Vec<_> = theta
+        .points
+        .iter()
+        .filter(|q| q.status != OptimizationStatus::Infeasible)
+        .collect();
+    for w in feasible.windows(2) {
+        assert!(
+            w[1].adhesion < w[0].adhesion,
+            "θ falls along a low sweep: {w:?}"
+        );
+    }
+    // γ: every point's work of adhesion is its target.
+    let gamma = pareto(
+        &s,
+        &spec(AdhesionMeasure::WorkOfAdhesion, 5, ParetoDirection::High),
+        &Silent,
+    )
+    .unwrap();
+    assert_ne!(gamma.status, FrontStatus::Infeasible);
+    assert_points_meet_constraints(&p, &gamma);
+    assert_front_is_monotone_and_non_dominated(&gamma);
+    let gi = p
+        .study
+        .design
+        .iter()
+        .position(|d| d.name == DesignQuantity::WorkOfAdhesion)
+        .unwrap();
+    for q in &gamma.points {
+        if q.target_kind == "equal" && q.status != OptimizationStatus::Infeasible {
+            assert!(rel(q.design[gi], q.target) < 1e-12, "{q:?}");
+            assert!(rel(q.adhesion, q.target) < 1e-12);
+        }
+    }
+    // The γ sweep covers the design bounds (nothing else limits γ here).
+    let (lo, hi) = gamma.strength_range;
+    assert!((lo - 5e-3f64.log10()).abs() < 0.011 && (hi - 0.2f64.log10()).abs() < 0.011);
+}
+
+#[test]
+fn output_is_identical_for_one_and_two_threads() {
+    let p = load("micro-gear.toml");
+    let s = study(&p);
+    let sp = spec(AdhesionMeasure::PullOffForce, 6, ParetoDirection::High);
+    let run = |k: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(k)
+            .build()
+            .unwrap()
+            .install(|| {
+                let f = pareto(&s, &sp, &Silent).unwrap();
+                (
+                    report::json(&p.name, &f),
+                    report::csv(&f),
+                    report::svg(&p.name, &f),
+                )
+            })
+    };
+    assert_eq!(run(1), run(2));
+}
+
+#[test]
+fn streamed_pieces_make_the_whole_document() {
+    let p = load("micro-gear.toml");
+    let s = study(&p);
+    let sp = spec(AdhesionMeasure::PullOffForce, 4, ParetoDirection::High);
+    // An observer that rebuilds the CSV and JSON from the points as they come.
+    struct Collect(std::sync::Mutex<Vec<wearopt::optimize::pareto::FrontPoint>>);
+    impl wearopt::optimize::pareto::Observer for Collect {
+        fn point_done(&self, p: &wearopt::optimize::pareto::FrontPoint) {
+            self.0.lock().unwrap().push(p.clone());
+        }
+    }
+    let c = Collect(Default::default());
+    let front = pareto(&s, &sp, &c).unwrap();
+    let streamed = c.0.into_inner().unwrap();
+    assert_eq!(streamed, front.points);
+    let json = report::json(&p.name, &front);
+    let v: serde_json::Value = serde_json::from_str(&json).expect("valid JSON");
+    for key in ["status", "adhesion_measure", "points", "knee"] {
+        assert!(v.get(key).is_some(), "{key}");
+    }
+    assert_eq!(v["adhesion_measure"], "pull_off_force");
+    let pt = &v["points"][0];
+    for key in ["adhesion", "wear_rate", "status", "dominated", "design"] {
+        assert!(pt.get(key).is_some(), "{key}");
+    }
+    let csv = report::csv(&front);
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "index,target,adhesion,log10_adhesion,wear_rate,objective,status,dominated,on_front,sigma,asperity_radius,work_of_adhesion"
+    );
+    assert_eq!(lines.count(), 4);
+}
+
+/// One start tag: name and attributes.
+#[derive(Debug)]
+struct Element {
+    name: String,
+    attributes: HashMap<String, String>,
+}
+
+/// Checks entity references in text or an attribute value.
+fn check_entities(s: &str) -> Result<(), String> {
+    let mut rest = s;
+    while let Some(i) = rest.find('&') {
+        let tail = &rest[i + 1..];
+        let end = tail
+            .find(';')
+            .ok_or_else(|| format!("unterminated entity in {s:?}"))?;
+        let name = &tail[..end];
+        let ok = matches!(name, "amp" | "lt" | "gt" | "quot" | "apos")
+            || (name.starts_with('#') && name.len() > 1);
+        if !ok {
+            return Err(format!("unknown entity &{name}; in {s:?}"));
+        }
+        rest = &tail[end + 1..];
+    }
+    if s.contains('<') {
+        return Err(format!("raw '<' in {s:?}"));
+    }
+    Ok(())
+}
+
+/// A minimal XML well-formedness check for the SVG we write (declaration,
+/// elements, quoted attributes, entities, no comments or CDATA): every tag
+/// closed in order, one root. Returns the start tags in document order.
+fn parse_xml(doc: &str) -> Result<Vec<Element>, String> {
+    let mut s = doc;
+    if let Some(rest) = s.strip_prefix("<?xml") {
+        let end = rest.find("?>").ok_or("unterminated XML declaration")?;
+        s = &rest[end + 2..];
+    }
+    let mut stack: Vec<String> = Vec::new();
+    let mut elements = Vec::new();
+    let mut roots = 0;
+    loop {
+        let Some(lt) = s.find('<') else {
+            check_entities(s)?;
+            if !s.trim().is_empty() {
+                return Err(format!("text after the root: {s:?}"));
+            }
+            break;
+        };
+        let text = &s[..lt];
+        check_entities(text)?;
+        if text.contains('>') {
+            return Err(format!("stray '>' in text {text:?}"));
+        }
+        if stack.is_empty() && !text.trim().is_empty() {
+            return Err(format!("text outside the root: {text:?}"));
+        }
+        s = &s[lt + 1..];
+        if let Some(rest) = s.strip_prefix('/') {
+            let gt = rest.find('>').ok_or("unterminated end tag")?;
+            let name = rest[..gt].trim();
+            match stack.pop() {
+                Some(open) if open == name => {}
+                other => return Err(format!("</{name}> closes {other:?}")),
+            }
+            s = &rest[gt + 1..];
+            continue;
+        }
+        let name_end = s
+            .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
+            .ok_or("unterminated start tag")?;
+        let name = s[..name_end].to_string();
+        if name.is_empty()
+            || !name
+                .chars()
+                .all(|c| c.is_alphanumeric() || "-_:.".contains(c))
+        {
+            return Err(format!("bad element name {name:?}"));
+        }
+        s = &s[name_end..];
+        let mut attributes = HashMap::new();
+        let self_closing;
+        loop {
+            s = s.trim_start();
+            if let Some(rest) = s.strip_prefix("/>") {
+                self_closing = true;
+                s = rest;
+                break;
+            }
+            if let Some(rest) = s.strip_prefix('>') {
+                self_closing = false;
+                s = rest;
+                break;
+            }
+            let eq = s
+                .find('=')
+                .ok_or_else(|| format!("attribute without value in <{name}>"))?;
+            let key = s[..eq].trim().to_string();
+            if key.is_empty() || key.contains(char::is_whitespace) {
+                return Err(format!("bad attribute name {key:?} in <{name}>"));
+            }
+            let rest = &s[eq + 1..];
+            let quote = rest.chars().next().ok_or("unterminated attribute")?;
+            if quote != '"' && quote != '\'' {
+                return Err(format!("unquoted attribute {key} in <{name}>"));
+            }
+            let close = rest[1..]
+                .find(quote)
+                .ok_or("unterminated attribute value")?;
+            let value = &rest[1..1 + close];
+            check_entities(value)?;
+            if attributes.insert(key.clone(), value.to_string()).is_some() {
+                return Err(format!("duplicate attribute {key} in <{name}>"));
+            }
+            s = &rest[close + 2..];
+        }
+        if stack.is_empty() {
+            roots += 1;
+        }
+        if !self_closing {
+            stack.push(name.clone());
+        }
+        elements.push(Element { name, attributes });
+    }
+    if !stack.is_empty() {
+        return Err(format!("unclosed elements {stack:?}"));
+    }
+    if roots != 1 {
+        return Err(format!("{roots} root elements"));
+    }
+    Ok(elements)
+}
+
+#[test]
+fn plot_is_well_formed_svg_with_front_knee_and_baseline() {
+    let p = load("micro-gear.toml");
+    let s = study(&p);
+    let front = pareto(
+        &s,
+        &spec(AdhesionMeasure::PullOffForce, 7, ParetoDirection::High),
+        &Silent,
+    )
+    .unwrap();
+    let svg = report::svg(&p.name, &front);
+    let elements = parse_xml(&svg).expect("well-formed XML");
+    assert_eq!(elements[0].name, "svg");
+    let count = |name: &str| elements.iter().filter(|e| e.name == name).count();
+    assert!(count("polyline") >= 2, "curve and front lines");
+    assert!(count("circle") >= 5, "front markers");
+    let series: Vec<&str> = elements
+        .iter()
+        .filter(|e| {
+            e.name == "g" && e.attributes.get("class").map(String::as_str) == Some("series")
+        })
+        .filter_map(|e| e.attributes.get("data-name").map(String::as_str))
+        .collect();
+    assert!(
+        series.iter().any(|s| s.starts_with("Pareto front")),
+        "{series:?}"
+    );
+    assert!(
+        series.contains(&"knee") && series.contains(&"baseline design"),
+        "{series:?}"
+    );
+    assert!(svg.contains("pull-off force (N)") && svg.contains("wear rate (m³/m)"));
+    assert!(svg.contains("<title>"));
+    // Both axes span decades here: decade ticks.
+    assert!(
+        svg.contains(">1e-5</text>") || svg.contains(">0.0001</text>"),
+        "log x axis"
+    );
+}
+
+#[test]
+fn cli_streams_csv_and_json_and_writes_the_plot() {
+    let dir = std::env::temp_dir().join(format!("wearopt-pareto-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let plot = dir.join("front.svg");
+    let out = wearopt()
+        .args(["pareto", problem_path("micro-gear.toml").to_str().unwrap()])
+        .args([
+            "--points",
+            "5",
+            "--format",
+            "csv",
+            "--plot",
+            plot.to_str().unwrap(),
+        ])
+        .env("CI", "true")
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let csv = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(csv.lines().count(), 6, "{csv}");
+    assert!(csv.starts_with("index,target,adhesion,"));
+    assert!(parse_xml(&std::fs::read_to_string(&plot).unwrap()).is_ok());
+
+    let out = wearopt()
+        .args(["pareto", problem_path("micro-gear.toml").to_str().unwrap()])
+        .args(["--points", "3", "--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    assert_eq!(v["status"], "no_trade_off");
+    assert_eq!(v["points"].as_array().unwrap().len(), 3);
+    assert_eq!(v["knee"], 0);
+
+    let out = wearopt()
+        .args(["pareto", problem_path("micro-gear.toml").to_str().unwrap()])
+        .args(["--points", "3"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("no trade-off: the least-wear design is also the least-adhesion design"));
+    assert!(text.contains("plasticity_index ≤ 1"), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn cli_refuses_a_file_without_pareto_and_bad_points() {
+    let file = problem_path("micro-gear-study.toml");
+    let out = wearopt()
+        .args(["pareto", file.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("micro-gear-study.toml") && err.contains("[pareto]"),
+        "{err}"
+    );
+    assert!(err.contains("adhesion = \"pull_off_force\""), "{err}");
+
+    for bad in ["1", "201"] {
+        let out = wearopt()
+            .args([
+                "pareto",
+                problem_path("micro-gear.toml").to_str().unwrap(),
+                "--points",
+                bad,
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "--points {bad}");
+        assert!(String::from_utf8(out.stderr).unwrap().contains("--points"));
+    }
+    let out = wearopt()
+        .args(["pareto", "no/such/file.toml"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
