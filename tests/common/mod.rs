@@ -1,0 +1,137 @@
+//! A minimal XML well-formedness checker for the SVG tests (no dependency):
+//! balanced tags, one root, quoted unique attributes, known entities.
+
+use std::collections::HashMap;
+
+/// One start tag: name and attributes.
+#[derive(Debug)]
+pub struct Element {
+    pub name: String,
+    pub attributes: HashMap<String, String>,
+}
+
+/// Checks entity references in text or an attribute value.
+fn check_entities(s: &str) -> Result<(), String> {
+    let mut rest = s;
+    while let Some(i) = rest.find('&') {
+        let tail = &rest[i + 1..];
+        let end = tail
+            .find(';')
+            .ok_or_else(|| format!("unterminated entity in {s:?}"))?;
+        let name = &tail[..end];
+        let ok = matches!(name, "amp" | "lt" | "gt" | "quot" | "apos")
+            || (name.starts_with('#') && name.len() > 1);
+        if !ok {
+            return Err(format!("unknown entity &{name}; in {s:?}"));
+        }
+        rest = &tail[end + 1..];
+    }
+    if s.contains('<') {
+        return Err(format!("raw '<' in {s:?}"));
+    }
+    Ok(())
+}
+
+/// A minimal XML well-formedness check for the SVG we write (declaration,
+/// elements, quoted attributes, entities, no comments or CDATA): every tag
+/// closed in order, one root. Returns the start tags in document order.
+pub fn parse_xml(doc: &str) -> Result<Vec<Element>, String> {
+    let mut s = doc;
+    if let Some(rest) = s.strip_prefix("<?xml") {
+        let end = rest.find("?>").ok_or("unterminated XML declaration")?;
+        s = &rest[end + 2..];
+    }
+    let mut stack: Vec<String> = Vec::new();
+    let mut elements = Vec::new();
+    let mut roots = 0;
+    loop {
+        let Some(lt) = s.find('<') else {
+            check_entities(s)?;
+            if !s.trim().is_empty() {
+                return Err(format!("text after the root: {s:?}"));
+            }
+            break;
+        };
+        let text = &s[..lt];
+        check_entities(text)?;
+        if text.contains('>') {
+            return Err(format!("stray '>' in text {text:?}"));
+        }
+        if stack.is_empty() && !text.trim().is_empty() {
+            return Err(format!("text outside the root: {text:?}"));
+        }
+        s = &s[lt + 1..];
+        if let Some(rest) = s.strip_prefix('/') {
+            let gt = rest.find('>').ok_or("unterminated end tag")?;
+            let name = rest[..gt].trim();
+            match stack.pop() {
+                Some(open) if open == name => {}
+                other => return Err(format!("</{name}> closes {other:?}")),
+            }
+            s = &rest[gt + 1..];
+            continue;
+        }
+        let name_end = s
+            .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
+            .ok_or("unterminated start tag")?;
+        let name = s[..name_end].to_string();
+        if name.is_empty()
+            || !name
+                .chars()
+                .all(|c| c.is_alphanumeric() || "-_:.".contains(c))
+        {
+            return Err(format!("bad element name {name:?}"));
+        }
+        s = &s[name_end..];
+        let mut attributes = HashMap::new();
+        let self_closing;
+        loop {
+            s = s.trim_start();
+            if let Some(rest) = s.strip_prefix("/>") {
+                self_closing = true;
+                s = rest;
+                break;
+            }
+            if let Some(rest) = s.strip_prefix('>') {
+                self_closing = false;
+                s = rest;
+                break;
+            }
+            let eq = s
+                .find('=')
+                .ok_or_else(|| format!("attribute without value in <{name}>"))?;
+            let key = s[..eq].trim().to_string();
+            if key.is_empty() || key.contains(char::is_whitespace) {
+                return Err(format!("bad attribute name {key:?} in <{name}>"));
+            }
+            let rest = &s[eq + 1..];
+            let quote = rest.chars().next().ok_or("unterminated attribute")?;
+            if quote != '"' && quote != '\'' {
+                return Err(format!("unquoted attribute {key} in <{name}>"));
+            }
+            let close = rest[1..]
+                .find(quote)
+                .ok_or("unterminated attribute value")?;
+            let value = &rest[1..1 + close];
+            check_entities(value)?;
+            if attributes.insert(key.clone(), value.to_string()).is_some() {
+                return Err(format!("duplicate attribute {key} in <{name}>"));
+            }
+            s = &rest[close + 2..];
+        }
+        if stack.is_empty() {
+            roots += 1;
+        }
+        if !self_closing {
+            stack.push(name.clone());
+        }
+        elements.push(Element { name, attributes });
+    }
+    if !stack.is_empty() {
+        return Err(format!("unclosed elements {stack:?}"));
+    }
+    if roots != 1 {
+        return Err(format!("{roots} root elements"));
+    }
+    Ok(elements)
+}
