@@ -91,9 +91,12 @@ pub fn quantity_value(
 fn ln_quantity(q: ConstraintQuantity, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
     let ln10 = std::f64::consts::LN_10;
     match q {
+        // Not clamped: a pull-off of 10^-8000 N still has a slope in ln, which
+        // lets a start there find the designs whose pull-off is meaningful.
         ConstraintQuantity::PullOffForce => ev
             .log10_pull_off_force
-            .map_or(LN_FLOOR, |l| (l * ln10).clamp(LN_FLOOR, LN_CEIL)),
+            .filter(|l| l.is_finite())
+            .map_or(LN_FLOOR, |l| l * ln10),
         ConstraintQuantity::WearRate => (ev.log10_wear_rate * ln10).clamp(LN_FLOOR, LN_CEIL),
         ConstraintQuantity::RealAreaFraction => {
             (ev.log10_real_area * ln10 - scene.nominal_area.ln()).clamp(LN_FLOOR, LN_CEIL)
@@ -116,7 +119,12 @@ pub fn ln_objective(o: Objective, ev: &Evaluation, scene: &crate::model::Scene) 
                 }
         }
         Objective::RealArea => ev.log10_real_area * ln10,
-        Objective::PullOffForce => ev.log10_pull_off_force.map_or(LN_FLOOR, |l| l * ln10),
+        Objective::PullOffForce => {
+            return ev
+                .log10_pull_off_force
+                .filter(|l| l.is_finite())
+                .map_or(LN_FLOOR, |l| l * ln10)
+        }
     };
     if v.is_nan() {
         LN_CEIL
