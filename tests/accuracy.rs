@@ -210,7 +210,7 @@ fn quadrature_settings_are_valid_and_include_the_default() {
     }
     assert_eq!(
         accuracy::setting_label(&Quadrature::default()),
-        "order=20;step=6;cut=46"
+        "order=20;step=12;cut=46"
     );
     assert!(accuracy::step_rules().contains(&StepRule::DEFAULT));
 }

@@ -30,14 +30,15 @@ pub struct Quadrature {
 }
 
 impl Default for Quadrature {
-    /// 20 points per panel, panels of log-weight change ≤ 6, cut at e^{-46}.
-    /// Against order 32 with step 2.5 and cut 60 over θ ∈ [1e-3, 1e8],
-    /// λ ∈ [1e-6, 1e6], h ∈ [-4, 60] the worst difference is 4e-14 relative
-    /// to |elastic| + |plastic| (order 16 reaches only 7e-11 where c_d is small).
+    /// 20 points per panel (graded down on far panels), panels of log-weight
+    /// change ≤ 12, cut at e^{-46}. `wearopt accuracy` measured it against an
+    /// independent adaptive Gauss–Kronrod reference over 1123 points of θ ∈
+    /// [1e-3, 1e8], λ ∈ [1e-6, 1e6], h ∈ [-4, 60] and the limits: worst 2.4e-14
+    /// relative to |elastic| + |plastic|, as accurate as step 6 and 1.7× faster.
     fn default() -> Self {
         Quadrature {
             order: 20,
-            log_weight_step: 6.0,
+            log_weight_step: 12.0,
             log_weight_cut: 46.0,
         }
     }
