@@ -244,8 +244,13 @@ fn load_continuous_as_critical_interference_moves(
         left.load_elastic + left.load_plastic,
         right.load_elastic + right.load_plastic,
     );
+    // The elastic integrand runs from p_e(0) = -c_a c_d/3 to positive loads, so
+    // the integral can cancel to far below the integrand's size: measure against
+    // |p_e(0)| times the weight's mass too (found by the million-case run:
+    // θ = 4.3, λ = 1 has P̄(0) = -1.1e-5 from parts of order 1).
+    let adhesive_scale = c.c_a * c.c_d / 3.0 * left.contacts;
     prop_assert!(
-        close(ll, lr, parts(&left), 1e-13),
+        close(ll, lr, parts(&left).max(adhesive_scale), 1e-13),
         "{what}: P̄ jumps across h = 0: {ll} → {lr}"
     );
     Ok(())
@@ -360,6 +365,12 @@ fn scene_outputs_sane(scene: &Scene) -> Result<(), TestCaseError> {
         "not_converged for {scene:?}: {:?}",
         ev.warnings
     );
+    // Beyond |P̄| = 1e12 the model has no contact to describe: an honest status.
+    if ev.status == Status::OutOfRange {
+        prop_assert!(ev.nondimensional_load.abs() > wearopt::model::separation::MAX_LOAD);
+        prop_assert!(ev.separation.is_none() && ev.wear_rate == 0.0 && !ev.warnings.is_empty());
+        return Ok(());
+    }
     let no_adhesion = scene.work_of_adhesion == 0.0;
     let no_plasticity = scene.hardness.is_infinite();
     // Always finite.
@@ -461,7 +472,7 @@ fn scene_outputs_sane(scene: &Scene) -> Result<(), TestCaseError> {
                 "a compressive load must find contact: {scene:?}"
             );
         }
-        Status::NotConverged => unreachable!(),
+        Status::NotConverged | Status::OutOfRange => unreachable!(),
     }
     // The JSON an `eval` writes is valid.
     let json = serde_json::to_string(&ev);

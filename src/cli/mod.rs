@@ -183,7 +183,7 @@ fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
     print!("{out}");
     Ok(match evaluation.status {
         Status::Ok | Status::Separated => ExitCode::SUCCESS,
-        Status::NotConverged => ExitCode::from(1),
+        Status::NotConverged | Status::OutOfRange => ExitCode::from(1),
     })
 }
 

@@ -54,6 +54,10 @@ pub enum Status {
     Separated,
     /// The separation search did not converge (reported, never hidden).
     NotConverged,
+    /// The load is beyond what the model describes (|P̄| above 1e12: the mean
+    /// planes would interpenetrate by more than 1e8 σ), e.g. a newton on a
+    /// nominal area holding less than one asperity.
+    OutOfRange,
 }
 
 impl Status {
@@ -63,6 +67,7 @@ impl Status {
             Status::Ok => "ok",
             Status::Separated => "separated",
             Status::NotConverged => "not_converged",
+            Status::OutOfRange => "out_of_range",
         }
     }
 }
@@ -320,7 +325,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
                     "the load is {target:.3e} in model units (W over K N R^1/2 σ^3/2 A_n / √(2π)), beyond the {:.0e} the model can describe: check the load, nominal area and roughness",
                     super::separation::MAX_LOAD
                 ));
-                (Status::NotConverged, None)
+                (Status::OutOfRange, None)
             }
         }
     };
