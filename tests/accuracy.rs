@@ -11,9 +11,11 @@
 //! * [`DEFAULT_TOLERANCE`] 1e-13: what README claims of the default quadrature
 //!   (4e-14 against a finer rule), with room for the reference's own error.
 
-use std::collections::HashMap;
-use std::path::PathBuf;
+mod common;
 
+use std::collections::HashMap;
+
+use common::{num, table};
 use wearopt::accuracy::finite_difference::{self, StepRule};
 use wearopt::accuracy::reference::ReferenceModel;
 use wearopt::accuracy::{self, Quantity, Row, WorkPrecision};
@@ -21,38 +23,6 @@ use wearopt::model::{Coefficients, Model, Quadrature, SensitivityParameter};
 
 const REFERENCE_TOLERANCE: f64 = 2e-15;
 const DEFAULT_TOLERANCE: f64 = 1e-13;
-
-fn data_dir() -> PathBuf {
-    std::env::var_os("WEAROPT_REFERENCE_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")))
-}
-
-fn table(name: &str) -> Vec<HashMap<String, String>> {
-    let text = std::fs::read_to_string(data_dir().join(name)).expect("reference table present");
-    let mut lines = text
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty());
-    let header: Vec<String> = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_string)
-        .collect();
-    lines
-        .map(|l| {
-            header
-                .iter()
-                .cloned()
-                .zip(l.split(',').map(str::to_string))
-                .collect()
-        })
-        .collect()
-}
-
-fn num(s: &str) -> f64 {
-    s.parse().unwrap_or_else(|_| panic!("not a number: {s}"))
-}
 
 fn coefficients_of(row: &HashMap<String, String>) -> Coefficients {
     match row["case"].as_str() {

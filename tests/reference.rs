@@ -9,45 +9,12 @@
 //! max(|value|, |elastic part| + |plastic part|) for loads, since P̄ crosses zero
 //! where any method can only be accurate relative to the size of its parts.
 
-use std::path::PathBuf;
+mod common;
 
+use common::{num, table};
 use wearopt::model::{landscape, solve_separation, Coefficients, Model, SeparationOutcome};
 
 const TOLERANCE: f64 = 1e-12;
-
-fn data_dir() -> PathBuf {
-    std::env::var_os("WEAROPT_REFERENCE_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")))
-}
-
-/// Rows of a table as (column name → text) maps.
-fn table(name: &str) -> Vec<std::collections::HashMap<String, String>> {
-    let text = std::fs::read_to_string(data_dir().join(name)).expect("reference table present");
-    let mut lines = text
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty());
-    let header: Vec<String> = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_string)
-        .collect();
-    lines
-        .map(|l| {
-            header
-                .iter()
-                .cloned()
-                .zip(l.split(',').map(str::to_string))
-                .collect()
-        })
-        .collect()
-}
-
-fn num(s: &str) -> f64 {
-    // Rust parses "inf" and underflows "1e-26467" to 0, as wanted here.
-    s.parse().unwrap_or_else(|_| panic!("not a number: {s}"))
-}
 
 fn model_of(row: &std::collections::HashMap<String, String>) -> Model {
     let (theta, lambda) = (num(&row["theta"]), num(&row["lambda"]));

@@ -1,7 +1,45 @@
-//! A minimal XML well-formedness checker for the SVG tests (no dependency):
-//! balanced tags, one root, quoted unique attributes, known entities.
+//! Helpers shared by the integration tests: the reference-table reader and a
+//! minimal XML well-formedness checker for the SVGs (balanced tags, one root,
+//! quoted unique attributes, known entities). Each test crate uses a part.
+#![allow(dead_code)]
 
 use std::collections::HashMap;
+use std::path::PathBuf;
+
+/// Where the 40-digit reference tables live (`WEAROPT_REFERENCE_DIR` overrides).
+pub fn data_dir() -> PathBuf {
+    std::env::var_os("WEAROPT_REFERENCE_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")))
+}
+
+/// Rows of a reference table as (column name → text) maps; `#` lines are comments.
+pub fn table(name: &str) -> Vec<HashMap<String, String>> {
+    let text = std::fs::read_to_string(data_dir().join(name)).expect("reference table present");
+    let mut lines = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty());
+    let header: Vec<String> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    lines
+        .map(|l| {
+            header
+                .iter()
+                .cloned()
+                .zip(l.split(',').map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
+
+/// A table cell as f64: "inf" parses, and "1e-26467" underflows to 0, as wanted.
+pub fn num(s: &str) -> f64 {
+    s.parse().unwrap_or_else(|_| panic!("not a number: {s}"))
+}
 
 /// One start tag: name and attributes.
 #[derive(Debug)]
