@@ -391,102 +391,94 @@ impl Model {
     /// Breakpoints (ascending, in Δ) of the panels of the elastic integral over
     /// [0, Δc] ∩ {weight within e^{-cut} of its maximum there}. Returns their count.
     fn elastic_breakpoints(&self, h: f64, dc: f64, out: &mut [f64]) -> usize {
-        let q = &self.quadrature;
-        let step = q.log_weight_step;
-        let cut = q.log_weight_cut;
-        let mut n = 0;
-        let mut push = |x: f64, n: &mut usize| {
-            out[*n] = x;
-            *n += 1;
-        };
         if dc <= 0.0 {
             return 0;
         }
+        let q = &self.quadrature;
+        let walk = |at_level: &dyn Fn(f64) -> f64,
+                    beyond: &dyn Fn(f64) -> bool,
+                    limit: f64,
+                    out: &mut [f64]| {
+            walk_levels(
+                q.log_weight_step,
+                q.log_weight_cut,
+                at_level,
+                beyond,
+                limit,
+                out,
+            )
+        };
         if h >= 0.0 {
             // q(Δ) = Δ(h + Δ/2), rising from 0 at Δ = 0.
-            push(0.0, &mut n);
-            let mut level = 0.0;
-            loop {
-                level = (level + step).min(cut);
-                let d = 2.0 * level / (h + (h * h + 2.0 * level).sqrt());
-                if d >= dc {
-                    push(dc, &mut n);
-                    break;
-                }
-                push(d, &mut n);
-                if level >= cut {
-                    break;
-                }
-            }
+            out[0] = 0.0;
+            1 + walk(
+                &|level| 2.0 * level / (h + (h * h + 2.0 * level).sqrt()),
+                &|d| d >= dc,
+                dc,
+                &mut out[1..],
+            )
         } else if h + dc >= 0.0 {
             // The peak Δ = -h lies inside [0, Δc]: panels on both sides.
             let peak = -h;
-            let mut left = [0.0f64; Quadrature::MAX_PANELS / 2 + 1];
-            let mut nl = 0;
-            let mut level = 0.0;
-            loop {
-                level = (level + step).min(cut);
-                let d = peak - (2.0 * level).sqrt();
-                if d <= 0.0 {
-                    left[nl] = 0.0;
-                    nl += 1;
-                    break;
-                }
-                left[nl] = d;
-                nl += 1;
-                if level >= cut {
-                    break;
-                }
+            let nl = walk(
+                &|level| peak - (2.0 * level).sqrt(),
+                &|d| d <= 0.0,
+                0.0,
+                out,
+            );
+            out[..nl].reverse();
+            let mut n = nl;
+            if n == 0 || out[n - 1] != peak {
+                out[n] = peak;
+                n += 1;
             }
-            for i in (0..nl).rev() {
-                push(left[i], &mut n);
-            }
-            push(peak, &mut n);
-            let mut level = 0.0;
-            loop {
-                level = (level + step).min(cut);
-                let d = peak + (2.0 * level).sqrt();
-                if d >= dc {
-                    push(dc, &mut n);
-                    break;
-                }
-                push(d, &mut n);
-                if level >= cut {
-                    break;
-                }
-            }
-            if n >= 2 && out[0] == out[1] {
-                // peak at Δ = 0 exactly: drop the empty panel.
-                out.copy_within(1..n, 0);
-                n -= 1;
-            }
+            n + walk(
+                &|level| peak + (2.0 * level).sqrt(),
+                &|d| d >= dc,
+                dc,
+                &mut out[n..],
+            )
         } else {
             // u_c < 0: the weight rises towards Δc; panels leftwards from Δc.
             let u_c = h + dc;
-            let mut right = [0.0f64; Quadrature::MAX_PANELS / 2 + 1];
-            let mut nr = 0;
-            right[nr] = dc;
-            nr += 1;
-            let mut level = 0.0;
-            loop {
-                level = (level + step).min(cut);
-                let d = -(u_c * u_c + 2.0 * level).sqrt() - h;
-                if d <= 0.0 {
-                    right[nr] = 0.0;
-                    nr += 1;
-                    break;
-                }
-                right[nr] = d;
-                nr += 1;
-                if level >= cut {
-                    break;
-                }
-            }
-            for i in (0..nr).rev() {
-                push(right[i], &mut n);
-            }
+            out[0] = dc;
+            let n = 1 + walk(
+                &|level| -(u_c * u_c + 2.0 * level).sqrt() - h,
+                &|d| d <= 0.0,
+                0.0,
+                &mut out[1..],
+            );
+            out[..n].reverse();
+            n
         }
-        n
+    }
+}
+
+/// Writes the Δ at which the log-weight has risen by `step`, 2·`step`, … (up to
+/// `cut`) above its value where the walk starts — `at_level(level)` gives that Δ —
+/// stopping with `limit` once a point lies `beyond` it. Returns the count.
+fn walk_levels(
+    step: f64,
+    cut: f64,
+    at_level: &dyn Fn(f64) -> f64,
+    beyond: &dyn Fn(f64) -> bool,
+    limit: f64,
+    out: &mut [f64],
+) -> usize {
+    let mut n = 0;
+    let mut level = 0.0;
+    loop {
+        level = f64::min(level + step, cut);
+        let d = at_level(level);
+        if beyond(d) {
+            out[n] = limit;
+            return n + 1;
+        }
+        out[n] = d;
+        n += 1;
+        if level >= cut {
+            return n;
+        }
     }
 }
 
