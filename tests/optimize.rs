@@ -387,3 +387,43 @@ fn bad_problems_end_with_clear_statuses() {
     assert_eq!(o.status, OptimizationStatus::TimeLimit);
     assert!(o.objective.is_finite() && o.objective > 0.0);
 }
+
+/// `youngs_modulus` moves both bodies when they share E; `youngs_modulus_a`
+/// and `youngs_modulus_b` move one body by name.
+#[test]
+fn modulus_design_variables_move_the_named_bodies() {
+    let p = load("micro-gear");
+    let var = |name| {
+        vec![DesignVariable {
+            name,
+            min: 100e9,
+            max: 400e9,
+        }]
+    };
+    let at = |name| DesignSpace::new(&p.scene, &var(name)).scene_at(&[1.0]);
+    let both = at(DesignQuantity::YoungsModulus);
+    assert_eq!(
+        (both.youngs_modulus_a, both.youngs_modulus_b),
+        (400e9, 400e9)
+    );
+    let a = at(DesignQuantity::YoungsModulusA);
+    assert_eq!(
+        (a.youngs_modulus_a, a.youngs_modulus_b),
+        (400e9, p.scene.youngs_modulus_b)
+    );
+    let b = at(DesignQuantity::YoungsModulusB);
+    assert_eq!(
+        (b.youngs_modulus_a, b.youngs_modulus_b),
+        (p.scene.youngs_modulus_a, 400e9)
+    );
+    // A stiffer counterface alone still lowers the wear (through E*).
+    let settings = OptimizerSettings {
+        starts: 1,
+        ..OptimizerSettings::default()
+    };
+    let design = var(DesignQuantity::YoungsModulusB);
+    let o = custom(&p.scene, &design, &[], &settings);
+    assert_eq!(o.status, OptimizationStatus::Optimal);
+    assert_eq!(o.design, vec![400e9]);
+    assert_eq!(o.scene.youngs_modulus_a, p.scene.youngs_modulus_a);
+}

@@ -548,3 +548,26 @@ fn garbage_never_panics() {
         assert!(msg.starts_with("g.toml"), "{text:?}: {msg}");
     }
 }
+
+#[test]
+fn modulus_for_both_and_for_one_body_cannot_be_mixed() {
+    let text = std::fs::read_to_string(crate_path("problems/micro-gear.toml"))
+        .unwrap()
+        .replace(
+            "[design]",
+            "[design]\nyoungs_modulus = { min = \"100 GPa\", max = \"300 GPa\" }\nyoungs_modulus_b = { min = \"100 GPa\", max = \"300 GPa\" }",
+        );
+    let err = problem::parse(&text, "mixed.toml").unwrap_err().to_string();
+    assert!(
+        err.contains("design.youngs_modulus") && err.contains("youngs_modulus_b"),
+        "{err}"
+    );
+    let text = std::fs::read_to_string(crate_path("problems/micro-gear.toml"))
+        .unwrap()
+        .replace(
+            "[design]",
+            "[design]\nyoungs_modulus_b = { min = \"100 GPa\", max = \"300 GPa\" }",
+        );
+    let p = problem::parse(&text, "b.toml").unwrap();
+    assert_eq!(p.study.design[0].name.as_str(), "youngs_modulus_b");
+}

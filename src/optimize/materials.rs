@@ -69,6 +69,7 @@ pub fn material_case(study: &Study, material: &'static Material) -> MaterialCase
     for v in study.design {
         match v.name {
             DesignQuantity::YoungsModulus
+            | DesignQuantity::YoungsModulusA
             | DesignQuantity::PoissonRatio
             | DesignQuantity::Hardness => {
                 notes.push(format!(

@@ -842,10 +842,22 @@ impl Reader<'_> {
         // [design]
         if let Some(design) = &raw.design {
             let d = design.get_ref();
+            if let (Some(both), true) = (
+                &d.youngs_modulus,
+                d.youngs_modulus_a.is_some() || d.youngs_modulus_b.is_some(),
+            ) {
+                return Err(self.invalid(
+                    "design.youngs_modulus",
+                    &both.span(),
+                    "give either youngs_modulus (body a, and b when they share it) or youngs_modulus_a / youngs_modulus_b (one body by name), not both",
+                ));
+            }
             let mut placed = Vec::new();
             for &q in DesignQuantity::ALL {
                 let bound = match q {
                     DesignQuantity::YoungsModulus => &d.youngs_modulus,
+                    DesignQuantity::YoungsModulusA => &d.youngs_modulus_a,
+                    DesignQuantity::YoungsModulusB => &d.youngs_modulus_b,
                     DesignQuantity::PoissonRatio => &d.poisson_ratio,
                     DesignQuantity::Hardness => &d.hardness,
                     DesignQuantity::WorkOfAdhesion => &d.work_of_adhesion,

@@ -165,6 +165,8 @@ pub struct RawBound {
 #[serde(deny_unknown_fields)]
 pub struct RawDesign {
     pub youngs_modulus: Option<Spanned<RawBound>>,
+    pub youngs_modulus_a: Option<Spanned<RawBound>>,
+    pub youngs_modulus_b: Option<Spanned<RawBound>>,
     pub poisson_ratio: Option<Spanned<RawBound>>,
     pub hardness: Option<Spanned<RawBound>>,
     pub work_of_adhesion: Option<Spanned<RawBound>>,

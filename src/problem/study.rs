@@ -57,8 +57,12 @@ macro_rules! named_enum {
 named_enum! {
     /// A scene quantity the optimiser may move (a key of `[design]`).
     DesignQuantity {
-        /// E1, Young's modulus of the rough body a (Pa).
+        /// Young's modulus (Pa) of body a, and of body b too when both share it.
         YoungsModulus => "youngs_modulus",
+        /// E1, Young's modulus of body a alone (Pa).
+        YoungsModulusA => "youngs_modulus_a",
+        /// E2, Young's modulus of the counterface b alone (Pa).
+        YoungsModulusB => "youngs_modulus_b",
         /// ν1, Poisson ratio of body a.
         PoissonRatio => "poisson_ratio",
         /// H, hardness of the softer body (Pa).
@@ -78,7 +82,10 @@ impl DesignQuantity {
     /// The dimension of its values and bounds.
     pub fn dimension(self) -> Dimension {
         match self {
-            DesignQuantity::YoungsModulus | DesignQuantity::Hardness => Dimension::Pressure,
+            DesignQuantity::YoungsModulus
+            | DesignQuantity::YoungsModulusA
+            | DesignQuantity::YoungsModulusB
+            | DesignQuantity::Hardness => Dimension::Pressure,
             DesignQuantity::PoissonRatio => Dimension::Dimensionless,
             DesignQuantity::WorkOfAdhesion => Dimension::SurfaceEnergy,
             DesignQuantity::Sigma | DesignQuantity::AsperityRadius => Dimension::Length,
@@ -89,7 +96,10 @@ impl DesignQuantity {
     /// The dotted key of the scene value it moves: `roughness.sigma`.
     pub fn scene_key(self) -> &'static str {
         match self {
-            DesignQuantity::YoungsModulus => "bodies.a.youngs_modulus",
+            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
+                "bodies.a.youngs_modulus"
+            }
+            DesignQuantity::YoungsModulusB => "bodies.b.youngs_modulus",
             DesignQuantity::PoissonRatio => "bodies.a.poisson_ratio",
             DesignQuantity::Hardness => "interface.hardness",
             DesignQuantity::WorkOfAdhesion => "interface.work_of_adhesion",
@@ -102,7 +112,9 @@ impl DesignQuantity {
     /// Example bounds as written in a file, for messages.
     pub fn example_bounds(self) -> &'static str {
         match self {
-            DesignQuantity::YoungsModulus => "{ min = \"50 GPa\", max = \"400 GPa\" }",
+            DesignQuantity::YoungsModulus
+            | DesignQuantity::YoungsModulusA
+            | DesignQuantity::YoungsModulusB => "{ min = \"50 GPa\", max = \"400 GPa\" }",
             DesignQuantity::PoissonRatio => "{ min = 0.1, max = 0.4 }",
             DesignQuantity::Hardness => "{ min = \"1 GPa\", max = \"40 GPa\" }",
             DesignQuantity::WorkOfAdhesion => "{ min = \"5 mJ/m^2\", max = \"0.2 J/m^2\" }",
@@ -115,7 +127,10 @@ impl DesignQuantity {
     /// Its current value in `scene` (SI).
     pub fn get(self, scene: &Scene) -> f64 {
         match self {
-            DesignQuantity::YoungsModulus => scene.youngs_modulus_a,
+            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
+                scene.youngs_modulus_a
+            }
+            DesignQuantity::YoungsModulusB => scene.youngs_modulus_b,
             DesignQuantity::PoissonRatio => scene.poisson_ratio_a,
             DesignQuantity::Hardness => scene.hardness,
             DesignQuantity::WorkOfAdhesion => scene.work_of_adhesion,
@@ -128,7 +143,10 @@ impl DesignQuantity {
     /// Sets its value in `scene` (SI). The caller keeps it within the variable's bounds.
     pub fn set(self, scene: &mut Scene, value: f64) {
         let field = match self {
-            DesignQuantity::YoungsModulus => &mut scene.youngs_modulus_a,
+            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
+                &mut scene.youngs_modulus_a
+            }
+            DesignQuantity::YoungsModulusB => &mut scene.youngs_modulus_b,
             DesignQuantity::PoissonRatio => &mut scene.poisson_ratio_a,
             DesignQuantity::Hardness => &mut scene.hardness,
             DesignQuantity::WorkOfAdhesion => &mut scene.work_of_adhesion,
