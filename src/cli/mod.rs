@@ -72,7 +72,8 @@ wearopt fit-adhesion data.csv --radius \"1 mm\" --fit-mu --format json"
     /// Search the design variables of a study for the least wear under its constraints.
     #[command(
         after_help = "Example:\n  wearopt optimize problems/micro-gear-study.toml\n  \
-wearopt optimize problems/switch-study.toml --format json --trace trace.csv\n\n\
+wearopt optimize problems/switch-study.toml --format json --trace trace.csv\n  \
+wearopt optimize problems/materials-study.toml   (ranks the [design] materials)\n\n\
 Exit code 1 when the study is infeasible."
     )]
     Optimize {
