@@ -55,12 +55,7 @@ pub fn run(
                 }
             }
         }
-        if path.as_os_str() == "-" {
-            print!("{csv}");
-        } else {
-            std::fs::write(&path, csv)
-                .map_err(|e| anyhow::anyhow!("writing the trace to {}: {e}", path.display()))?;
-        }
+        super::write_output(&path, &csv, "the trace")?;
     }
     let out = if json {
         report::materials::json(&problem.name, &ranking)

@@ -214,13 +214,7 @@ fn optimize(
     let optimum = wearopt::optimize::optimize(&study, verbose)
         .map_err(|e| usage(format!("{}: {e}", file.display())))?;
     if let Some(path) = trace {
-        let csv = report::optimize::trace_csv(&optimum);
-        if path.as_os_str() == "-" {
-            print!("{csv}");
-        } else {
-            std::fs::write(&path, csv)
-                .map_err(|e| anyhow::anyhow!("writing the trace to {}: {e}", path.display()))?;
-        }
+        write_output(&path, &report::optimize::trace_csv(&optimum), "the trace")?;
     }
     let out = match format {
         EvalFormat::Text => report::optimize::text(&problem.name, &optimum),
@@ -231,6 +225,17 @@ fn optimize(
         wearopt::optimize::OptimizationStatus::Infeasible => ExitCode::from(1),
         _ => ExitCode::SUCCESS,
     })
+}
+
+/// Writes `text` to `path`, or to stdout when the path is "-".
+pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Result<()> {
+    if path.as_os_str() == "-" {
+        print!("{text}");
+        Ok(())
+    } else {
+        std::fs::write(path, text)
+            .map_err(|e| anyhow::anyhow!("writing {what} to {}: {e}", path.display()))
+    }
 }
 
 fn usage(msg: String) -> anyhow::Error {

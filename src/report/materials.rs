@@ -7,15 +7,6 @@ use super::{sig, sig_exp};
 use crate::optimize::materials::{MaterialOutcome, MaterialRanking, MaterialResult};
 use crate::problem::units::{format_quantity, Dimension};
 
-fn objective_unit(name: &str) -> &'static str {
-    match name {
-        "wear_rate" => "m³/m",
-        "wear_volume" => "m³",
-        "real_area" => "m²",
-        _ => "N",
-    }
-}
-
 const METHOD: [&str; 4] = [
     "body a takes each material's E, ν and H (catalogue); body b is unchanged",
     "design variables on E, ν or H are dropped (the material fixes them)",
@@ -106,7 +97,7 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
     };
     line(format!("wearopt optimize — {name}: material ranking"));
     line(String::new());
-    let unit = objective_unit(ranking.objective_name);
+    let unit = super::objective_unit(ranking.objective_name);
     let show_objective = ranking.objective_name != "wear_rate";
     let mut header = format!(
         "{:>4}  {:<24} {:<16} {:>14}",

@@ -11,6 +11,24 @@ pub mod optimize;
 pub mod pareto;
 pub mod svg;
 
+/// The SI unit of an objective (by its problem-file name).
+pub fn objective_unit(name: &str) -> &'static str {
+    match name {
+        "wear_rate" => "m³/m",
+        "wear_volume" => "m³",
+        "real_area" => "m²",
+        _ => "N",
+    }
+}
+
+/// The dimension of a design variable (by its problem-file name).
+pub fn design_dimension(name: &str) -> crate::problem::units::Dimension {
+    use crate::problem::{DesignQuantity, Named};
+    DesignQuantity::from_name(name).map_or(crate::problem::units::Dimension::Dimensionless, |q| {
+        q.dimension()
+    })
+}
+
 /// The shortest round-trip form of an f64, in plain notation for moderate
 /// magnitudes and exponent notation otherwise (`inf`, `-inf`, `NaN` spelled so).
 pub fn number(x: f64) -> String {

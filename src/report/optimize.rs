@@ -5,12 +5,7 @@ use serde_json::{json, Map, Value};
 
 use super::{number, si, sig, sig_exp};
 use crate::optimize::{OptimizationStatus, Optimum};
-use crate::problem::units::{format_quantity, Dimension};
-use crate::problem::{DesignQuantity, Named};
-
-fn unit_of(name: &str) -> Dimension {
-    DesignQuantity::from_name(name).map_or(Dimension::Dimensionless, |q| q.dimension())
-}
+use crate::problem::units::format_quantity;
 
 fn design_object(names: &[&str], values: &[f64]) -> Value {
     let mut m = Map::new();
@@ -104,7 +99,7 @@ pub fn text(name: &str, o: &Optimum) -> String {
         "design", "optimum", "baseline"
     ));
     for ((n, v), b) in o.names.iter().zip(&o.design).zip(&o.baseline_design) {
-        let d = unit_of(n);
+        let d = super::design_dimension(n);
         line(format!(
             "{:<18} {:>16} {:>16}",
             n,
@@ -117,19 +112,14 @@ pub fn text(name: &str, o: &Optimum) -> String {
             "  bound active: {} at its {} ({})",
             b.variable,
             b.side,
-            format_quantity(b.value, unit_of(b.variable))
+            format_quantity(b.value, super::design_dimension(b.variable))
         ));
     }
     if !o.active_bounds.is_empty() && o.active_bounds.len() == o.names.len() {
         line("  every variable sits on a bound: the optimum is a corner of the design box".into());
     }
     line(String::new());
-    let unit = match o.objective_name {
-        "wear_rate" => "m³/m",
-        "wear_volume" => "m³",
-        "real_area" => "m²",
-        _ => "N",
-    };
+    let unit = super::objective_unit(o.objective_name);
     line(format!(
         "{}: {} at the optimum, {} at the baseline (improvement ×{})",
         o.objective_name,

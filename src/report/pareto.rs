@@ -10,8 +10,8 @@ use serde_json::{json, Map, Value};
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, si, sig, sig_exp};
 use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
-use crate::problem::units::{format_quantity, Dimension};
-use crate::problem::{AdhesionMeasure, Constraint, DesignQuantity, Named, ParetoDirection};
+use crate::problem::units::format_quantity;
+use crate::problem::{AdhesionMeasure, Constraint, ParetoDirection};
 
 /// What the head of a streamed report needs (known before the sweep runs).
 #[derive(Debug, Clone, Copy)]
@@ -38,19 +38,6 @@ impl<'a> Head<'a> {
             objective_name: front.objective_name,
             names: &front.names,
         }
-    }
-}
-
-fn unit_of_design(name: &str) -> Dimension {
-    DesignQuantity::from_name(name).map_or(Dimension::Dimensionless, |q| q.dimension())
-}
-
-fn objective_unit(name: &str) -> &'static str {
-    match name {
-        "wear_rate" => "m³/m",
-        "wear_volume" => "m³",
-        "real_area" => "m²",
-        _ => "N",
     }
 }
 
@@ -241,7 +228,7 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
         out.push('\n');
     };
     let m = front.measure;
-    let ounit = objective_unit(front.objective_name);
+    let ounit = super::objective_unit(front.objective_name);
     line(format!("wearopt pareto — {name}"));
     line(String::new());
     let good_end = match (front.direction, m) {
@@ -331,7 +318,11 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
             mark
         );
         for (n, v) in front.names.iter().zip(&p.design) {
-            let _ = write!(row, " {:>16}", format_quantity(*v, unit_of_design(n)));
+            let _ = write!(
+                row,
+                " {:>16}",
+                format_quantity(*v, super::design_dimension(n))
+            );
         }
         line(row);
     }
@@ -477,7 +468,7 @@ pub fn svg(name: &str, front: &Front) -> String {
         axis(xlabel, unit_of(m), spans_decades(&xs)),
         axis(
             ylabel,
-            objective_unit(front.objective_name),
+            super::objective_unit(front.objective_name),
             spans_decades(&ys),
         ),
     );
