@@ -1,4 +1,4 @@
-//! Calibration of the work of adhesion γ from friction measurements (MODEL.md §5, the
+//! Calibration of the work of adhesion γ from friction measurements (docs/model.md §5, the
 //! paper's eq. 14).
 //!
 //! A sphere of radius R slides on a flat under loads P_i and the friction F_i is
@@ -56,10 +56,10 @@ use crate::problem::units::{format_quantity, parse_quantity, Dimension};
 pub const CONFIDENCE_LEVEL: f64 = 0.95;
 
 /// μ when the user gives neither a value nor asks for a fit: the paper's 0.1
-/// (MODEL.md §5). Reports say that it was assumed.
+/// (docs/model.md §5). Reports say that it was assumed.
 pub const DEFAULT_FRICTION_COEFFICIENT: f64 = 0.1;
 
-/// The friction table of MODEL.md §5 (the paper's eq. 14 data, read from a plot):
+/// The friction table of docs/model.md §5 (the paper's eq. 14 data, read from a plot):
 /// steel ball R = 0.3 mm on silicon, μ = 0.1. Loads and friction in N.
 pub const ANDO_TABLE: [(f64, f64); 4] = [
     (20e-6, 6e-6),
@@ -206,7 +206,7 @@ impl FrictionData {
         Ok(data)
     }
 
-    /// Whether these are the paper's measurements of MODEL.md §5 (to 1e-9 relative).
+    /// Whether these are the paper's measurements of docs/model.md §5 (to 1e-9 relative).
     pub fn is_ando_table(&self) -> bool {
         self.points.len() == ANDO_TABLE.len()
             && self
@@ -354,10 +354,10 @@ pub struct Quoted {
 }
 
 impl Quoted {
-    /// The paper's claims about the MODEL.md §5 table: γ ≈ 0.1 N/m, 65 MPa.
+    /// The paper's claims about the docs/model.md §5 table: γ ≈ 0.1 N/m, 65 MPa.
     pub fn paper() -> Self {
         Quoted {
-            source: "the paper (MODEL.md §5)".into(),
+            source: "the paper (docs/model.md §5)".into(),
             work_of_adhesion: Some(ANDO_QUOTED_WORK_OF_ADHESION),
             bond_strength: Some(ANDO_QUOTED_BOND_STRENGTH),
         }
@@ -435,7 +435,7 @@ impl FitSettings {
     }
 }
 
-/// E = [(1−ν1²)/E1 + (1−ν2²)/E2]⁻¹ of two catalogue materials (MODEL.md §1).
+/// E = [(1−ν1²)/E1 + (1−ν2²)/E2]⁻¹ of two catalogue materials (docs/model.md §1).
 pub fn equivalent_modulus(a: &Material, b: &Material) -> f64 {
     1.0 / ((1.0 - a.poisson_ratio.powi(2)) / a.youngs_modulus
         + (1.0 - b.poisson_ratio.powi(2)) / b.youngs_modulus)

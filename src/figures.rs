@@ -7,7 +7,7 @@
 //!
 //! For one pair (θ, λ) the loads are `points` evenly spaced values of P̄ in
 //! `[load_min, load_max]` (compressive). Each load is solved for its separation h by
-//! MODEL.md §4's rule (the largest root: the state reached by loading from far
+//! docs/model.md §4's rule (the largest root: the state reached by loading from far
 //! apart, which is the falling branch of P̄(h) below the pull-off minimum), reusing
 //! one [`landscape`] per curve, and V̄ = Ā(h) (eq. 16). The load written is P̄(h)
 //! at the solved h, not the target, so every (P̄, V̄) pair is one model evaluation.
@@ -23,9 +23,9 @@ use serde::Serialize;
 
 use crate::model::{landscape, solve_separation_with, Coefficients, Model, SeparationOutcome};
 
-/// The elastic adhesion index at which adhesion stops mattering (Fuller–Tabor; MODEL.md §2).
+/// The elastic adhesion index at which adhesion stops mattering (Fuller–Tabor; docs/model.md §2).
 pub const THETA_TRANSITION: f64 = 10.0;
-/// The plastic adhesion index at which adhesion stops mattering (Johnson; MODEL.md §2).
+/// The plastic adhesion index at which adhesion stops mattering (Johnson; docs/model.md §2).
 pub const LAMBDA_TRANSITION: f64 = 0.125;
 
 /// The smallest coefficient of determination for which a curve counts as linear (claim 1).
@@ -266,7 +266,7 @@ pub struct Curve {
     pub fit: Option<LinearFit>,
     /// The pull-off load of the rough surface (most negative P̄; None without adhesion).
     pub pull_off_load: Option<f64>,
-    /// The plastic load jump J (MODEL.md §3); negative means P̄(h) may have a
+    /// The plastic load jump J (docs/model.md §3); negative means P̄(h) may have a
     /// compressive local maximum and minimum.
     pub plastic_jump: f64,
 }

@@ -2,7 +2,7 @@
 //!
 //! Data flows one way, from a problem file to a report:
 //!
-//! * [`model`]: the physics of the rough-surface adhesion model (shared `MODEL.md`):
+//! * [`model`]: the physics of the rough-surface adhesion model (`docs/model.md`):
 //!   coefficients, indices, one asperity, the load and area integrals, the
 //!   separation solve, Archard wear. No I/O.
 //! * [`optimize`]: the constrained design search (SQP on clarabel subproblems,

@@ -1,5 +1,5 @@
 //! The work–precision reference (`wearopt::accuracy::reference`, adaptive
-//! G7K15 on the direct form of MODEL.md §3) against the 40-digit mpmath table
+//! G7K15 on the direct form of docs/model.md §3) against the 40-digit mpmath table
 //! `tests/data/reference_points.csv` (scripts/reference.py; two independent
 //! methods agreeing to ≥ 25 digits), then the default quadrature against the
 //! reference, the finite-difference reference, and the CSV contract.

@@ -1,4 +1,4 @@
-//! Calibration of γ (and μ) from friction data, eq. 14 (MODEL.md §5): recovery of known
+//! Calibration of γ (and μ) from friction data, eq. 14 (docs/model.md §5): recovery of known
 //! parameters, the per-point closed form, the paper's table, interval coverage, the
 //! command line and every kind of bad data.
 
@@ -141,7 +141,7 @@ fn the_papers_table_gives_gamma_between_1_1e_3_and_4_7e_3() {
     }
     let lo = own.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = own.iter().copied().fold(0.0, f64::max);
-    // MODEL.md §5: 1.1e-3 to 4.7e-3 N/m (two significant digits).
+    // docs/model.md §5: 1.1e-3 to 4.7e-3 N/m (two significant digits).
     assert!((1.05e-3..1.15e-3).contains(&lo), "{lo}");
     assert!((4.65e-3..4.75e-3).contains(&hi), "{hi}");
     assert_eq!(

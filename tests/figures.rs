@@ -91,7 +91,7 @@ fn least_squares_matches_closed_forms() {
     );
 }
 
-/// Ā(h) = e^{-h²/2} - h √(π/2) erfc(h/√2) (MODEL.md §4), by puruspe's erfc.
+/// Ā(h) = e^{-h²/2} - h √(π/2) erfc(h/√2) (docs/model.md §4), by puruspe's erfc.
 fn area_closed_form(h: f64) -> f64 {
     (-h * h / 2.0).exp()
         - h * (std::f64::consts::PI / 2.0).sqrt() * puruspe::erfc(h / std::f64::consts::SQRT_2)
@@ -99,7 +99,7 @@ fn area_closed_form(h: f64) -> f64 {
 
 /// The loading-branch separation for a compressive target, found without the
 /// library's solver: step left from h = 6 (where P̄ is ≈ 0 < target) by 1/64
-/// until P̄ ≥ target, then bisect. This is the largest root, MODEL.md §4.
+/// until P̄ ≥ target, then bisect. This is the largest root, docs/model.md §4.
 fn loading_separation(model: &Model, target: f64) -> f64 {
     let load = |h: f64| model.at(h).load().value();
     let mut hi = 6.0;

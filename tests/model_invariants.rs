@@ -1,4 +1,4 @@
-//! Limits, invariants and the numbers MODEL.md quotes, each with its provenance.
+//! Limits, invariants and the numbers docs/model.md quotes, each with its provenance.
 
 use wearopt::model::{
     asperity, find_pull_off, landscape, solve_separation, Coefficients, Model, Quadrature,
@@ -34,7 +34,7 @@ fn no_adhesion_limit_is_greenwood_williamson() {
 }
 
 /// JKR: one asperity's pull-off is -(3/2)πγR, i.e. -c_a²/4 in model units, and
-/// its load at zero interference is -(4/3)πγR = -c_a c_d/3 (MODEL.md §3).
+/// its load at zero interference is -(4/3)πγR = -c_a c_d/3 (docs/model.md §3).
 #[test]
 fn jkr_single_asperity() {
     let m = Model::new(Coefficients::from_indices(7.0, 0.3));
@@ -51,7 +51,7 @@ fn jkr_single_asperity() {
     assert!((c.c_0 * theta / (2.0 * std::f64::consts::PI) - 1.0).abs() < 1e-14);
 }
 
-/// MODEL.md §4's quoted values (its own high-precision evaluation).
+/// docs/model.md §4's quoted values (its own high-precision evaluation).
 #[test]
 fn model_md_quoted_values() {
     let m = Model::new(Coefficients::from_indices(10.0, 1.0));

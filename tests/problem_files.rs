@@ -19,7 +19,7 @@ fn example(name: &str) -> problem::Problem {
     problem::load(&path).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
-/// Non-dimensional load P̄ = W √(2π) / (K N R^½ σ^{3/2} A_n), K = 4E/3 (MODEL.md §3).
+/// Non-dimensional load P̄ = W √(2π) / (K N R^½ σ^{3/2} A_n), K = 4E/3 (docs/model.md §3).
 fn nondimensional_load(s: &wearopt::model::Scene) -> f64 {
     let e = 1.0
         / ((1.0 - s.poisson_ratio_a.powi(2)) / s.youngs_modulus_a

@@ -144,7 +144,7 @@ fn outputs_finite_and_ordered(c: Coefficients, what: &str, h: f64) -> Result<(),
 }
 
 /// True when h lies on the falling piece that ends at the pull-off minimum (or,
-/// without adhesion, anywhere): the stable branch of MODEL.md §4.
+/// without adhesion, anywhere): the stable branch of docs/model.md §4.
 fn on_stable_branch(land: &Landscape, pull_off: Option<f64>, h: f64) -> bool {
     match pull_off {
         None => land.critical_points.is_empty(),
@@ -265,7 +265,7 @@ fn separation_round_trip(c: Coefficients, what: &str, h: f64) -> Result<(), Test
     }
     let land = landscape(&m);
     let po = find_pull_off(&m);
-    // h is the root MODEL.md §4 names when: compressive, P̄ < target for every larger
+    // h is the root docs/model.md §4 names when: compressive, P̄ < target for every larger
     // h (every critical point right of h lies below it) and h on a falling piece;
     // tensile, h on the falling piece into the pull-off minimum.
     let named = if target > 0.0 {

@@ -128,7 +128,7 @@ pub fn elasticity(
     Some(d1 + (d1 - d2) / 3.0)
 }
 
-/// The dimensional scales of a scene, recomputed from MODEL.md §1–3.
+/// The dimensional scales of a scene, recomputed from docs/model.md §1–3.
 struct Scales {
     coefficients: Coefficients,
     /// ln of the force one unit of P̄ stands for (N).
@@ -169,7 +169,7 @@ fn scales(scene: &Scene) -> Scales {
 /// ln(wear rate) of a scene by the reference: h solved on the reference P̄
 /// (Newton in ln P̄ for a compressive load, in P̄ otherwise, safeguarded by a
 /// bracket), started from the fast evaluator's separation, which only picks the
-/// branch MODEL.md §4 names; then k·A_n π N R σ Ā(h)/√(2π). None when the fast
+/// branch docs/model.md §4 names; then k·A_n π N R σ Ā(h)/√(2π). None when the fast
 /// evaluator finds no contact or the reference solve fails.
 pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
     let fast = evaluate(

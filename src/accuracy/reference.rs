@@ -1,7 +1,7 @@
 //! A high-precision reference for the non-dimensional integrals, independent of
 //! the fast path in [`crate::model::integrals`].
 //!
-//! It evaluates the *direct* form of MODEL.md §3:
+//! It evaluates the *direct* form of docs/model.md §3:
 //!
 //! ```text
 //! P̄(h) = ∫_0^{Δc} p_e(Δ1(Δ)) φ̄ dΔ + ∫_{Δc}^∞ (c_p Δ - c_0) φ̄ dΔ,   φ̄ = e^{-(h+Δ)²/2}

@@ -141,7 +141,7 @@ fn text_report(
     let _ = writeln!(
         o,
         "Figures 1-4 (paper §4): wear volume V̄ = Ā against load P̄ for P̄ = {} to {} \
-({} evenly spaced loads per curve; each solved for h on the loading branch, MODEL.md §4).",
+({} evenly spaced loads per curve; each solved for h on the loading branch, docs/model.md §4).",
         settings.load_min, settings.load_max, settings.points
     );
     let _ = writeln!(o, "\nFiles written:");

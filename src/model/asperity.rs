@@ -1,4 +1,4 @@
-//! One asperity (MODEL.md §3): the JKR elastic law in the loading branch, the
+//! One asperity (docs/model.md §3): the JKR elastic law in the loading branch, the
 //! plastic law beyond the transition, and the single-asperity pull-off.
 //! Lengths are over σ, loads over K R^{1/2} σ^{3/2}.
 
@@ -48,7 +48,7 @@ mod tests {
     fn jkr_values() {
         let m = Model::new(Coefficients::from_indices(2.0, 1.0));
         let c = m.coefficients;
-        // At Δ = 0: -c_a c_d / 3, the JKR -(4/3)πγR (MODEL.md §3).
+        // At Δ = 0: -c_a c_d / 3, the JKR -(4/3)πγR (docs/model.md §3).
         assert!((elastic_load(&m, 0.0) - c.load_at_touch()).abs() < 1e-14);
         // Δ1(0) = Δ0 = c_d^{4/3} (eq. 11, corrected).
         assert!((apparent_interference(&m, 0.0) / c.c_d.powf(4.0 / 3.0) - 1.0).abs() < 1e-14);

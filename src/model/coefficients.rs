@@ -1,4 +1,4 @@
-//! The coefficients of the non-dimensional model (MODEL.md §3) and the
+//! The coefficients of the non-dimensional model (docs/model.md §3) and the
 //! elastic–plastic transition of one asperity (eqs. 9 and 12, corrected).
 
 use std::f64::consts::PI;
@@ -207,7 +207,7 @@ mod tests {
 
     #[test]
     fn paper_decimals() {
-        // MODEL.md §3: c_a ≈ 4.342/√θ, c_d ≈ 2.894/√θ, c_h ≈ 3.651 λ^{1/4}/√θ, c_0 ≈ 6.283/θ.
+        // docs/model.md §3: c_a ≈ 4.342/√θ, c_d ≈ 2.894/√θ, c_h ≈ 3.651 λ^{1/4}/√θ, c_0 ≈ 6.283/θ.
         let c = Coefficients::from_indices(1.0, 1.0);
         assert!((c.c_a - 4.342).abs() < 5e-4);
         assert!((c.c_d - 2.894).abs() < 5e-4);
@@ -241,7 +241,7 @@ mod tests {
             );
             assert!(t > 0.0);
         }
-        // Without adhesion Δc = c_h² (MODEL.md §3).
+        // Without adhesion Δc = c_h² (docs/model.md §3).
         let tr = Coefficients::new(0.0, 3.0).transition();
         assert_eq!(tr.critical_interference, 9.0);
         // The jump equals p_p(Δc) - p_e(Δc) evaluated directly.
@@ -252,13 +252,13 @@ mod tests {
         let pp = c.c_p * dc - c.c_0;
         assert!(((pp - pe) - tr.jump).abs() < 1e-12 * pe.abs());
         assert!(tr.jump < 0.0);
-        // MODEL.md: Δc for θ = 0.1, λ = 1e-3 makes the local extrema sit near h ≈ -27.
+        // docs/model.md: Δc for θ = 0.1, λ = 1e-3 makes the local extrema sit near h ≈ -27.
         assert!((dc - 26.95).abs() < 0.05, "{dc}");
     }
 
     #[test]
     fn jump_sign_threshold() {
-        // J < 0 exactly when λ^{3/2}/θ < 0.009823 (MODEL.md §3).
+        // J < 0 exactly when λ^{3/2}/θ < 0.009823 (docs/model.md §3).
         for &theta in &[0.01, 1.0, 100.0] {
             let lambda_at = |r: f64| (r * theta).powf(2.0 / 3.0);
             let below = Coefficients::from_indices(theta, lambda_at(0.0098))

@@ -1,4 +1,4 @@
-//! The non-dimensional load and area integrals of MODEL.md §3 at one separation.
+//! The non-dimensional load and area integrals of docs/model.md §3 at one separation.
 //!
 //! ```text
 //! P̄(h)  = ∫_0^{Δc} p_e(Δ) φ̄ dΔ + ∫_{Δc}^∞ (c_p Δ - c_0) φ̄ dΔ      (eq. 8, corrected)

@@ -1,4 +1,4 @@
-//! The physics of shared MODEL.md: coefficients and indices, one asperity, the
+//! The physics of docs/model.md: coefficients and indices, one asperity, the
 //! load and area integrals, the separation solve, Archard wear, and the
 //! dimensional layer that ties them to a [`Scene`]. No I/O.
 

@@ -1,5 +1,5 @@
 //! The separation h for a given load, and the pull-off load of the rough surface
-//! (MODEL.md §4).
+//! (docs/model.md §4).
 //!
 //! Write the asperity load law as p(Δ) = p_c(Δ) + J·1[Δ > Δc], where p_c is
 //! continuous and increasing on the loading branch (p_c(0) = -c_a c_d/3 ≤ 0) and
@@ -32,7 +32,7 @@ pub const MAX_LOAD: f64 = 1e12;
 /// How the separation solve ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SeparationOutcome {
-    /// An equilibrium at separation h (over σ) on the branch MODEL.md §4 names.
+    /// An equilibrium at separation h (over σ) on the branch docs/model.md §4 names.
     Contact {
         /// h = d/σ.
         separation: f64,
@@ -354,7 +354,7 @@ pub fn find_pull_off(model: &Model) -> Option<PullOff> {
     pull_off_of(&landscape(model))
 }
 
-/// The separation h at which P̄(h) equals `target`, by MODEL.md §4's rule:
+/// The separation h at which P̄(h) equals `target`, by docs/model.md §4's rule:
 /// a compressive target takes the largest root; a tensile (or zero) one the
 /// largest root below the pull-off minimum; beyond the pull-off, `Separated`.
 pub fn solve_separation(model: &Model, target: f64) -> SeparationOutcome {

@@ -1,4 +1,4 @@
-//! Gaussian tail moments, the closed-form building blocks of MODEL.md §4.
+//! Gaussian tail moments, the closed-form building blocks of docs/model.md §4.
 //!
 //! `T_n(u) = ∫_0^∞ x^n e^{-(u+x)²/2} dx` for n = 0, 1. Each is returned as a
 //! mantissa scaled by `e^{κ(u)}`, κ(u) = max(u, 0)²/2, so the functions stay

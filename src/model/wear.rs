@@ -1,5 +1,5 @@
 //! The dimensional layer: from a [`Scene`] (SI) to indices, separation, real
-//! areas, contacts, pull-off and Archard wear (MODEL.md §1–3, eqs. 13, 15, 16).
+//! areas, contacts, pull-off and Archard wear (docs/model.md §1–3, eqs. 13, 15, 16).
 
 use std::f64::consts::PI;
 
@@ -72,7 +72,7 @@ impl Status {
     }
 }
 
-/// The four dimensionless indices of MODEL.md §2.
+/// The four dimensionless indices of docs/model.md §2.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Indices {
     /// θ = K σ^{3/2} R^{1/2} / (γ R) (Fuller–Tabor); ∞ without adhesion.

@@ -137,7 +137,7 @@ static MATERIALS: [Material; 10] = [
         work_of_adhesion: (0.1, 1.0),
         source: "handbook E 200 GPa, nu 0.31; electroplated films H 3-6 GPa (Hemker & Sharpe 2007)",
     },
-    // Steel, hardened bearing steel (AISI 52100, as the steel ball of MODEL.md §5).
+    // Steel, hardened bearing steel (AISI 52100, as the steel ball of docs/model.md §5).
     // E ≈ 210 GPa, ν ≈ 0.30 (handbook); HRC 60-64 ≈ 7-8 GPa Vickers, taken 8 GPa
     // (Petersen 1982 lists a Knoop 1500 kg/mm² ≈ 15 GPa for the hardest tool steel).
     // γ: oxidised, contaminated surface in air, 0.05-0.5 J/m².

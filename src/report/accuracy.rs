@@ -34,7 +34,7 @@ pub fn text(wp: &WorkPrecision) -> String {
     let _ = writeln!(out, "Work–precision of the evaluator");
     let _ = writeln!(
         out,
-        "reference: adaptive Gauss–Kronrod G7K15 on the direct form of MODEL.md §3 (Δ1(Δ) by root solve at each node), estimated error ≤ {:.1e} relative",
+        "reference: adaptive Gauss–Kronrod G7K15 on the direct form of docs/model.md §3 (Δ1(Δ) by root solve at each node), estimated error ≤ {:.1e} relative",
         wp.reference_error
     );
     let _ = writeln!(

@@ -13,7 +13,7 @@ pub fn json(c: &Calibration) -> String {
         obj.insert("confidence_level".into(), json!(CONFIDENCE_LEVEL));
         obj.insert(
             "model".into(),
-            json!("F = mu [P + 3 pi gamma R + sqrt(6 pi gamma R P + (3 pi gamma R)^2)] (paper eq. 14, MODEL.md §5)"),
+            json!("F = mu [P + 3 pi gamma R + sqrt(6 pi gamma R P + (3 pi gamma R)^2)] (paper eq. 14, docs/model.md §5)"),
         );
     }
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
