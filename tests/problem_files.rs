@@ -267,7 +267,7 @@ const BAD: &[(&str, Option<usize>, &[&str])] = &[
     (
         "zero-area",
         Some(4),
-        &["contact.nominal_area = 0: must be > 0 m^2 (a positive area)"],
+        &["contact.nominal_area = 0: must be > 0 m² (a positive area)"],
     ),
     (
         "negative-sigma",
@@ -306,7 +306,7 @@ const BAD: &[(&str, Option<usize>, &[&str])] = &[
     (
         "negative-work-of-adhesion",
         Some(14),
-        &["interface.work_of_adhesion = \"-0.1 J/m^2\": must be >= 0 J/m^2"],
+        &["interface.work_of_adhesion = \"-0.1 J/m^2\": must be >= 0 J/m²"],
     ),
     (
         "unknown-key",
@@ -402,7 +402,7 @@ const BAD: &[(&str, Option<usize>, &[&str])] = &[
     (
         "constraint-min-above-max",
         Some(33),
-        &["constraint[1].min = \"5 uN\": min must be < max for pull_off_force (min is 5 uN, max is 2 uN)"],
+        &["constraint[1].min = \"5 uN\": min must be < max for pull_off_force (min is 5 µN, max is 2 µN)"],
     ),
     (
         "constraint-without-bounds",

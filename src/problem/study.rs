@@ -225,7 +225,7 @@ impl ConstraintQuantity {
             ConstraintQuantity::PullOffForce => Dimension::Force,
             ConstraintQuantity::MeanRealPressure => Dimension::Pressure,
             ConstraintQuantity::Separation => Dimension::Length,
-            ConstraintQuantity::WearRate => Dimension::Area,
+            ConstraintQuantity::WearRate => Dimension::WearRate,
             _ => Dimension::Dimensionless,
         }
     }

@@ -36,6 +36,11 @@ pub enum Dimension {
     Length,
     /// m² (nominal area; also wear rate m³/m).
     Area,
+    /// m³ (wear volume).
+    Volume,
+    /// m³/m (wear rate: volume per sliding distance; dimensionally an area, so "µm²"
+    /// is read too).
+    WearRate,
     /// m⁻² (asperity density).
     InverseArea,
     /// J/m² = N/m (work of adhesion).
@@ -48,11 +53,13 @@ pub enum Dimension {
 
 impl Dimension {
     /// Every dimension, for looking up which one a unit belongs to.
-    pub const ALL: [Dimension; 8] = [
+    pub const ALL: [Dimension; 10] = [
         Dimension::Pressure,
         Dimension::Force,
         Dimension::Length,
         Dimension::Area,
+        Dimension::Volume,
+        Dimension::WearRate,
         Dimension::InverseArea,
         Dimension::SurfaceEnergy,
         Dimension::Dimensionless,
@@ -66,6 +73,8 @@ impl Dimension {
             Dimension::Force => "a force",
             Dimension::Length => "a length",
             Dimension::Area => "an area",
+            Dimension::Volume => "a volume",
+            Dimension::WearRate => "a wear rate",
             Dimension::InverseArea => "an areal density",
             Dimension::SurfaceEnergy => "a surface energy",
             Dimension::Dimensionless => "a plain number",
@@ -80,6 +89,8 @@ impl Dimension {
             Dimension::Force => "force",
             Dimension::Length => "length",
             Dimension::Area => "area",
+            Dimension::Volume => "volume",
+            Dimension::WearRate => "wear rate",
             Dimension::InverseArea => "areal density",
             Dimension::SurfaceEnergy => "surface energy",
             Dimension::Dimensionless => "dimensionless number",
@@ -87,18 +98,9 @@ impl Dimension {
         }
     }
 
-    /// The SI unit symbol used in messages ("" for dimensionless).
+    /// The SI unit symbol used in messages ("" for dimensionless), as reports write it.
     pub fn si_unit(self) -> &'static str {
-        match self {
-            Dimension::Pressure => "Pa",
-            Dimension::Force => "N",
-            Dimension::Length => "m",
-            Dimension::Area => "m^2",
-            Dimension::InverseArea => "m^-2",
-            Dimension::SurfaceEnergy => "J/m^2",
-            Dimension::Dimensionless => "",
-            Dimension::Time => "s",
-        }
+        crate::report::units::symbol(self)
     }
 
     /// What to write instead, with examples: `a force such as "10 uN", "2 mN" or a
@@ -112,6 +114,12 @@ impl Dimension {
             Dimension::Length => "a length such as \"5 nm\", \"1 um\" or a number in metres",
             Dimension::Area => {
                 "an area such as \"100 um^2\", \"1 mm^2\" or a number in square metres"
+            }
+            Dimension::Volume => {
+                "a volume such as \"50 um^3\", \"1e-18 m^3\" or a number in cubic metres"
+            }
+            Dimension::WearRate => {
+                "a wear rate such as \"50 um^3/m\", \"1e-16 m^3/m\" or a number in m^3/m"
             }
             Dimension::InverseArea => {
                 "an areal density such as \"10 um^-2\", \"1e13 m^-2\" or a number per square metre"
@@ -348,7 +356,9 @@ fn split_number(s: &str) -> Option<(Number<'_>, &str)> {
 }
 
 /// SI prefixes and their factors. `u`, `µ` (U+00B5) and `μ` (U+03BC) all mean micro.
-const PREFIXES: [(&str, i32); 10] = [
+const PREFIXES: [(&str, i32); 12] = [
+    ("a", -18),
+    ("f", -15),
     ("p", -12),
     ("n", -9),
     ("u", -6),
@@ -384,6 +394,7 @@ fn normalize(unit: &str) -> String {
     s = s.replace("**", "^");
     s = s.replace("\u{207b}\u{00b2}", "^-2"); // ⁻²
     s = s.replace('\u{00b2}', "^2"); // ²
+    s = s.replace('\u{00b3}', "^3"); // ³
     if let Some(rest) = s.strip_prefix("1/") {
         s = format!("/{rest}");
     }
@@ -426,6 +437,12 @@ fn factor_in(unit: &str, dimension: Dimension) -> Option<Factor> {
                 .or_else(|| (unit == "\u{00c5}" || unit == "\u{212b}").then_some(-10)),
         ),
         Dimension::Area => pow10(prefixed(unit, "m^2").map(|e| 2 * e)),
+        Dimension::Volume => pow10(prefixed(unit, "m^3").map(|e| 3 * e)),
+        Dimension::WearRate => pow10(
+            prefixed(unit, "m^3/m")
+                .map(|e| 3 * e)
+                .or_else(|| prefixed(unit, "m^2").map(|e| 2 * e)),
+        ),
         Dimension::InverseArea => pow10(prefixed(unit, "m^-2").map(|e| -2 * e)),
         Dimension::SurfaceEnergy => {
             pow10(prefixed(unit, "J/m^2").or_else(|| prefixed(unit, "N/m")))
@@ -468,103 +485,7 @@ fn unit_factor(unit: &str, expected: Dimension) -> Result<Factor, UnitError> {
     })
 }
 
-/// Formats an SI value with an engineering prefix: `format_quantity(1e-8, Length)` is
-/// `"10 nm"`. Infinity prints as `"inf"`. Used in notes and messages.
-pub fn format_quantity(value: f64, dimension: Dimension) -> String {
-    if value.is_infinite() {
-        return if value > 0.0 { "inf" } else { "-inf" }.to_string();
-    }
-    let unit = dimension.si_unit();
-    if unit.is_empty() {
-        return format_number(value);
-    }
-    // The power of the length a prefix is raised to.
-    let power = match dimension {
-        Dimension::Area => 2,
-        Dimension::InverseArea => -2,
-        _ => 1,
-    };
-    if value == 0.0 {
-        return format!("0 {unit}");
-    }
-    let candidates: [(&str, f64); 9] = [
-        ("p", 1e-12),
-        ("n", 1e-9),
-        ("u", 1e-6),
-        ("m", 1e-3),
-        ("", 1.0),
-        ("k", 1e3),
-        ("M", 1e6),
-        ("G", 1e9),
-        ("T", 1e12),
-    ];
-    // Lengths and their powers read best with m, um, nm; pressures with Pa, MPa, GPa.
-    let allowed: &[&str] = match dimension {
-        Dimension::Length | Dimension::Area | Dimension::InverseArea => &["n", "u", "m", ""],
-        Dimension::Time => &["n", "u", "m", ""],
-        Dimension::SurfaceEnergy => &["m", ""],
-        _ => &["p", "n", "u", "m", "", "k", "M", "G", "T"],
-    };
-    // The prefix giving the smallest scaled value that is still >= 1; failing that,
-    // the largest scaled value.
-    let mut best: Option<(&str, f64, f64)> = None;
-    for (p, f) in candidates {
-        if !allowed.contains(&p) {
-            continue;
-        }
-        let scaled = value.abs() / f.powi(power);
-        best = match best {
-            None => Some((p, f, scaled)),
-            Some(b) => {
-                let better = if scaled >= 1.0 {
-                    b.2 < 1.0 || scaled < b.2
-                } else {
-                    b.2 < 1.0 && scaled > b.2
-                };
-                if better {
-                    Some((p, f, scaled))
-                } else {
-                    Some(b)
-                }
-            }
-        };
-    }
-    let best = best.map_or(("", 1.0), |(p, f, _)| (p, f));
-    let scaled = value / best.1.powi(power);
-    let base = match dimension {
-        Dimension::Area => "m^2",
-        Dimension::InverseArea => "m^-2",
-        _ => unit,
-    };
-    format!("{} {}{}", format_number(scaled), best.0, base)
-}
-
-/// A short decimal form of a number: up to 4 significant digits, no trailing zeros.
-pub fn format_number(value: f64) -> String {
-    if value == 0.0 {
-        return "0".to_string();
-    }
-    if value.is_infinite() {
-        return if value > 0.0 { "inf" } else { "-inf" }.to_string();
-    }
-    let magnitude = value.abs().log10().floor();
-    if !(-4.0..6.0).contains(&magnitude) {
-        let s = format!("{value:.3e}");
-        // 1.000e-9 -> 1e-9
-        if let Some((mantissa, exp)) = s.split_once('e') {
-            let m = mantissa.trim_end_matches('0').trim_end_matches('.');
-            return format!("{m}e{exp}");
-        }
-        return s;
-    }
-    let decimals = (3.0 - magnitude).max(0.0) as usize;
-    let s = format!("{value:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    }
-}
+pub use crate::report::units::{format_number, format_quantity};
 
 #[cfg(test)]
 mod tests {
@@ -761,14 +682,7 @@ mod tests {
             err.to_string(),
             "unknown unit \"uQ\"; expected a force such as \"10 uN\", \"2 mN\" or a number in newtons"
         );
-        for text in [
-            "10 xN",
-            "10 GGPa",
-            "10 nm^3",
-            "10 um^-3",
-            "1 eV",
-            "3 furlongs",
-        ] {
+        for text in ["10 xN", "10 GGPa", "10 um^-3", "1 eV", "3 furlongs"] {
             assert!(
                 matches!(
                     parse_quantity(text, Dimension::Force),
@@ -777,6 +691,31 @@ mod tests {
                 "{text}"
             );
         }
+    }
+
+    #[test]
+    fn volumes_and_wear_rates() {
+        assert_eq!(q("57.02 µm³/m", Dimension::WearRate), 57.02e-18);
+        assert_eq!(q("57.02 um^3/m", Dimension::WearRate), 57.02e-18);
+        // m³/m is an area: µm² reads as a wear rate too.
+        assert_eq!(q("57.02 µm²", Dimension::WearRate), 57.02e-12);
+        assert_eq!(q("2 nm³", Dimension::Volume), 2e-27);
+        assert_eq!(q("570.2 fm²", Dimension::Area), 570.2e-30);
+        assert_eq!(q("3 aN", Dimension::Force), 3e-18);
+        assert!(matches!(
+            parse_quantity("10 nm^3", Dimension::Force),
+            Err(UnitError::WrongDimension {
+                found: Dimension::Volume,
+                ..
+            })
+        ));
+        assert!(matches!(
+            parse_quantity("1 um^3/m", Dimension::Area),
+            Err(UnitError::WrongDimension {
+                found: Dimension::WearRate,
+                ..
+            })
+        ));
     }
 
     #[test]
@@ -799,19 +738,5 @@ mod tests {
         // Junk after a number is an unknown unit, not silently ignored.
         assert!(parse_quantity("1.2.3 N", Dimension::Force).is_err());
         assert!(parse_quantity("1e N", Dimension::Force).is_err());
-    }
-
-    #[test]
-    fn formatting() {
-        assert_eq!(format_quantity(10e9, Dimension::Pressure), "10 GPa");
-        assert_eq!(format_quantity(1e-8, Dimension::Length), "10 nm");
-        assert_eq!(format_quantity(1e-10, Dimension::Area), "100 um^2");
-        assert_eq!(format_quantity(1e13, Dimension::InverseArea), "10 um^-2");
-        assert_eq!(format_quantity(0.1, Dimension::SurfaceEnergy), "100 mJ/m^2");
-        assert_eq!(format_quantity(f64::INFINITY, Dimension::Pressure), "inf");
-        assert_eq!(format_quantity(0.0, Dimension::Force), "0 N");
-        assert_eq!(format_quantity(-2e-6, Dimension::Force), "-2 uN");
-        assert_eq!(format_number(0.22), "0.22");
-        assert_eq!(format_number(1e-9), "1e-9");
     }
 }

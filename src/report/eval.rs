@@ -110,15 +110,15 @@ pub fn text(r: &EvalReport) -> String {
         }
     ));
     line(format!(
-        "  roughness σ = {}, asperity radius R = {}, density N = {} asperities/µm²",
+        "  roughness σ = {}, asperity radius R = {}, asperity density N = {}",
         si(sc.sigma, "m", 3),
         si(sc.asperity_radius, "m", 3),
-        sig_exp(sc.asperity_density * 1e-12, 3)
+        si(sc.asperity_density, "m⁻²", 3)
     ));
     line(format!(
-        "  load W = {} on nominal area {} µm², sliding {}, wear coefficient k = {}, wearing area: {}",
+        "  load W = {} on nominal area {}, sliding {}, wear coefficient k = {}, wearing area: {}",
         si(sc.load, "N", 3),
-        sig_exp(sc.nominal_area * 1e12, 4),
+        si(sc.nominal_area, "m²", 4),
         si(sc.sliding_distance, "m", 3),
         sig_exp(sc.wear_coefficient, 3),
         match sc.wear_area {

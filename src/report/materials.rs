@@ -3,7 +3,7 @@
 
 use serde_json::{json, Map, Value};
 
-use super::{sig, sig_exp};
+use super::sig;
 use crate::optimize::materials::{MaterialOutcome, MaterialRanking, MaterialResult};
 use crate::problem::units::{format_quantity, Dimension};
 
@@ -127,13 +127,12 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
             r.name(),
             r.status.as_str(),
             r.wear_rate()
-                .map_or("—".into(), |w| format!("{} m³/m", sig_exp(w, 4)))
+                .map_or("—".into(), |w| super::si(w, "m³/m", 4))
         );
         if show_objective {
             row.push_str(&format!(
                 " {:>14}",
-                r.objective()
-                    .map_or("—".into(), |o| format!("{} {unit}", sig_exp(o, 4)))
+                r.objective().map_or("—".into(), |o| super::si(o, unit, 4))
             ));
         }
         let active = r.active();
@@ -155,10 +154,10 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
         let runner = ranking.results.get(1).filter(|r| r.rank.is_some());
         line(String::new());
         line(format!(
-            "Least {}: {} ({} {unit}){}",
+            "Least {}: {} ({}){}",
             ranking.objective_name.replace('_', " "),
             best.name(),
-            sig_exp(best.objective().unwrap_or(f64::NAN), 4),
+            super::si(best.objective().unwrap_or(f64::NAN), unit, 4),
             runner.map_or(String::new(), |r| format!(
                 "; next {} with ×{} the wear rate",
                 r.name(),
