@@ -368,8 +368,8 @@ fn bad_data_is_refused_with_file_line_and_value() {
         &p,
         &[
             "calibrate-below.csv:3",
-            "friction = 9 uN",
-            "below μP = 11 uN",
+            "friction = 9 µN",
+            "below μP = 11 µN",
         ],
     );
     let p = data_file("unit", "load,friction\n20 uN,6 uN\n110 uQ,14 uN\n");
