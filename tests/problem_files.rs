@@ -189,6 +189,31 @@ fn limits_are_accepted_where_the_schema_allows_them() {
 }
 
 #[test]
+fn rigid_counterface_needs_no_poisson_ratio() {
+    let text = SCENE.replace(
+        "b = { youngs_modulus = \"inf\", poisson_ratio = 0.3 }",
+        "b = { youngs_modulus = \"inf\" }",
+    );
+    assert_ne!(text, SCENE);
+    let with = problem::parse(SCENE, "t.toml").unwrap().scene;
+    let without = problem::parse(&text, "t.toml").unwrap().scene;
+    assert!(without.youngs_modulus_b.is_infinite());
+    // ν of a rigid body never enters E: the evaluation is identical.
+    let options = wearopt::model::EvaluationOptions::default();
+    assert_eq!(
+        wearopt::model::evaluate(&with, &options).real_area,
+        wearopt::model::evaluate(&without, &options).real_area
+    );
+    // A finite modulus still needs its Poisson ratio.
+    let finite = SCENE.replace(
+        "b = { youngs_modulus = \"inf\", poisson_ratio = 0.3 }",
+        "b = { youngs_modulus = \"100 GPa\" }",
+    );
+    let err = problem::parse(&finite, "t.toml").unwrap_err().to_string();
+    assert!(err.contains("bodies.b.poisson_ratio"), "{err}");
+}
+
+#[test]
 fn units_in_every_spelling() {
     let text = SCENE
         .replace("load = 1e-5", "load = \"10µN\"")

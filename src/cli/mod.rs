@@ -102,14 +102,14 @@ wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json 
     )]
     Curve {
         /// Elastic adhesion index θ > 0 ("inf": no adhesion).
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         theta: f64,
         /// Plastic adhesion index λ > 0 ("inf": no plasticity).
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         lambda: f64,
         /// Hardness coefficient c_h = π R^{1/2} H / (K σ^{1/2}) > 0, used only with --theta inf
         /// (θ and λ are both infinite without adhesion, so c_h cannot come from them).
-        #[arg(long, default_value_t = f64::INFINITY)]
+        #[arg(long, default_value_t = f64::INFINITY, allow_hyphen_values = true)]
         hardness_coefficient: f64,
         /// First separation h = d/σ.
         #[arg(long, allow_hyphen_values = true)]
@@ -194,6 +194,12 @@ fn optimize(
     verbose: bool,
     trace: Option<PathBuf>,
 ) -> Result<ExitCode> {
+    if trace.as_deref().is_some_and(|p| p.as_os_str() == "-") && !matches!(format, EvalFormat::Text)
+    {
+        return Err(usage(
+            "--trace - would write the CSV trace to stdout, where the JSON report goes: give --trace a file name (--trace trace.csv), or use --format text".to_string(),
+        ));
+    }
     let problem = wearopt::problem::load(&file)?;
     if !problem.study.materials.is_empty() {
         return materials::run(

@@ -560,6 +560,8 @@ impl Reader<'_> {
                 nu
             }
             (None, Some(m)) => m.poisson_ratio,
+            // A rigid body has no compliance, so its Poisson ratio never enters E.
+            (None, None) if youngs_modulus.is_infinite() => 0.0,
             (None, None) => {
                 return Err(self.missing(&format!("{key}.poisson_ratio"), Some(&span), how))
             }
@@ -683,7 +685,7 @@ impl Problem {
             &bodies.get_ref().b,
             "bodies.b",
             Some(&bspan),
-            "the counterface, e.g. b = { material = \"polysilicon\" } or b = { youngs_modulus = \"inf\", poisson_ratio = 0.3 }",
+            "the counterface, e.g. b = { material = \"polysilicon\" } or b = { youngs_modulus = \"inf\" } (rigid)",
         )?;
         let body_a = r.body("bodies.a", a, false)?;
         let body_b = r.body("bodies.b", b, true)?;

@@ -70,6 +70,26 @@ pub fn text(wp: &WorkPrecision) -> String {
             "  {:<28} {:>10} {:>10} {:>12} {:>6}",
             "setting", "max err", "median err", "time/eval", "evals"
         );
+        // Where no setting changes the error (closed forms: the quadrature settings move
+        // only the elastic integral), one row says so instead of one per setting.
+        let same = rows.iter().all(|r| {
+            r.max_rel_error.to_bits() == rows[0].max_rel_error.to_bits()
+                && r.median_rel_error.to_bits() == rows[0].median_rel_error.to_bits()
+        });
+        if same && rows.len() > 1 {
+            let r = rows.iter().find(|r| r.is_default).unwrap_or(&rows[0]);
+            let _ = writeln!(
+                out,
+                "  {:<28} {:>10.2e} {:>10.2e} {:>12} {:>6}  (closed form: the same for all {} settings; time of the default)",
+                "closed form",
+                r.max_rel_error,
+                r.median_rel_error,
+                duration(r.time_per_eval_ns),
+                r.evaluations_per_value,
+                rows.len()
+            );
+            continue;
+        }
         for r in rows {
             let _ = writeln!(
                 out,
@@ -143,4 +163,53 @@ pub fn svg(wp: &WorkPrecision) -> String {
         );
     }
     plot.to_svg()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(quantity: Quantity, setting: &str, max: f64, is_default: bool) -> Row {
+        Row {
+            quantity,
+            setting: setting.to_string(),
+            max_rel_error: max,
+            median_rel_error: 1e-16,
+            time_per_eval_ns: 500.0,
+            is_default,
+            samples: 3,
+            evaluations_per_value: 1,
+        }
+    }
+
+    #[test]
+    fn closed_forms_are_said_once() {
+        let wp = WorkPrecision {
+            rows: vec![
+                row(Quantity::Load, "order=8", 1e-6, false),
+                row(Quantity::Load, "order=20", 1e-14, true),
+                row(Quantity::Area, "order=8", 1.4e-14, false),
+                row(Quantity::Area, "order=20", 1.4e-14, true),
+                row(Quantity::Area, "order=30", 1.4e-14, false),
+            ],
+            grid_points: 3,
+            wear_points: 0,
+            gradient_points: 0,
+            reference_error: 1e-15,
+            reference_gradient_error: 0.0,
+            scenes: vec![],
+        };
+        let t = text(&wp);
+        // The load differs by setting: a row each. The area is a closed form: one row.
+        assert_eq!(t.matches("order=").count(), 2, "{t}");
+        assert_eq!(t.matches("closed form (").count(), 0, "{t}");
+        assert_eq!(
+            t.matches("closed form: the same for all 3 settings")
+                .count(),
+            1,
+            "{t}"
+        );
+        // CSV keeps every row.
+        assert_eq!(csv(&wp).lines().count(), 6);
+    }
 }

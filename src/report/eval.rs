@@ -221,7 +221,7 @@ pub fn text(r: &EvalReport) -> String {
     if !r.sensitivities.is_empty() {
         line(String::new());
         line(
-            "Sensitivity of wear rate: elasticity d ln(wear) / d ln x (central differences)".into(),
+            "Sensitivity of wear rate: elasticity d ln(wear) / d ln x (central differences at δ = 1e-3 and 2e-3 in ln x, Richardson-extrapolated; ± its error estimate)".into(),
         );
         for s in r.sensitivities {
             let name = s.parameter.as_str();
