@@ -11,6 +11,7 @@ mod scene;
 pub mod sensitivity;
 pub mod separation;
 pub mod special;
+pub mod warnings;
 pub mod wear;
 
 pub use coefficients::{Coefficients, DomainError, Transition};
@@ -22,6 +23,7 @@ pub use separation::{
     find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_from,
     solve_separation_with, CriticalPoint, Landscape, PullOff, SeparationOutcome,
 };
+pub use warnings::{Note, ScalarInput, Warning};
 pub use wear::{
     evaluate, evaluate_from, Evaluation, EvaluationOptions, Indices, Regime, SearchHints, Status,
 };

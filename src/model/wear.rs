@@ -12,6 +12,7 @@ use super::separation::{
     landscape_from, pull_off_of, solve_separation_from, PullOff, SeparationOutcome,
 };
 use super::special::SQRT_TWO_PI;
+use super::warnings::{self, Note, Warning};
 use super::Coefficients;
 
 /// What an evaluation computes beyond the separation and areas.
@@ -103,10 +104,11 @@ pub struct Regime {
 pub struct Evaluation {
     /// ok, separated or not_converged.
     pub status: Status,
-    /// Conditions the designer must know (outside the model's assumptions, …).
-    pub warnings: Vec<String>,
-    /// Informational remarks (regime, underflowed values, …).
-    pub notes: Vec<String>,
+    /// Conditions the designer must know (outside the model's assumptions,
+    /// implausible inputs, …); the report words them.
+    pub warnings: Vec<Warning>,
+    /// Informational remarks (regime, underflowed values, …); the report words them.
+    pub notes: Vec<Note>,
     /// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹ (Pa).
     pub equivalent_modulus: f64,
     /// The indices θ, λ, ψ, φ0.
@@ -262,32 +264,25 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
     let count_scale = an * n / SQRT_TWO_PI;
     let target = scene.load / load_scale;
 
-    let mut warnings = Vec::new();
+    let mut warnings = warnings::scene_warnings(scene);
     let mut notes = Vec::new();
     if coeffs.has_adhesion() && idx.tabor_parameter < 3.0 {
-        warnings.push(format!(
-            "Tabor parameter φ0 = {:.3} < 3: the elastic asperities are outside the JKR regime the model assumes ({} regime)",
-            idx.tabor_parameter,
-            if idx.tabor_parameter < 0.3 { "DMT" } else { "JKR–DMT transition" }
-        ));
+        warnings.push(Warning::OutsideJkrRegime {
+            tabor_parameter: idx.tabor_parameter,
+        });
     }
     if reg.elastic_adhesion_matters {
-        notes.push(format!(
-            "elastic adhesion index θ = {:.4} ≤ 10: adhesion matters for elastic asperities",
-            idx.elastic_adhesion_index
-        ));
+        notes.push(Note::ElasticAdhesionMatters {
+            elastic_adhesion_index: idx.elastic_adhesion_index,
+        });
     }
     if reg.plastic_adhesion_matters {
-        notes.push(format!(
-            "plastic adhesion index λ = {:.4} ≤ 0.125: adhesion matters for plastic asperities",
-            idx.plastic_adhesion_index
-        ));
+        notes.push(Note::PlasticAdhesionMatters {
+            plastic_adhesion_index: idx.plastic_adhesion_index,
+        });
     }
     if model.transition.jump < 0.0 {
-        notes.push(
-            "the load drops when an asperity turns plastic (λ^{3/2}/θ < 0.0098): the load–separation curve can have several branches; the one reached by loading is used"
-                .to_string(),
-        );
+        notes.push(Note::LoadDropsAtTransition);
     }
 
     // The critical points of P̄(h): needed for the pull-off, for a tensile load,
@@ -316,25 +311,23 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         } => {
             evaluations += ev;
             if separation.is_finite() {
-                warnings.push(format!(
-                    "the separation search did not converge after {ev} evaluations; results are at the best estimate h = {separation:.6}"
-                ));
+                warnings.push(Warning::SeparationNotConverged {
+                    evaluations: ev,
+                    separation,
+                });
                 (Status::NotConverged, Some(separation))
             } else {
-                warnings.push(format!(
-                    "the load is {target:.3e} in model units (W over K N R^1/2 σ^3/2 A_n / √(2π)), beyond the {:.0e} the model can describe: check the load, nominal area and roughness",
-                    super::separation::MAX_LOAD
-                ));
+                warnings.push(Warning::LoadBeyondModel {
+                    nondimensional_load: target,
+                    limit: super::separation::MAX_LOAD,
+                });
                 (Status::OutOfRange, None)
             }
         }
     };
     if status == Status::Separated {
-        notes.push(if coeffs.has_adhesion() {
-            "the tensile load exceeds the pull-off force: the surfaces separate".to_string()
-        } else {
-            "without adhesion a load ≤ 0 cannot hold the surfaces in contact: they separate"
-                .to_string()
+        notes.push(Note::Separated {
+            adhesion: coeffs.has_adhesion(),
         });
     }
 
@@ -343,10 +336,9 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
             let force = p.load.negate().scale(load_scale);
             let value = force.value();
             if value == 0.0 && force.mantissa != 0.0 {
-                notes.push(format!(
-                    "the pull-off force is below the smallest double: 10^{:.1} N; reported as 0",
-                    force.log10_abs()
-                ));
+                notes.push(Note::PullOffUnderflow {
+                    log10_force: force.log10_abs(),
+                });
             }
             (
                 Some(value.max(0.0)),
@@ -372,12 +364,11 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
     let plastic_real_area = plastic_area.scale(area_scale).value();
     let wear_rate = wear_area_scaled.value();
     if at.is_some() && real_area == 0.0 && area.mantissa != 0.0 {
-        notes.push(format!(
-            "the real area is below the smallest double: 10^{:.1} m²; reported as 0",
-            area.scale(area_scale).log10_abs()
-        ));
+        notes.push(Note::RealAreaUnderflow {
+            log10_area: area.scale(area_scale).log10_abs(),
+        });
     }
-    Evaluation {
+    let evaluation = Evaluation {
         status,
         warnings,
         notes,
@@ -422,5 +413,49 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         wear_rate,
         log10_wear_rate: wear_area_scaled.log10_abs(),
         evaluations,
+    };
+    with_contact_checks(evaluation)
+}
+
+/// The checks that need the results: dense or too few contacts, a real area above the
+/// nominal one, non-finite results. The last two make the status `out_of_range`: no
+/// impossible or non-finite number comes with `ok`.
+fn with_contact_checks(mut ev: Evaluation) -> Evaluation {
+    if ev.status != Status::Ok {
+        return ev;
     }
+    let f = ev.real_area_fraction;
+    if f > 1.0 {
+        ev.warnings.push(Warning::RealAreaExceedsNominal {
+            real_area_fraction: f,
+        });
+        ev.status = Status::OutOfRange;
+    } else if f > warnings::DENSE_CONTACT_FRACTION {
+        ev.warnings.push(Warning::DenseContact {
+            real_area_fraction: f,
+        });
+    }
+    if ev.contact_count < warnings::MIN_CONTACTS {
+        ev.warnings.push(Warning::FewContacts {
+            contact_count: ev.contact_count,
+        });
+    }
+    let results = [
+        ("separation", ev.separation.unwrap_or(0.0)),
+        ("real_area", ev.real_area),
+        ("real_area_fraction", ev.real_area_fraction),
+        ("contact_count", ev.contact_count),
+        ("elastic_load", ev.elastic_load),
+        ("plastic_load", ev.plastic_load),
+        ("wear_rate", ev.wear_rate),
+        ("wear_volume", ev.wear_volume),
+        ("pull_off_force", ev.pull_off_force.unwrap_or(0.0)),
+    ];
+    for (quantity, x) in results {
+        if !x.is_finite() {
+            ev.warnings.push(Warning::NonFiniteResult { quantity });
+            ev.status = Status::OutOfRange;
+        }
+    }
+    ev
 }

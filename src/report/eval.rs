@@ -26,7 +26,7 @@ fn opt(x: Option<f64>) -> Value {
 /// One JSON object, SI units.
 pub fn json(r: &EvalReport) -> String {
     let ev = r.evaluation;
-    let mut v = serde_json::to_value(ev).unwrap_or(Value::Null);
+    let mut v = super::words::evaluation_json(ev);
     if let Value::Object(obj) = &mut v {
         // Indices at the top level, as the contract names them.
         if let Some(Value::Object(idx)) = obj.remove("indices") {
@@ -34,7 +34,7 @@ pub fn json(r: &EvalReport) -> String {
                 obj.insert(k, x);
             }
         }
-        let mut warnings = ev.warnings.clone();
+        let mut warnings = super::words::warnings(ev);
         warnings.extend(
             r.input_notes
                 .iter()
@@ -43,7 +43,7 @@ pub fn json(r: &EvalReport) -> String {
         );
         obj.insert("warnings".into(), json!(warnings));
         let mut notes: Vec<String> = r.input_notes.to_vec();
-        notes.extend(ev.notes.iter().cloned());
+        notes.extend(super::words::notes(ev));
         obj.insert("notes".into(), json!(notes));
         obj.insert("name".into(), json!(r.name));
         obj.insert(
@@ -154,10 +154,10 @@ pub fn text(r: &EvalReport) -> String {
         "  critical interference Δc·σ = {}",
         si(ev.critical_interference, "m", 4)
     ));
-    for w in &ev.warnings {
+    for w in super::words::warnings(ev) {
         line(format!("  WARNING: {w}"));
     }
-    for n in &ev.notes {
+    for n in super::words::notes(ev) {
         line(format!("  note: {n}"));
     }
     line(String::new());

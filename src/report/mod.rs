@@ -11,6 +11,7 @@ pub mod optimize;
 pub mod pareto;
 pub mod svg;
 pub mod units;
+pub mod words;
 
 /// The SI unit of an objective (by its problem-file name).
 pub fn objective_unit(name: &str) -> &'static str {

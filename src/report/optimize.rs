@@ -37,7 +37,7 @@ pub fn json(name: &str, o: &Optimum) -> String {
         "starts": o.starts,
         "best_start": o.best_start,
         "time_seconds": o.time_seconds,
-        "evaluation": o.evaluation,
+        "evaluation": super::words::evaluation_json(&o.evaluation),
     });
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
     s.push('\n');

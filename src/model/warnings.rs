@@ -1,0 +1,234 @@
+//! What an evaluation wants the designer to know, as values: the report words them.
+//!
+//! A [`Warning`] is a condition under which the numbers may not mean what they seem
+//! (outside the model's assumptions, an implausible input, a search that did not
+//! converge); a [`Note`] is information (a regime, a value reported as 0 because it
+//! underflows). Neither is an error: the evaluation still returns every number.
+
+use serde::Serialize;
+
+use super::scene::Scene;
+
+/// A scene quantity checked for a plausible magnitude.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ScalarInput {
+    /// σ (m).
+    Sigma,
+    /// R (m).
+    AsperityRadius,
+    /// N (m⁻²).
+    AsperityDensity,
+    /// A_n (m²).
+    NominalArea,
+    /// |W| (N).
+    Load,
+    /// E1 (Pa).
+    YoungsModulusA,
+    /// E2 (Pa).
+    YoungsModulusB,
+    /// H (Pa).
+    Hardness,
+    /// γ (J/m²).
+    WorkOfAdhesion,
+    /// Z0 (m).
+    InteratomicDistance,
+}
+
+impl ScalarInput {
+    /// Every checked input.
+    pub const ALL: [ScalarInput; 10] = [
+        ScalarInput::Sigma,
+        ScalarInput::AsperityRadius,
+        ScalarInput::AsperityDensity,
+        ScalarInput::NominalArea,
+        ScalarInput::Load,
+        ScalarInput::YoungsModulusA,
+        ScalarInput::YoungsModulusB,
+        ScalarInput::Hardness,
+        ScalarInput::WorkOfAdhesion,
+        ScalarInput::InteratomicDistance,
+    ];
+
+    /// The value in a scene (SI; |W| for the load).
+    pub fn get(self, s: &Scene) -> f64 {
+        match self {
+            ScalarInput::Sigma => s.sigma,
+            ScalarInput::AsperityRadius => s.asperity_radius,
+            ScalarInput::AsperityDensity => s.asperity_density,
+            ScalarInput::NominalArea => s.nominal_area,
+            ScalarInput::Load => s.load.abs(),
+            ScalarInput::YoungsModulusA => s.youngs_modulus_a,
+            ScalarInput::YoungsModulusB => s.youngs_modulus_b,
+            ScalarInput::Hardness => s.hardness,
+            ScalarInput::WorkOfAdhesion => s.work_of_adhesion,
+            ScalarInput::InteratomicDistance => s.interatomic_distance,
+        }
+    }
+
+    /// The range of magnitudes found in MEMS, NEMS and storage contacts (and the
+    /// laboratory tests that model them), generously wide: outside it a value is more
+    /// likely a forgotten unit than a design. Limits, SI units:
+    /// σ 0.01 nm – 10 µm; R 1 nm – 10 mm; N 1 mm⁻² (1e6 m⁻²) – 1000 µm⁻² (1e15 m⁻²);
+    /// A_n 10 nm² – 100 cm²; |W| 1 pN – 100 N; E 1 MPa (elastomers) – 2 TPa (diamond
+    /// is 1.1 TPa); H 1 MPa – 200 GPa; γ 10 µJ/m² – 10 J/m²; Z0 0.05 – 2 nm.
+    /// Zero loads and γ, and infinite E or H (a rigid body, no plasticity) are limits
+    /// the model treats exactly and are not checked.
+    pub fn plausible_range(self) -> (f64, f64) {
+        match self {
+            ScalarInput::Sigma => (1e-11, 1e-5),
+            ScalarInput::AsperityRadius => (1e-9, 1e-2),
+            ScalarInput::AsperityDensity => (1e6, 1e15),
+            ScalarInput::NominalArea => (1e-17, 1e-2),
+            ScalarInput::Load => (1e-12, 100.0),
+            ScalarInput::YoungsModulusA | ScalarInput::YoungsModulusB => (1e6, 2e12),
+            ScalarInput::Hardness => (1e6, 2e11),
+            ScalarInput::WorkOfAdhesion => (1e-5, 10.0),
+            ScalarInput::InteratomicDistance => (5e-11, 2e-9),
+        }
+    }
+}
+
+/// Conditions the designer must know; the report words them.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Warning {
+    /// φ0 < 3 with the JKR law: the elastic asperities are outside the regime it holds in.
+    OutsideJkrRegime {
+        /// φ0.
+        tabor_parameter: f64,
+    },
+    /// The separation search stopped without converging.
+    SeparationNotConverged {
+        /// Model evaluations spent.
+        evaluations: usize,
+        /// The best estimate of h.
+        separation: f64,
+    },
+    /// |P̄| beyond what the model describes.
+    LoadBeyondModel {
+        /// P̄.
+        nondimensional_load: f64,
+        /// The largest |P̄| described.
+        limit: f64,
+    },
+    /// A_r/A_n > 0.1: neighbouring asperities interact, outside Greenwood–Williamson.
+    DenseContact {
+        /// A_r/A_n.
+        real_area_fraction: f64,
+    },
+    /// A_r > A_n: no real contact is larger than the nominal one (status out_of_range).
+    RealAreaExceedsNominal {
+        /// A_r/A_n.
+        real_area_fraction: f64,
+    },
+    /// Fewer than [`MIN_CONTACTS`] asperities in contact: the statistics do not hold.
+    FewContacts {
+        /// The expected number of contacts.
+        contact_count: f64,
+    },
+    /// σ ≥ R: the asperities are not gentle caps on a rough surface.
+    RoughnessNotBelowRadius {
+        /// σ (m).
+        sigma: f64,
+        /// R (m).
+        asperity_radius: f64,
+    },
+    /// ηRσ outside 0.01–0.2, where measured surfaces lie (Greenwood–Williamson's
+    /// surfaces have 0.03–0.05).
+    SummitParameter {
+        /// N R σ.
+        product: f64,
+    },
+    /// An input of a magnitude no MEMS or storage contact has: a forgotten unit?
+    ImplausibleInput {
+        /// Which input.
+        input: ScalarInput,
+        /// Its value (SI).
+        value: f64,
+        /// The plausible range (SI).
+        plausible_min: f64,
+        /// The plausible range (SI).
+        plausible_max: f64,
+    },
+    /// A result came out non-finite (status out_of_range).
+    NonFiniteResult {
+        /// The result's JSON key.
+        quantity: &'static str,
+    },
+}
+
+/// Information beside the numbers; the report words it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Note {
+    /// θ ≤ 10.
+    ElasticAdhesionMatters {
+        /// θ.
+        elastic_adhesion_index: f64,
+    },
+    /// λ ≤ 0.125.
+    PlasticAdhesionMatters {
+        /// λ.
+        plastic_adhesion_index: f64,
+    },
+    /// The plastic load jump is negative: several branches, the loading one is used.
+    LoadDropsAtTransition,
+    /// The surfaces separate (tensile load beyond pull-off, or no load without adhesion).
+    Separated {
+        /// Whether the scene has adhesion.
+        adhesion: bool,
+    },
+    /// The pull-off force underflows a double and is reported as 0.
+    PullOffUnderflow {
+        /// log10 of the force in N.
+        log10_force: f64,
+    },
+    /// The real area underflows a double and is reported as 0.
+    RealAreaUnderflow {
+        /// log10 of the area in m².
+        log10_area: f64,
+    },
+}
+
+/// Below this many expected contacts the Gaussian statistics of the model do not hold.
+pub const MIN_CONTACTS: f64 = 10.0;
+
+/// Above this real-area fraction asperities interact.
+pub const DENSE_CONTACT_FRACTION: f64 = 0.1;
+
+/// The range of η R σ where measured surfaces lie.
+pub const SUMMIT_PARAMETER_RANGE: (f64, f64) = (0.01, 0.2);
+
+/// Warnings that follow from the scene alone: implausible magnitudes, σ ≥ R, ηRσ.
+pub fn scene_warnings(scene: &Scene) -> Vec<Warning> {
+    let mut w = Vec::new();
+    for input in ScalarInput::ALL {
+        let value = input.get(scene);
+        let (lo, hi) = input.plausible_range();
+        // Zero (no load, no adhesion) and infinity (rigid, no plasticity) are exact limits.
+        if value == 0.0 || value.is_infinite() || value.is_nan() {
+            continue;
+        }
+        if !(lo..=hi).contains(&value) {
+            w.push(Warning::ImplausibleInput {
+                input,
+                value,
+                plausible_min: lo,
+                plausible_max: hi,
+            });
+        }
+    }
+    if scene.sigma >= scene.asperity_radius {
+        w.push(Warning::RoughnessNotBelowRadius {
+            sigma: scene.sigma,
+            asperity_radius: scene.asperity_radius,
+        });
+    }
+    let product = scene.asperity_density * scene.asperity_radius * scene.sigma;
+    let (lo, hi) = SUMMIT_PARAMETER_RANGE;
+    if product.is_finite() && !(lo..=hi).contains(&product) {
+        w.push(Warning::SummitParameter { product });
+    }
+    w
+}

@@ -1,0 +1,187 @@
+//! The words for the library's structured warnings and notes, and the JSON form of an
+//! evaluation with them worded (`warnings` and `notes` stay arrays of strings; the
+//! structured values go beside them as `warning_details` and `note_details`).
+
+use serde_json::{json, Value};
+
+use super::units::{format_quantity, sig_exp};
+use crate::model::{Evaluation, Note, ScalarInput, Warning};
+use crate::problem::units::Dimension;
+
+/// The symbol, name and dimension of a checked input.
+fn input_words(i: ScalarInput) -> (&'static str, Dimension) {
+    match i {
+        ScalarInput::Sigma => ("roughness σ", Dimension::Length),
+        ScalarInput::AsperityRadius => ("asperity radius R", Dimension::Length),
+        ScalarInput::AsperityDensity => ("asperity density N", Dimension::InverseArea),
+        ScalarInput::NominalArea => ("nominal area A_n", Dimension::Area),
+        ScalarInput::Load => ("load |W|", Dimension::Force),
+        ScalarInput::YoungsModulusA => ("Young's modulus E1", Dimension::Pressure),
+        ScalarInput::YoungsModulusB => ("Young's modulus E2", Dimension::Pressure),
+        ScalarInput::Hardness => ("hardness H", Dimension::Pressure),
+        ScalarInput::WorkOfAdhesion => ("work of adhesion γ", Dimension::SurfaceEnergy),
+        ScalarInput::InteratomicDistance => ("interatomic distance Z0", Dimension::Length),
+    }
+}
+
+/// The power of a length a prefix of this dimension is raised to (0: no prefix guess).
+fn prefix_power(d: Dimension) -> i32 {
+    match d {
+        Dimension::Area => 2,
+        Dimension::InverseArea => -2,
+        Dimension::Dimensionless => 0,
+        _ => 1,
+    }
+}
+
+/// What the value would be had the number been written with a prefix that was left out
+/// (σ = 2 m read as 2 nm, E = 160 Pa as 160 GPa), where that lands in the plausible range.
+fn did_you_mean(value: f64, lo: f64, hi: f64, d: Dimension) -> Vec<String> {
+    let p = prefix_power(d);
+    if p == 0 {
+        return Vec::new();
+    }
+    // Too large: a small prefix was dropped; too small: a large one.
+    let exps: &[i32] = if value > hi {
+        &[-9, -6, -3]
+    } else {
+        &[9, 6, 3]
+    };
+    exps.iter()
+        .map(|e| value * 10f64.powi(e * p))
+        .filter(|v| (lo..=hi).contains(v))
+        .map(|v| format_quantity(v, d))
+        .collect()
+}
+
+/// A warning in words.
+pub fn warning(w: &Warning) -> String {
+    match w {
+        Warning::OutsideJkrRegime { tabor_parameter } => format!(
+            "Tabor parameter φ0 = {} < 3: the elastic asperities are outside the JKR regime the model assumes ({} regime)",
+            sig_exp(*tabor_parameter, 3),
+            if *tabor_parameter < 0.3 { "DMT" } else { "JKR–DMT transition" }
+        ),
+        Warning::SeparationNotConverged { evaluations, separation } => format!(
+            "the separation search did not converge after {evaluations} evaluations; results are at the best estimate h = {separation:.6}"
+        ),
+        Warning::LoadBeyondModel { nondimensional_load, limit } => format!(
+            "the load is {nondimensional_load:.3e} in model units (W over K N R^1/2 σ^3/2 A_n / √(2π)), beyond the {limit:.0e} the model can describe: check the load, nominal area and roughness"
+        ),
+        Warning::DenseContact { real_area_fraction } => format!(
+            "the real area is {} of the nominal area (> 0.1): neighbouring asperities interact, outside the Greenwood–Williamson model; treat the numbers as rough",
+            sig_exp(*real_area_fraction, 3)
+        ),
+        Warning::RealAreaExceedsNominal { real_area_fraction } => format!(
+            "the real area would be {}× the nominal area, which is impossible: the load is far beyond what this rough surface can carry as separate asperity contacts (status out_of_range); check the load, nominal area and hardness",
+            sig_exp(*real_area_fraction, 3)
+        ),
+        Warning::FewContacts { contact_count } => format!(
+            "only {} asperities are expected in contact (fewer than 10): the Gaussian statistics of the model do not hold; enlarge the nominal area or check the asperity density",
+            sig_exp(*contact_count, 3)
+        ),
+        Warning::RoughnessNotBelowRadius { sigma, asperity_radius } => format!(
+            "roughness σ = {} is not below the asperity radius R = {}: the asperities are not gentle spherical caps, as the model assumes",
+            format_quantity(*sigma, Dimension::Length),
+            format_quantity(*asperity_radius, Dimension::Length)
+        ),
+        Warning::SummitParameter { product } => format!(
+            "N·R·σ = {} lies outside 0.01–0.2, where measured surfaces lie (Greenwood–Williamson's have 0.03–0.05): check the asperity density, radius and roughness together",
+            sig_exp(*product, 3)
+        ),
+        Warning::ImplausibleInput { input, value, plausible_min, plausible_max } => {
+            let (name, d) = input_words(*input);
+            let guesses = did_you_mean(*value, *plausible_min, *plausible_max, d);
+            format!(
+                "{name} = {} is outside {} – {}, the range of MEMS, NEMS and storage contacts{}",
+                format_quantity(*value, d),
+                format_quantity(*plausible_min, d),
+                format_quantity(*plausible_max, d),
+                if guesses.is_empty() {
+                    String::new()
+                } else {
+                    format!(": did you mean {}?", guesses.join(" or "))
+                }
+            )
+        }
+        Warning::NonFiniteResult { quantity } => format!(
+            "{quantity} came out non-finite: the scene is beyond what the evaluator can represent (status out_of_range)"
+        ),
+    }
+}
+
+/// A note in words.
+pub fn note(n: &Note) -> String {
+    match n {
+        Note::ElasticAdhesionMatters { elastic_adhesion_index } => format!(
+            "elastic adhesion index θ = {} ≤ 10: adhesion matters for elastic asperities",
+            sig_exp(*elastic_adhesion_index, 4)
+        ),
+        Note::PlasticAdhesionMatters { plastic_adhesion_index } => format!(
+            "plastic adhesion index λ = {} ≤ 0.125: adhesion matters for plastic asperities",
+            sig_exp(*plastic_adhesion_index, 4)
+        ),
+        Note::LoadDropsAtTransition => "the load drops when an asperity turns plastic (λ^{3/2}/θ < 0.0098): the load–separation curve can have several branches; the one reached by loading is used".to_string(),
+        Note::Separated { adhesion: true } => {
+            "the tensile load exceeds the pull-off force: the surfaces separate".to_string()
+        }
+        Note::Separated { adhesion: false } => {
+            "without adhesion a load ≤ 0 cannot hold the surfaces in contact: they separate"
+                .to_string()
+        }
+        Note::PullOffUnderflow { log10_force } => format!(
+            "the pull-off force is below the smallest double: 10^{log10_force:.1} N; reported as 0"
+        ),
+        Note::RealAreaUnderflow { log10_area } => format!(
+            "the real area is below the smallest double: 10^{log10_area:.1} m²; reported as 0"
+        ),
+    }
+}
+
+/// Every warning of an evaluation in words.
+pub fn warnings(ev: &Evaluation) -> Vec<String> {
+    ev.warnings.iter().map(warning).collect()
+}
+
+/// Every note of an evaluation in words.
+pub fn notes(ev: &Evaluation) -> Vec<String> {
+    ev.notes.iter().map(note).collect()
+}
+
+/// An evaluation as JSON: its fields, with `warnings` and `notes` as strings and the
+/// structured values as `warning_details` and `note_details`.
+pub fn evaluation_json(ev: &Evaluation) -> Value {
+    let mut v = serde_json::to_value(ev).unwrap_or(Value::Null);
+    if let Value::Object(obj) = &mut v {
+        obj.insert("warning_details".into(), json!(ev.warnings));
+        obj.insert("note_details".into(), json!(ev.notes));
+        obj.insert("warnings".into(), json!(warnings(ev)));
+        obj.insert("notes".into(), json!(notes(ev)));
+    }
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_forgotten_unit_is_guessed() {
+        let w = Warning::ImplausibleInput {
+            input: ScalarInput::Sigma,
+            value: 2.0,
+            plausible_min: 1e-11,
+            plausible_max: 1e-5,
+        };
+        let s = warning(&w);
+        assert!(s.starts_with("roughness σ = 2 m is outside"), "{s}");
+        assert!(s.contains("did you mean 2 nm or 2 µm?"), "{s}");
+        let w = Warning::ImplausibleInput {
+            input: ScalarInput::YoungsModulusA,
+            value: 160.0,
+            plausible_min: 1e6,
+            plausible_max: 2e12,
+        };
+        assert!(warning(&w).contains("did you mean 160 GPa or 160 MPa?"));
+    }
+}
