@@ -18,3 +18,4 @@ pub mod model;
 pub mod optimize;
 pub mod problem;
 pub mod report;
+pub mod sweep;

@@ -5,6 +5,7 @@ mod figures;
 mod fit_adhesion;
 mod materials;
 mod pareto;
+mod sweep;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -94,6 +95,18 @@ Exit code 1 when the study is infeasible."
 wearopt pareto problems/micro-gear.toml --points 9 --format csv --plot front.svg\n\n\
 Exit code 1 when no point meets the study's constraints; 2 when the file has no [pareto] section.")]
     Pareto(pareto::ParetoArgs),
+    /// The study's scene at N designs spread over its [design] box (log-scaled like the optimiser): wear, pull-off, real area, constraints, feasibility; shardable and resumable.
+    #[command(
+        after_help = "Columns: index, the design variables, status, wear_rate, pull_off_force, real_area, each constrained quantity, feasible.\n\
+Example:\n  wearopt sweep problems/micro-gear-study.toml --samples 4096 --plot map.svg > sweep.csv\n  \
+wearopt sweep problems/micro-gear-study.toml --samples 1000000 --shard 3/16 --out part-3.csv\n  \
+wearopt merge part-*.csv --samples 1000000 > sweep.csv\n\n\
+Under a Slurm job array, the shard comes from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT when --shard is absent."
+    )]
+    Sweep(sweep::SweepArgs),
+    /// Join the shard outputs of one sweep (CSV or JSON) into the output of the unsharded run, byte for byte.
+    #[command(after_help = "Example:\n  wearopt merge part-*.csv --samples 1000000 > sweep.csv")]
+    Merge(sweep::MergeArgs),
     /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
     #[command(
         after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh.\n\
@@ -144,6 +157,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         } => optimize(file, format, verbose, trace),
         Command::Figures(args) => figures::run(args),
         Command::Pareto(args) => pareto::run(args),
+        Command::Sweep(args) => sweep::run(args),
+        Command::Merge(args) => sweep::merge(args),
         Command::FitAdhesion(args) => fit_adhesion::run(args),
         Command::Curve {
             theta,

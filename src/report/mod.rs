@@ -10,6 +10,7 @@ pub mod materials;
 pub mod optimize;
 pub mod pareto;
 pub mod svg;
+pub mod sweep;
 pub mod units;
 pub mod words;
 

@@ -1,0 +1,336 @@
+//! `wearopt sweep` (a study's scene at N designs of its `[design]` box, rows
+//! streamed as they are computed, shardable over a Slurm job array, resumable)
+//! and `wearopt merge` (the shards joined into the unsharded output).
+
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use anyhow::{Context, Result};
+use clap::ValueEnum;
+
+use wearopt::problem::ParetoDirection;
+use wearopt::report::sweep::{self as out, Format, MergeError};
+use wearopt::sweep::{pareto_optimal, Method, Shard, Sweep, SweepRow};
+
+use super::usage;
+
+/// Sampling methods (command-line spelling).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    /// Sobol′ points with a seeded digital shift (best with 2^k samples).
+    Sobol,
+    /// Latin hypercube (seeded).
+    Lhs,
+    /// Full factorial grid: N = m^n for n variables.
+    Grid,
+}
+
+/// Output formats (command-line spelling).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FormatArg {
+    /// A header line and one line per design.
+    Csv,
+    /// One object with a `rows` array, one row per line.
+    Json,
+}
+
+/// Arguments of `wearopt sweep`.
+#[derive(Debug, clap::Args)]
+pub struct SweepArgs {
+    /// The problem file (TOML) with a [design] section.
+    pub file: PathBuf,
+    /// Number of designs N (1 to 2^32), over all shards.
+    #[arg(long)]
+    pub samples: u64,
+    /// How the designs fill the box (log-scaled like the optimiser).
+    #[arg(long, value_enum, default_value_t = MethodArg::Sobol)]
+    pub method: MethodArg,
+    /// Seed of the Sobol′ shift or the Latin hypercube (ignored by grid).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Run only part I of N (I = 0 … N−1). Default: from SLURM_ARRAY_TASK_ID and
+    /// SLURM_ARRAY_TASK_COUNT (and _MIN, _STEP) when set, else the whole sweep.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = FormatArg::Csv)]
+    pub format: FormatArg,
+    /// Write the rows to this file instead of stdout; a rerun that finds it complete skips the work.
+    #[arg(long, value_name = "PATH")]
+    pub out: Option<PathBuf>,
+    /// Also draw wear rate against pull-off force as SVG (feasible, infeasible, Pareto-optimal).
+    #[arg(long, value_name = "MAP.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Arguments of `wearopt merge`.
+#[derive(Debug, clap::Args)]
+pub struct MergeArgs {
+    /// The shard outputs of one sweep (any order).
+    #[arg(required = true, value_name = "PARTS")]
+    pub parts: Vec<PathBuf>,
+    /// Check that the parts hold exactly this many rows (CSV parts cannot tell a
+    /// missing last shard otherwise; JSON parts carry it).
+    #[arg(long)]
+    pub samples: Option<u64>,
+}
+
+fn progress_wanted() -> bool {
+    std::io::stderr().is_terminal()
+        && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+        && std::env::var_os("CI").is_none_or(|v| v.is_empty() || v == "false")
+}
+
+fn parse_shard(text: &str) -> Result<Shard> {
+    let bad = || {
+        usage(format!(
+            "--shard {text}: expected I/N with 0 <= I < N, e.g. --shard 0/4"
+        ))
+    };
+    let (i, n) = text.split_once('/').ok_or_else(bad)?;
+    let (i, n) = (
+        i.trim().parse::<u64>().map_err(|_| bad())?,
+        n.trim().parse::<u64>().map_err(|_| bad())?,
+    );
+    Shard::new(i, n).map_err(|_| bad())
+}
+
+/// The shard from Slurm's job-array variables, if they are set.
+fn slurm_shard() -> Result<Option<Shard>> {
+    let var = |name: &str| -> Result<Option<u64>> {
+        match std::env::var(name) {
+            Ok(v) if !v.trim().is_empty() => v.trim().parse().map(Some).map_err(|_| {
+                usage(format!(
+                    "{name}={v}: expected a non-negative integer (a Slurm job-array variable)"
+                ))
+            }),
+            _ => Ok(None),
+        }
+    };
+    let Some(id) = var("SLURM_ARRAY_TASK_ID")? else {
+        return Ok(None);
+    };
+    let count = var("SLURM_ARRAY_TASK_COUNT")?.ok_or_else(|| {
+        usage(format!(
+            "SLURM_ARRAY_TASK_ID={id} without SLURM_ARRAY_TASK_COUNT: cannot tell the shard; give --shard I/N"
+        ))
+    })?;
+    let shard = Shard::from_slurm(
+        id,
+        count,
+        var("SLURM_ARRAY_TASK_MIN")?,
+        var("SLURM_ARRAY_TASK_STEP")?,
+    )
+    .map_err(|e| usage(e.to_string()))?;
+    Ok(Some(shard))
+}
+
+/// Where rows go: a file or stdout.
+struct Sink {
+    writer: Box<dyn Write>,
+}
+
+impl Sink {
+    fn write(&mut self, text: &str) -> std::io::Result<()> {
+        self.writer.write_all(text.as_bytes())
+    }
+}
+
+/// Runs `wearopt sweep`.
+pub fn run(args: SweepArgs) -> Result<ExitCode> {
+    let problem = wearopt::problem::load(&args.file)?;
+    let file = args.file.display();
+    if !problem.study.materials.is_empty() {
+        return Err(usage(format!(
+            "{file}: {}",
+            wearopt::sweep::SweepError::Materials
+        )));
+    }
+    let method = match args.method {
+        MethodArg::Sobol => Method::Sobol,
+        MethodArg::Lhs => Method::Lhs,
+        MethodArg::Grid => Method::Grid,
+    };
+    let format = match args.format {
+        FormatArg::Csv => Format::Csv,
+        FormatArg::Json => Format::Json,
+    };
+    let sweep = Sweep::new(
+        &problem.scene,
+        &problem.study.design,
+        &problem.study.constraints,
+        method,
+        args.samples,
+        args.seed,
+    )
+    .map_err(|e| match e {
+        wearopt::sweep::SweepError::Samples { .. } | wearopt::sweep::SweepError::Grid { .. } => {
+            usage(format!("--samples {}: {e}", args.samples))
+        }
+        _ => usage(format!("{file}: {e}")),
+    })?;
+    let shard = match &args.shard {
+        Some(s) => parse_shard(s)?,
+        None => slurm_shard()?.unwrap_or(Shard::WHOLE),
+    };
+    let range = shard.range(sweep.samples());
+    let head = out::head(
+        format,
+        &out::Head {
+            name: &problem.name,
+            sweep: &sweep,
+        },
+    );
+    let direction = problem
+        .study
+        .pareto
+        .as_ref()
+        .map_or(ParetoDirection::Low, |p| p.direction);
+
+    // Resume: a complete output of this very shard is kept as it is.
+    if let Some(path) = &args.out {
+        if let Ok(existing) = std::fs::read_to_string(path) {
+            if let Ok(part) = out::parse_part(&existing) {
+                if part.format == format && part.head == head && part.covers(range.clone()) {
+                    eprintln!(
+                        "{}: complete (rows {}..{} of {}): skipped",
+                        path.display(),
+                        range.start,
+                        range.end,
+                        sweep.samples()
+                    );
+                    if let Some(plot) = &args.plot {
+                        let points = out::map_points(&part)
+                            .map_err(|e| usage(format!("{}: {e}", path.display())))?;
+                        write_map(plot, &problem.name, &points, direction)?;
+                    }
+                    return Ok(ExitCode::SUCCESS);
+                }
+            }
+        }
+    }
+
+    let writer: Box<dyn Write> = match &args.out {
+        Some(path) => Box::new(std::io::BufWriter::new(
+            std::fs::File::create(path).with_context(|| format!("creating {}", path.display()))?,
+        )),
+        None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
+    };
+    let mut sink = Sink { writer };
+    let bar = progress_wanted().then(|| {
+        let b = indicatif::ProgressBar::new(range.end - range.start);
+        b.set_style(
+            indicatif::ProgressStyle::with_template(
+                "designs [{bar:30}] {pos}/{len} {elapsed} (eta {eta})",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+            .progress_chars("=> "),
+        );
+        b
+    });
+    let mut points: Vec<(f64, Option<f64>, bool)> = Vec::new();
+    let mut first = true;
+    let result = sink.write(&head).and_then(|_| {
+        sweep.run(range.clone(), |rows: &[SweepRow]| {
+            let mut text = String::with_capacity(rows.len() * 200);
+            for r in rows {
+                text.push_str(&out::row(format, &sweep, r, first));
+                first = false;
+                if args.plot.is_some() {
+                    points.push((r.wear_rate, r.log10_pull_off_force, r.feasible));
+                }
+            }
+            if let Some(b) = &bar {
+                b.inc(rows.len() as u64);
+            }
+            sink.write(&text)?;
+            sink.writer.flush()
+        })?;
+        sink.write(out::tail(format))?;
+        sink.writer.flush()
+    });
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    if let Err(e) = result {
+        if args.out.is_some() || e.kind() != std::io::ErrorKind::BrokenPipe {
+            let to = args
+                .out
+                .as_ref()
+                .map_or("stdout".to_string(), |p| p.display().to_string());
+            return Err(e).with_context(|| format!("writing to {to}"));
+        }
+    }
+    if let Some(plot) = &args.plot {
+        write_map(plot, &problem.name, &points, direction)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn write_map(
+    path: &Path,
+    name: &str,
+    points: &[(f64, Option<f64>, bool)],
+    direction: ParetoDirection,
+) -> Result<()> {
+    let optimal = pareto_optimal(points, direction);
+    std::fs::write(path, out::map_svg(name, points, &optimal, direction))
+        .with_context(|| format!("writing the plot to {}", path.display()))
+}
+
+/// Runs `wearopt merge`.
+pub fn merge(args: MergeArgs) -> Result<ExitCode> {
+    let read =
+        |p: &Path| std::fs::read_to_string(p).map_err(|e| usage(format!("{}: {e}", p.display())));
+    let fail = |p: &Path, e: MergeError| usage(format!("{}: {e}", p.display()));
+    // First pass: check every part and find its place; one file in memory at a time.
+    let mut order = Vec::with_capacity(args.parts.len());
+    for (i, path) in args.parts.iter().enumerate() {
+        let text = read(path)?;
+        let part = out::parse_part(&text).map_err(|e| fail(path, e))?;
+        order.push((out::sort_key(&part), i));
+    }
+    order.sort();
+    let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
+    let mut merger = None;
+    let mut write = |text: &str| -> Result<bool> {
+        match stdout.write_all(text.as_bytes()) {
+            Ok(()) => Ok(true),
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(false),
+            Err(e) => Err(e).context("writing to stdout"),
+        }
+    };
+    for &(_, i) in &order {
+        let path = &args.parts[i];
+        let text = read(path)?;
+        let part = out::parse_part(&text).map_err(|e| fail(path, e))?;
+        let m = match &mut merger {
+            Some(m) => m,
+            None => {
+                let (m, head) = out::Merger::new(&part);
+                if !write(&head)? {
+                    return Ok(ExitCode::SUCCESS);
+                }
+                merger.insert(m)
+            }
+        };
+        let rows = m.push(&part).map_err(|e| fail(path, e))?;
+        if !write(&rows)? {
+            return Ok(ExitCode::SUCCESS);
+        }
+    }
+    let tail = merger
+        .expect("at least one part")
+        .finish(args.samples)
+        .map_err(|e| usage(format!("{} parts: {e}", args.parts.len())))?;
+    write(&tail)?;
+    stdout.flush().or_else(|e| {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            Ok(())
+        } else {
+            Err(e)
+        }
+    })?;
+    Ok(ExitCode::SUCCESS)
+}

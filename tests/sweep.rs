@@ -1,0 +1,440 @@
+//! `wearopt sweep` and `wearopt merge` end to end: sharding (by flag and by Slurm
+//! variables) joins into the unsharded output byte for byte, reruns resume,
+//! output does not depend on the thread count, and bad input is refused.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+
+use wearopt::model::{evaluate, EvaluationOptions};
+use wearopt::optimize::DesignSpace;
+use wearopt::sweep::{Method, Sweep};
+
+const STUDY: &str = "problems/micro-gear-study.toml";
+
+fn wearopt() -> Command {
+    let mut c = Command::cargo_bin("wearopt").expect("binary builds");
+    for v in [
+        "SLURM_ARRAY_TASK_ID",
+        "SLURM_ARRAY_TASK_COUNT",
+        "SLURM_ARRAY_TASK_MIN",
+        "SLURM_ARRAY_TASK_STEP",
+    ] {
+        c.env_remove(v);
+    }
+    c
+}
+
+fn sweep_out(args: &[&str]) -> Vec<u8> {
+    wearopt()
+        .arg("sweep")
+        .arg(STUDY)
+        .args(args)
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone()
+}
+
+/// Asserts exit code 2 and that stderr contains `needle`.
+fn fails_with(assert: assert_cmd::assert::Assert, needle: &str) {
+    let out = assert.code(2).get_output().stderr.clone();
+    let text = String::from_utf8_lossy(&out);
+    assert!(text.contains(needle), "stderr {text:?} lacks {needle:?}");
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("wearopt-sweep-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn merge(parts: &[PathBuf], extra: &[&str]) -> Vec<u8> {
+    wearopt()
+        .arg("merge")
+        .args(parts)
+        .args(extra)
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone()
+}
+
+#[test]
+fn sharded_union_equals_unsharded() {
+    let samples = "20";
+    for (method, format) in [
+        ("sobol", "csv"),
+        ("lhs", "json"),
+        ("sobol", "json"),
+        ("lhs", "csv"),
+    ] {
+        let whole = sweep_out(&[
+            "--samples",
+            samples,
+            "--method",
+            method,
+            "--format",
+            format,
+            "--seed",
+            "3",
+        ]);
+        for n in [1usize, 2, 3, 7, 20, 33] {
+            let dir = scratch(&format!("{method}-{format}-{n}"));
+            // Parts given to merge in reverse order: merge sorts them itself.
+            let parts: Vec<PathBuf> = (0..n)
+                .rev()
+                .map(|i| {
+                    let path = dir.join(format!("part-{i}.{format}"));
+                    let shard = format!("{i}/{n}");
+                    let out = sweep_out(&[
+                        "--samples",
+                        samples,
+                        "--method",
+                        method,
+                        "--format",
+                        format,
+                        "--seed",
+                        "3",
+                        "--shard",
+                        &shard,
+                    ]);
+                    std::fs::write(&path, out).unwrap();
+                    path
+                })
+                .collect();
+            let merged = merge(&parts, &["--samples", samples]);
+            assert_eq!(
+                String::from_utf8_lossy(&merged),
+                String::from_utf8_lossy(&whole),
+                "{method} {format} in {n} shards"
+            );
+        }
+    }
+}
+
+#[test]
+fn grid_shards_join_too() {
+    // 5 design variables, 2 levels each: the 32 corners of the box.
+    let whole = sweep_out(&["--samples", "32", "--method", "grid"]);
+    let dir = scratch("grid");
+    let parts: Vec<PathBuf> = (0..5)
+        .map(|i| {
+            let path = dir.join(format!("g{i}.csv"));
+            std::fs::write(
+                &path,
+                sweep_out(&[
+                    "--samples",
+                    "32",
+                    "--method",
+                    "grid",
+                    "--shard",
+                    &format!("{i}/5"),
+                ]),
+            )
+            .unwrap();
+            path
+        })
+        .collect();
+    assert_eq!(merge(&parts, &[]), whole);
+}
+
+#[test]
+fn slurm_variables_choose_the_shard() {
+    let by_flag = sweep_out(&["--samples", "12", "--shard", "2/3"]);
+    for (id, min) in [("2", None), ("2", Some("0")), ("7", Some("5"))] {
+        let mut c = wearopt();
+        c.args(["sweep", STUDY, "--samples", "12"])
+            .env("SLURM_ARRAY_TASK_ID", id)
+            .env("SLURM_ARRAY_TASK_COUNT", "3");
+        if let Some(m) = min {
+            c.env("SLURM_ARRAY_TASK_MIN", m);
+        }
+        let out = c.assert().success().get_output().stdout.clone();
+        assert_eq!(out, by_flag, "ID {id} MIN {min:?}");
+    }
+    // --shard wins over the variables.
+    let out = wearopt()
+        .args(["sweep", STUDY, "--samples", "12", "--shard", "2/3"])
+        .env("SLURM_ARRAY_TASK_ID", "0")
+        .env("SLURM_ARRAY_TASK_COUNT", "3")
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    assert_eq!(out, by_flag);
+    // A task id outside the array is refused.
+    fails_with(
+        wearopt()
+            .args(["sweep", STUDY, "--samples", "12"])
+            .env("SLURM_ARRAY_TASK_ID", "3")
+            .env("SLURM_ARRAY_TASK_COUNT", "3")
+            .assert(),
+        "SLURM_ARRAY_TASK_ID=3",
+    );
+}
+
+#[test]
+fn rerun_skips_a_complete_shard_and_redoes_a_partial_one() {
+    let dir = scratch("resume");
+    let path = dir.join("part.json");
+    let run = || {
+        wearopt()
+            .args([
+                "sweep",
+                STUDY,
+                "--samples",
+                "9",
+                "--shard",
+                "1/2",
+                "--format",
+                "json",
+                "--out",
+            ])
+            .arg(&path)
+            .assert()
+            .success()
+            .get_output()
+            .stderr
+            .clone()
+    };
+    let stderr = run();
+    assert!(!String::from_utf8_lossy(&stderr).contains("skipped"));
+    let complete = std::fs::read(&path).unwrap();
+    assert_eq!(
+        complete,
+        sweep_out(&["--samples", "9", "--shard", "1/2", "--format", "json"])
+    );
+    let stderr = run();
+    assert!(String::from_utf8_lossy(&stderr).contains("complete (rows 4..9 of 9): skipped"));
+    assert_eq!(std::fs::read(&path).unwrap(), complete);
+    // Cut off mid-way (as a killed job leaves it): redone in full.
+    std::fs::write(&path, &complete[..complete.len() * 2 / 3]).unwrap();
+    let stderr = run();
+    assert!(!String::from_utf8_lossy(&stderr).contains("skipped"));
+    assert_eq!(std::fs::read(&path).unwrap(), complete);
+    // A file of another sweep (other seed) at the same path is not taken for this one.
+    wearopt()
+        .args([
+            "sweep",
+            STUDY,
+            "--samples",
+            "9",
+            "--shard",
+            "1/2",
+            "--format",
+            "json",
+            "--seed",
+            "5",
+            "--out",
+        ])
+        .arg(&path)
+        .assert()
+        .success();
+    assert_ne!(std::fs::read(&path).unwrap(), complete);
+}
+
+#[test]
+fn csv_completeness_is_read_from_the_rows() {
+    let dir = scratch("csv-resume");
+    let path = dir.join("p.csv");
+    let run = || {
+        wearopt()
+            .args(["sweep", STUDY, "--samples", "10", "--shard", "0/2", "--out"])
+            .arg(&path)
+            .assert()
+            .success()
+            .get_output()
+            .stderr
+            .clone()
+    };
+    run();
+    let complete = std::fs::read_to_string(&path).unwrap();
+    assert_eq!(
+        complete.lines().count(),
+        6,
+        "header and rows 0..5, nothing else"
+    );
+    // Drop the last row: the file still parses, but misses row 4.
+    let cut: String = complete.lines().take(5).map(|l| format!("{l}\n")).collect();
+    std::fs::write(&path, cut).unwrap();
+    assert!(!String::from_utf8_lossy(&run()).contains("skipped"));
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), complete);
+    assert!(String::from_utf8_lossy(&run()).contains("skipped"));
+}
+
+#[test]
+fn output_does_not_depend_on_threads() {
+    let run = |threads: &str| {
+        wearopt()
+            .args(["sweep", STUDY, "--samples", "1500", "--method", "lhs"])
+            .env("RAYON_NUM_THREADS", threads)
+            .assert()
+            .success()
+            .get_output()
+            .stdout
+            .clone()
+    };
+    assert_eq!(run("1"), run("2"));
+    assert_eq!(run("1"), run("3"));
+}
+
+#[test]
+fn rows_are_the_model_at_designs_inside_the_box() {
+    let problem = wearopt::problem::load(Path::new(STUDY)).unwrap();
+    let s = &problem.study;
+    let n = 64;
+    let sweep = Sweep::new(
+        &problem.scene,
+        &s.design,
+        &s.constraints,
+        Method::Lhs,
+        n,
+        11,
+    )
+    .unwrap();
+    let space = DesignSpace::new(&problem.scene, &s.design);
+    let mut strata = vec![vec![false; n as usize]; s.design.len()];
+    for i in 0..n {
+        let row = sweep.row(i);
+        let x = sweep.unit_point(i);
+        // The row is the model at its design, exactly.
+        let ev = evaluate(&space.scene_at(&x), &EvaluationOptions::default());
+        assert_eq!(row.wear_rate, ev.wear_rate);
+        assert_eq!(row.real_area, ev.real_area);
+        assert_eq!(row.pull_off_force, ev.pull_off_force);
+        // Inside the box, and in log space one design per stratum of every variable.
+        for (d, (v, var)) in row.design.iter().zip(&s.design).enumerate() {
+            assert!(
+                *v >= var.min && *v <= var.max,
+                "{v} outside [{}, {}]",
+                var.min,
+                var.max
+            );
+            let u = (v / var.min).ln() / (var.max / var.min).ln();
+            let j = ((u * n as f64) as usize).min(n as usize - 1);
+            assert!(!strata[d][j], "variable {d}: stratum {j} twice");
+            strata[d][j] = true;
+        }
+        // Feasible exactly when every constraint holds.
+        let holds = s.constraints.iter().all(|c| {
+            let v =
+                wearopt::optimize::functions::quantity_value(c.quantity, &ev, &space.scene_at(&x));
+            v.is_some_and(|v| {
+                c.min.is_none_or(|m| v >= m * (1.0 - 1e-9))
+                    && c.max.is_none_or(|m| v <= m * (1.0 + 1e-9))
+            })
+        });
+        assert_eq!(row.feasible, holds, "row {i}");
+    }
+}
+
+#[test]
+fn the_map_marks_the_pareto_optimal_designs() {
+    let dir = scratch("map");
+    let plot = dir.join("map.svg");
+    wearopt()
+        .args(["sweep", STUDY, "--samples", "256", "--plot"])
+        .arg(&plot)
+        .assert()
+        .success();
+    let svg = std::fs::read_to_string(&plot).unwrap();
+    common::parse_xml(&svg).expect("well-formed SVG");
+    for text in [
+        "feasible (",
+        "infeasible (",
+        "Pareto-optimal (",
+        "wear rate",
+        "pull-off force",
+    ] {
+        assert!(svg.contains(text), "missing {text}");
+    }
+}
+
+#[test]
+fn bad_input_is_refused_with_the_value_and_the_range() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["--samples", "0"],
+            "--samples 0: 0 samples: must lie in 1..=4294967296",
+        ),
+        (&["--samples", "10", "--method", "grid"], "must be m^5"),
+        (
+            &["--samples", "10", "--shard", "3/3"],
+            "--shard 3/3: expected I/N",
+        ),
+        (&["--samples", "10", "--shard", "x"], "--shard x"),
+    ];
+    for (args, message) in cases {
+        fails_with(
+            wearopt().arg("sweep").arg(STUDY).args(*args).assert(),
+            message,
+        );
+    }
+    fails_with(
+        wearopt()
+            .args(["sweep", "problems/dlc-contact.toml", "--samples", "10"])
+            .assert(),
+        "no [design] variables",
+    );
+    fails_with(
+        wearopt()
+            .args(["sweep", "problems/materials-study.toml", "--samples", "10"])
+            .assert(),
+        "materials",
+    );
+}
+
+#[test]
+fn merge_refuses_gaps_overlaps_and_strangers() {
+    let dir = scratch("merge-bad");
+    let part = |i: usize, n: usize, seed: &str| {
+        let path = dir.join(format!("p{i}-{n}-{seed}.csv"));
+        std::fs::write(
+            &path,
+            sweep_out(&[
+                "--samples",
+                "9",
+                "--shard",
+                &format!("{i}/{n}"),
+                "--seed",
+                seed,
+            ]),
+        )
+        .unwrap();
+        path
+    };
+    let (a, b, c) = (part(0, 3, "0"), part(1, 3, "0"), part(2, 3, "0"));
+    let bad = |parts: &[&PathBuf], extra: &[&str], message: &str| {
+        fails_with(
+            wearopt().arg("merge").args(parts).args(extra).assert(),
+            message,
+        );
+    };
+    bad(&[&a, &c], &[], "rows 3..6 are missing");
+    bad(&[&a, &b, &b, &c], &[], "appears twice");
+    bad(&[&a, &b], &["--samples", "9"], "rows 6..9 are missing");
+    // Different seeds make different sweeps; JSON and CSV do not mix.
+    let other = part(2, 3, "1");
+    let _ = other;
+    let json = dir.join("j.json");
+    std::fs::write(
+        &json,
+        sweep_out(&["--samples", "9", "--shard", "2/3", "--format", "json"]),
+    )
+    .unwrap();
+    bad(&[&a, &b, &json], &[], "differs from the first part");
+    let junk = dir.join("junk.csv");
+    std::fs::write(&junk, "a,b\n1,2\n").unwrap();
+    bad(&[&junk], &[], "junk.csv: not the output of `wearopt sweep`");
+    // A JSON part cut short is incomplete.
+    let text = std::fs::read_to_string(&json).unwrap();
+    std::fs::write(&json, &text[..text.len() - 3]).unwrap();
+    bad(&[&json], &[], "incomplete");
+}
