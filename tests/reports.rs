@@ -156,3 +156,83 @@ fn few_contacts_and_dense_contact_are_said() {
     let v: serde_json::Value = serde_json::from_str(&t).unwrap();
     assert_eq!(kinds_of(&v), vec!["outside_jkr_regime".to_string()]);
 }
+
+/// Wear depth, life, stiction and friction follow from the evaluation by their
+/// definitions (the contract): depth rate = wear rate / A_n, life = allowed
+/// depth / depth rate, cycles = life / sliding per cycle, margin = pull-off / restoring
+/// force with `sticks` iff ≥ 1, friction = τ A_r, coefficient = friction / load.
+#[test]
+fn designer_numbers_follow_their_definitions() {
+    let (v, code) = eval_json_of(&[
+        (
+            "wear_area = \"plastic\"",
+            "wear_area = \"plastic\"\nallowed_wear_depth = \"50 nm\"\nsliding_per_cycle = \"10 nm\"\nrestoring_force = \"1 aN\"",
+        ),
+        (
+            "interatomic_distance = \"0.3 nm\"",
+            "interatomic_distance = \"0.3 nm\"\nshear_strength = \"100 MPa\"",
+        ),
+    ]);
+    assert_eq!(code, 0);
+    let f = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("{k}: {v}"));
+    let rel = |a: f64, b: f64| (a - b).abs() <= 1e-14 * b.abs();
+    let an = 100e-12;
+    assert!(rel(f("wear_depth_rate"), f("wear_rate") / an));
+    assert!(rel(
+        f("life_sliding_distance"),
+        50e-9 / f("wear_depth_rate")
+    ));
+    assert!(rel(f("life_cycles"), f("life_sliding_distance") / 10e-9));
+    let st = &v["stiction"];
+    let pull_off = st["pull_off_force"].as_f64().unwrap();
+    assert_eq!(pull_off, f("pull_off_force"));
+    assert_eq!(st["restoring_force"].as_f64().unwrap(), 1e-18);
+    assert!(rel(st["margin"].as_f64().unwrap(), pull_off / 1e-18));
+    // The switch's pull-off (2.3e-15 N under JKR) beats a restoring force of 1 aN.
+    assert!(pull_off > 1e-18, "{pull_off}");
+    assert_eq!(st["verdict"], "sticks");
+    assert!(rel(f("friction_force"), 100e6 * f("real_area")));
+    assert!(rel(f("friction_coefficient"), f("friction_force") / 50e-6));
+    // Without the inputs the keys are there, null.
+    let (v, _) = eval_json_of(&[]);
+    for k in [
+        "life_sliding_distance",
+        "life_cycles",
+        "stiction",
+        "friction_force",
+        "friction_coefficient",
+    ] {
+        assert!(v.get(k).is_some_and(|x| x.is_null()), "{k}: {v}");
+    }
+    assert!(v["wear_depth_rate"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn stiction_text_names_the_law() {
+    let mut text = std::fs::read_to_string("problems/gold-switch.toml").unwrap();
+    text = text.replacen(
+        "wear_area = \"plastic\"",
+        "wear_area = \"plastic\"\nrestoring_force = \"1 aN\"",
+        1,
+    );
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("stiction-law.toml");
+    std::fs::write(&path, text).unwrap();
+    let t = stdout_of(&["eval", path.to_str().unwrap()]);
+    assert!(t.contains("STICKS (margin ≥ 1)"), "{t}");
+    assert!(t.contains("adhesion law: JKR"), "{t}");
+    // φ0 = 1.59: the transition, where the other law must be weighed.
+    assert!(t.contains("JKR–DMT transition (0.3–3)"), "{t}");
+}
+
+#[test]
+fn friction_and_stiction_need_their_inputs() {
+    let mut text = std::fs::read_to_string("problems/switch-study.toml").unwrap();
+    text.push_str("\n[[constraint]]\nquantity = \"stiction_margin\"\nmax = 0.5\n");
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("needs-restoring.toml");
+    std::fs::write(&path, text).unwrap();
+    let err = stderr_failing(&["optimize", path.to_str().unwrap()], 2);
+    assert!(
+        err.contains("stiction_margin needs contact.restoring_force"),
+        "{err}"
+    );
+}

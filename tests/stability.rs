@@ -354,6 +354,7 @@ fn scene() -> impl Strategy<Value = Scene> {
                 } else {
                     WearArea::Total
                 },
+                requirements: Default::default(),
             },
         )
 }

@@ -17,7 +17,7 @@ pub mod wear;
 pub use coefficients::{Coefficients, DomainError, Transition};
 pub use integrals::{Integrals, Model, Quadrature};
 pub use scaled::Scaled;
-pub use scene::{Scene, WearArea};
+pub use scene::{Requirements, Scene, WearArea};
 pub use sensitivity::{sensitivities, Sensitivity, SensitivityParameter};
 pub use separation::{
     find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_from,
@@ -26,4 +26,5 @@ pub use separation::{
 pub use warnings::{Note, ScalarInput, Warning};
 pub use wear::{
     evaluate, evaluate_from, Evaluation, EvaluationOptions, Indices, Regime, SearchHints, Status,
+    Stiction, StictionVerdict,
 };

@@ -52,4 +52,20 @@ pub struct Scene {
     pub wear_coefficient: f64,
     /// Which real area wears.
     pub wear_area: WearArea,
+    /// What the designer judges the contact by: allowed wear, cycles, the spring that
+    /// must free the part, the interface's shear strength (all optional).
+    pub requirements: Requirements,
+}
+
+/// The optional inputs of the numbers a designer decides on: life, stiction, friction.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+pub struct Requirements {
+    /// The wear depth the part may lose over its life (m), > 0.
+    pub allowed_wear_depth: Option<f64>,
+    /// The sliding distance of one cycle (m), > 0: turns the life into cycles.
+    pub sliding_per_cycle: Option<f64>,
+    /// The force available to pull the surfaces apart (a spring's restoring force, N), > 0.
+    pub restoring_force: Option<f64>,
+    /// τ, the shear strength of the junctions (Pa), > 0: friction F = τ A_r (Bowden–Tabor).
+    pub shear_strength: Option<f64>,
 }

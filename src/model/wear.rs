@@ -167,6 +167,59 @@ pub struct Evaluation {
     pub log10_wear_rate: f64,
     /// Model evaluations the separation and pull-off searches spent.
     pub evaluations: usize,
+    /// Wear depth per sliding distance, V/(A_n L) = wear rate / A_n (m per m slid).
+    pub wear_depth_rate: f64,
+    /// Sliding distance until the allowed wear depth is worn (m); None without
+    /// `allowed_wear_depth` or without wear.
+    pub life_sliding_distance: Option<f64>,
+    /// Cycles until the allowed wear depth is worn; None without `sliding_per_cycle`.
+    pub life_cycles: Option<f64>,
+    /// Whether the restoring force frees the part; None without `restoring_force`.
+    pub stiction: Option<Stiction>,
+    /// Bowden–Tabor friction τ A_r (N); None without `shear_strength`.
+    pub friction_force: Option<f64>,
+    /// friction_force / load; None without `shear_strength` or for a load ≤ 0.
+    pub friction_coefficient: Option<f64>,
+}
+
+/// Does the part come free? The pull-off force against the restoring force.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Stiction {
+    /// The pull-off force of the rough contact (N).
+    pub pull_off_force: f64,
+    /// The restoring force (N).
+    pub restoring_force: f64,
+    /// pull_off_force / restoring_force: ≥ 1 sticks.
+    pub margin: f64,
+    /// `sticks` iff margin ≥ 1.
+    pub verdict: StictionVerdict,
+}
+
+/// The stiction verdict.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StictionVerdict {
+    /// The restoring force exceeds the pull-off force.
+    Releases,
+    /// The pull-off force is at least the restoring force.
+    Sticks,
+}
+
+impl Stiction {
+    /// The verdict of a pull-off force against a restoring force (> 0).
+    pub fn new(pull_off_force: f64, restoring_force: f64) -> Stiction {
+        let margin = pull_off_force / restoring_force;
+        Stiction {
+            pull_off_force,
+            restoring_force,
+            margin,
+            verdict: if margin >= 1.0 {
+                StictionVerdict::Sticks
+            } else {
+                StictionVerdict::Releases
+            },
+        }
+    }
 }
 
 /// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹; E2 = ∞ is a rigid counterface.
@@ -413,8 +466,38 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         wear_rate,
         log10_wear_rate: wear_area_scaled.log10_abs(),
         evaluations,
+        wear_depth_rate: 0.0,
+        life_sliding_distance: None,
+        life_cycles: None,
+        stiction: None,
+        friction_force: None,
+        friction_coefficient: None,
     };
-    with_contact_checks(evaluation)
+    with_contact_checks(with_designer_numbers(evaluation, scene))
+}
+
+/// Wear depth and life, stiction and friction from an evaluation and the scene's
+/// [`super::Requirements`].
+fn with_designer_numbers(mut ev: Evaluation, scene: &Scene) -> Evaluation {
+    let req = &scene.requirements;
+    ev.wear_depth_rate = ev.wear_rate / scene.nominal_area;
+    if let Some(depth) = req.allowed_wear_depth {
+        let life = depth / ev.wear_depth_rate;
+        ev.life_sliding_distance = life.is_finite().then_some(life);
+        if let (Some(l), Some(per)) = (ev.life_sliding_distance, req.sliding_per_cycle) {
+            let cycles = l / per;
+            ev.life_cycles = cycles.is_finite().then_some(cycles);
+        }
+    }
+    if let (Some(f), Some(restoring)) = (ev.pull_off_force, req.restoring_force) {
+        ev.stiction = Some(Stiction::new(f, restoring));
+    }
+    if let Some(tau) = req.shear_strength {
+        let f = tau * ev.real_area;
+        ev.friction_force = Some(f);
+        ev.friction_coefficient = (scene.load > 0.0).then(|| f / scene.load);
+    }
+    ev
 }
 
 /// The checks that need the results: dense or too few contacts, a real area above the

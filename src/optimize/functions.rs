@@ -84,6 +84,9 @@ pub fn quantity_value(
         ConstraintQuantity::ContactCount => ev.contact_count,
         ConstraintQuantity::Separation => ev.separation?,
         ConstraintQuantity::WearRate => ev.wear_rate,
+        ConstraintQuantity::StictionMargin => ev.stiction?.margin,
+        ConstraintQuantity::FrictionForce => ev.friction_force?,
+        ConstraintQuantity::FrictionCoefficient => ev.friction_coefficient?,
     })
 }
 
@@ -101,7 +104,32 @@ fn ln_quantity(q: ConstraintQuantity, ev: &Evaluation, scene: &crate::model::Sce
         ConstraintQuantity::RealAreaFraction => {
             (ev.log10_real_area * ln10 - scene.nominal_area.ln()).clamp(LN_FLOOR, LN_CEIL)
         }
+        // Like the pull-off force: a slope in ln even where the margin underflows.
+        ConstraintQuantity::StictionMargin => ev
+            .log10_pull_off_force
+            .filter(|l| l.is_finite())
+            .map_or(LN_FLOOR, |l| {
+                l * ln10 - scene.requirements.restoring_force.unwrap_or(1.0).ln()
+            }),
+        ConstraintQuantity::FrictionForce | ConstraintQuantity::FrictionCoefficient => {
+            ln_friction(q == ConstraintQuantity::FrictionCoefficient, ev, scene)
+        }
         _ => ln_clamped(quantity_value(q, ev, scene).unwrap_or(0.0)),
+    }
+}
+
+/// ln of the friction force τ A_r (or of its ratio to the load), from log10 A_r so that
+/// it keeps a slope where A_r underflows.
+fn ln_friction(per_load: bool, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
+    let tau = scene.requirements.shear_strength.unwrap_or(1.0);
+    let mut v = ev.log10_real_area * std::f64::consts::LN_10 + tau.ln();
+    if per_load {
+        v -= scene.load.abs().max(f64::MIN_POSITIVE).ln();
+    }
+    if v.is_nan() {
+        LN_CEIL
+    } else {
+        v.clamp(LN_FLOOR, LN_CEIL)
     }
 }
 
@@ -119,6 +147,8 @@ pub fn ln_objective(o: Objective, ev: &Evaluation, scene: &crate::model::Scene) 
                 }
         }
         Objective::RealArea => ev.log10_real_area * ln10,
+        Objective::FrictionForce => return ln_friction(false, ev, scene),
+        Objective::FrictionCoefficient => return ln_friction(true, ev, scene),
         Objective::PullOffForce => {
             return ev
                 .log10_pull_off_force
@@ -140,6 +170,8 @@ pub fn objective_value(o: Objective, ev: &Evaluation) -> f64 {
         Objective::WearVolume => ev.wear_volume,
         Objective::RealArea => ev.real_area,
         Objective::PullOffForce => ev.pull_off_force.unwrap_or(0.0),
+        Objective::FrictionForce => ev.friction_force.unwrap_or(0.0),
+        Objective::FrictionCoefficient => ev.friction_coefficient.unwrap_or(0.0),
     }
     .max(0.0)
 }
@@ -213,9 +245,12 @@ impl StudyFunctions {
             }
         }
         let pull_off = objective == Objective::PullOffForce
-            || constraints
-                .iter()
-                .any(|c| c.quantity == ConstraintQuantity::PullOffForce);
+            || constraints.iter().any(|c| {
+                matches!(
+                    c.quantity,
+                    ConstraintQuantity::PullOffForce | ConstraintQuantity::StictionMargin
+                )
+            });
         StudyFunctions {
             space,
             objective,

@@ -672,6 +672,22 @@ impl Problem {
             },
         };
 
+        let allowed_wear_depth = r.optional_quantity(
+            "contact.allowed_wear_depth",
+            &c.allowed_wear_depth,
+            Accept::positive(Dimension::Length).why("the wear depth the part may lose"),
+        )?;
+        let sliding_per_cycle = r.optional_quantity(
+            "contact.sliding_per_cycle",
+            &c.sliding_per_cycle,
+            Accept::positive(Dimension::Length).why("the sliding distance of one cycle"),
+        )?;
+        let restoring_force = r.optional_quantity(
+            "contact.restoring_force",
+            &c.restoring_force,
+            Accept::positive(Dimension::Force).why("the force that pulls the part free"),
+        )?;
+
         // [bodies]
         let bodies = r.required(&raw.bodies, "table [bodies]", None, BODIES_HINT)?;
         let bspan = bodies.span();
@@ -797,6 +813,11 @@ impl Problem {
             Accept::positive(Dimension::InverseArea),
         )?;
 
+        let shear_strength = r.optional_quantity(
+            "interface.shear_strength",
+            &i.shear_strength,
+            Accept::positive(Dimension::Pressure).why("the junctions' shear strength τ"),
+        )?;
         let scene = Scene {
             youngs_modulus_a: body_a.youngs_modulus,
             poisson_ratio_a: body_a.poisson_ratio,
@@ -813,6 +834,12 @@ impl Problem {
             sliding_distance,
             wear_coefficient,
             wear_area,
+            requirements: crate::model::Requirements {
+                allowed_wear_depth,
+                sliding_per_cycle,
+                restoring_force,
+                shear_strength,
+            },
         };
 
         let study = r.study(&raw, &scene)?;
@@ -910,7 +937,17 @@ impl Reader<'_> {
                     Objective::names().join(", ")
                 ),
             )?;
-            study.objective = Some(self.named("objective.minimize", minimize)?);
+            let o: Objective = self.named("objective.minimize", minimize)?;
+            if matches!(o, Objective::FrictionForce | Objective::FrictionCoefficient)
+                && scene.requirements.shear_strength.is_none()
+            {
+                return Err(self.invalid(
+                    "objective.minimize",
+                    &minimize.span(),
+                    format!("{} needs interface.shear_strength (τ of the junctions), e.g. shear_strength = \"100 MPa\"", o.as_str()),
+                ));
+            }
+            study.objective = Some(o);
             if !study.has_design() {
                 return Err(self.invalid(
                     "objective.minimize",
@@ -922,7 +959,28 @@ impl Reader<'_> {
 
         // [[constraint]]
         for (index, constraint) in raw.constraint.iter().enumerate() {
-            study.constraints.push(self.constraint(index, constraint)?);
+            let c = self.constraint(index, constraint)?;
+            let needs = match c.quantity {
+                ConstraintQuantity::StictionMargin => scene
+                    .requirements
+                    .restoring_force
+                    .is_none()
+                    .then_some("contact.restoring_force (the force that must free the part), e.g. restoring_force = \"5 uN\""),
+                ConstraintQuantity::FrictionForce | ConstraintQuantity::FrictionCoefficient => scene
+                    .requirements
+                    .shear_strength
+                    .is_none()
+                    .then_some("interface.shear_strength (τ of the junctions), e.g. shear_strength = \"100 MPa\""),
+                _ => None,
+            };
+            if let Some(what) = needs {
+                return Err(self.invalid(
+                    &format!("constraint[{index}].quantity"),
+                    &constraint.span(),
+                    format!("{} needs {what}", c.quantity.as_str()),
+                ));
+            }
+            study.constraints.push(c);
         }
 
         // [pareto]

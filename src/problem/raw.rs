@@ -114,6 +114,9 @@ pub struct RawContact {
     pub sliding_distance: Option<Spanned<RawQuantity>>,
     pub wear_coefficient: Option<Spanned<RawQuantity>>,
     pub wear_area: Option<Spanned<String>>,
+    pub allowed_wear_depth: Option<Spanned<RawQuantity>>,
+    pub sliding_per_cycle: Option<Spanned<RawQuantity>>,
+    pub restoring_force: Option<Spanned<RawQuantity>>,
 }
 
 /// `[bodies]`.
@@ -141,6 +144,7 @@ pub struct RawInterface {
     pub hardness: Option<Spanned<RawQuantity>>,
     pub work_of_adhesion: Option<Spanned<RawQuantity>>,
     pub interatomic_distance: Option<Spanned<RawQuantity>>,
+    pub shear_strength: Option<Spanned<RawQuantity>>,
 }
 
 /// `[roughness]`.

@@ -185,6 +185,10 @@ named_enum! {
         RealArea => "real_area",
         /// Pull-off force of the rough surface (N).
         PullOffForce => "pull_off_force",
+        /// Bowden–Tabor friction τ·A_r (N); needs `interface.shear_strength`.
+        FrictionForce => "friction_force",
+        /// Friction force over load; needs `interface.shear_strength`.
+        FrictionCoefficient => "friction_coefficient",
     }
 }
 
@@ -215,6 +219,12 @@ named_enum! {
         Separation => "separation",
         /// k·A_r (m³/m = m²).
         WearRate => "wear_rate",
+        /// Pull-off force over `contact.restoring_force`: ≥ 1 sticks.
+        StictionMargin => "stiction_margin",
+        /// Bowden–Tabor friction τ·A_r (N); needs `interface.shear_strength`.
+        FrictionForce => "friction_force",
+        /// Friction force over load; needs `interface.shear_strength`.
+        FrictionCoefficient => "friction_coefficient",
     }
 }
 
@@ -222,7 +232,9 @@ impl ConstraintQuantity {
     /// The dimension of its bounds.
     pub fn dimension(self) -> Dimension {
         match self {
-            ConstraintQuantity::PullOffForce => Dimension::Force,
+            ConstraintQuantity::PullOffForce | ConstraintQuantity::FrictionForce => {
+                Dimension::Force
+            }
             ConstraintQuantity::MeanRealPressure => Dimension::Pressure,
             ConstraintQuantity::Separation => Dimension::Length,
             ConstraintQuantity::WearRate => Dimension::WearRate,

@@ -218,6 +218,75 @@ pub fn text(r: &EvalReport) -> String {
         si(ev.wear_rate, "m³/m", 4),
         sig(ev.log10_wear_rate, 5)
     ));
+    line(format!(
+        "  wear depth rate V/(A_n L) = {} per m slid ({} per km)",
+        si(ev.wear_depth_rate, "m", 4),
+        si(ev.wear_depth_rate * 1e3, "m", 4)
+    ));
+    let req = &sc.requirements;
+    if let Some(depth) = req.allowed_wear_depth {
+        match (ev.life_sliding_distance, ev.life_cycles) {
+            (Some(l), Some(n)) => line(format!(
+                "  life: wears {} deep after {} cycles ({} of sliding at {} per cycle)",
+                si(depth, "m", 3),
+                sig_exp(n, 3),
+                si(l, "m", 3),
+                si(req.sliding_per_cycle.unwrap_or(f64::NAN), "m", 3)
+            )),
+            (Some(l), None) => line(format!(
+                "  life: wears {} deep after {} of sliding (give contact.sliding_per_cycle for cycles)",
+                si(depth, "m", 3),
+                si(l, "m", 3)
+            )),
+            _ => line(format!(
+                "  life: no wear at this load, so the allowed {} is never reached",
+                si(depth, "m", 3)
+            )),
+        }
+    }
+    if let Some(st) = &ev.stiction {
+        line(String::new());
+        line("Stiction".into());
+        line(format!(
+            "  pull-off force {} against restoring force {}: margin {} → {}",
+            si(st.pull_off_force, "N", 4),
+            si(st.restoring_force, "N", 4),
+            sig_exp(st.margin, 3),
+            match st.verdict {
+                crate::model::StictionVerdict::Sticks => "STICKS (margin ≥ 1)",
+                crate::model::StictionVerdict::Releases => "releases (margin < 1)",
+            }
+        ));
+        line(format!(
+            "  adhesion law: {} (docs/model.md §3)",
+            "JKR asperities, the paper's law"
+        ));
+        let phi = ev.indices.tabor_parameter;
+        if (0.3..=3.0).contains(&phi) {
+            line(format!(
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where neither law is exact and the DMT law can give a pull-off many decades larger (docs/model.md §7): judge stiction under both before trusting this verdict",
+                sig_exp(phi, 3)
+            ));
+        } else if phi < 0.3 && phi > 0.0 {
+            line(format!(
+                "  φ0 = {} < 0.3: the DMT law applies, and the JKR verdict above understates adhesion (docs/model.md §7)",
+                sig_exp(phi, 3)
+            ));
+        }
+    }
+    if let (Some(f), Some(tau)) = (ev.friction_force, req.shear_strength) {
+        line(String::new());
+        line("Friction (Bowden–Tabor, F = τ A_r)".into());
+        line(format!(
+            "  friction force F = {} with junction shear strength τ = {}{}",
+            si(f, "N", 4),
+            si(tau, "Pa", 3),
+            ev.friction_coefficient.map_or(String::new(), |mu| format!(
+                "; friction coefficient F/W = {}",
+                sig_exp(mu, 3)
+            ))
+        ));
+    }
     if !r.sensitivities.is_empty() {
         line(String::new());
         line(

@@ -20,6 +20,7 @@ pub fn objective_unit(name: &str) -> &'static str {
         "wear_rate" => "m³/m",
         "wear_volume" => "m³",
         "real_area" => "m²",
+        "friction_coefficient" => "",
         _ => "N",
     }
 }

@@ -106,6 +106,9 @@ fn choose_prefix(a: f64, s: &UnitShape) -> Option<(i32, &'static str)> {
 /// show are written with an exponent in the base unit (`"3.578e-197 m²"`); infinities
 /// as `"inf N"`.
 pub fn si(x: f64, unit: &str, prec: usize) -> String {
+    if unit.is_empty() {
+        return sig_exp(x, prec);
+    }
     if x == 0.0 {
         return format!("0 {unit}");
     }
