@@ -13,7 +13,9 @@
 //! a mantissa scaled by `e^{κ(h)}`, κ(h) = max(h,0)²/2.
 
 use super::coefficients::{Coefficients, Transition};
+use super::dmt::{noncontact, Noncontact};
 use super::gauss;
+use super::law::AsperityLaw;
 use super::scaled::Scaled;
 use super::special::{gauss_scaled, kappa, tail0, tail1};
 
@@ -92,12 +94,23 @@ impl Quadrature {
     }
 }
 
-/// The model at fixed coefficients: precomputes the transition once, then
-/// evaluates any separation with [`Model::at`].
+/// The model at fixed coefficients and one asperity law: precomputes the
+/// transition once, then evaluates any separation with [`Model::at`].
+///
+/// The law ([`AsperityLaw`]) decides the contact coefficients the integrals
+/// use and the non-contact term: JKR uses `coefficients` as they are; DMT uses
+/// c_a = c_d = 0 (Hertz contact, Δc = c_h²) with the constant -c_0 inside the
+/// elastic integrand, plus the attraction of `dmt.rs`.
 #[derive(Debug, Clone, Copy)]
 pub struct Model {
-    /// The load-law coefficients.
+    /// The load-law coefficients (c_a, c_0 carry γ whatever the law).
     pub coefficients: Coefficients,
+    /// The asperity law.
+    pub law: AsperityLaw,
+    /// The coefficients of the contact integrals (equal to `coefficients` for JKR).
+    contact: Coefficients,
+    /// The constant subtracted from the elastic asperity load (c_0 for DMT, 0 for JKR).
+    elastic_offset: f64,
     /// The elastic–plastic transition.
     pub transition: Transition,
     /// Quadrature settings.
@@ -134,23 +147,56 @@ pub struct Integrals {
     pub contacts: f64,
     /// ∫_{Δc}^∞ φ̄ dΔ: plastic contacts per asperity times √(2π).
     pub plastic_contacts: f64,
+    /// The non-contact (attracted, DMT) share of P̄, a mantissa scaled by
+    /// `e^{noncontact_exponent}` (not `scale_exponent`); 0 under JKR.
+    pub load_noncontact: f64,
+    /// dP̄/dh, non-contact share (same scale).
+    pub dload_dh_noncontact: f64,
+    /// d²P̄/dh², non-contact share (same scale).
+    pub d2load_dh2_noncontact: f64,
+    /// The scale exponent of the non-contact mantissas: the van der Waals term
+    /// decays as a power of h, not like e^{-h²/2}, so it keeps its own scale.
+    pub noncontact_exponent: f64,
 }
 
 impl Integrals {
     fn scaled(&self, m: f64) -> Scaled {
         Scaled::new(m, self.scale_exponent)
     }
-    /// P̄(h).
+    fn with_noncontact(&self, contact: f64, noncontact: f64) -> Scaled {
+        let c = self.scaled(contact);
+        if noncontact == 0.0 {
+            c
+        } else {
+            c.plus(Scaled::new(noncontact, self.noncontact_exponent))
+        }
+    }
+    /// P̄(h), contact and non-contact shares together.
     pub fn load(&self) -> Scaled {
+        self.with_noncontact(self.load_elastic + self.load_plastic, self.load_noncontact)
+    }
+    /// The share of P̄ carried by asperities in contact.
+    pub fn contact_load(&self) -> Scaled {
         self.scaled(self.load_elastic + self.load_plastic)
+    }
+    /// The share of P̄ carried by attracted asperities not in contact (≤ 0; 0 under JKR).
+    pub fn noncontact_load(&self) -> Scaled {
+        Scaled::new(self.load_noncontact, self.noncontact_exponent)
+    }
+    /// True when the law has a non-contact term here (DMT with adhesion).
+    pub fn has_noncontact(&self) -> bool {
+        self.load_noncontact != 0.0 || self.dload_dh_noncontact != 0.0
     }
     /// dP̄/dh.
     pub fn dload_dh(&self) -> Scaled {
-        self.scaled(self.dload_dh_elastic + self.dload_dh_plastic)
+        self.with_noncontact(
+            self.dload_dh_elastic + self.dload_dh_plastic,
+            self.dload_dh_noncontact,
+        )
     }
     /// d²P̄/dh².
     pub fn d2load_dh2(&self) -> Scaled {
-        self.scaled(self.d2load_dh2)
+        self.with_noncontact(self.d2load_dh2, self.d2load_dh2_noncontact)
     }
     /// Ā(h).
     pub fn area(&self) -> Scaled {
@@ -181,14 +227,34 @@ impl Model {
         Model::with_quadrature(coefficients, Quadrature::default())
     }
 
-    /// The model with explicit quadrature settings (validated by the caller).
+    /// The JKR model with explicit quadrature settings (validated by the caller).
     pub fn with_quadrature(coefficients: Coefficients, quadrature: Quadrature) -> Self {
+        Model::with_law(coefficients, AsperityLaw::Jkr, quadrature)
+    }
+
+    /// The model of an asperity law with explicit quadrature settings. Under
+    /// DMT the attraction range (z0 or Δ_h) must be finite and > 0.
+    pub fn with_law(coefficients: Coefficients, law: AsperityLaw, quadrature: Quadrature) -> Self {
+        let (contact, elastic_offset) = match law {
+            AsperityLaw::Jkr => (coefficients, 0.0),
+            AsperityLaw::Dmt(_) => (
+                Coefficients {
+                    c_a: 0.0,
+                    c_d: 0.0,
+                    ..coefficients
+                },
+                coefficients.c_0,
+            ),
+        };
         Model {
             coefficients,
-            transition: coefficients.transition(),
+            law,
+            contact,
+            elastic_offset,
+            transition: contact.transition(),
             quadrature,
-            s_touch: coefficients.c_d.cbrt(),
-            c_d_cubed: coefficients.c_d.cbrt().powi(3),
+            s_touch: contact.c_d.cbrt(),
+            c_d_cubed: contact.c_d.cbrt().powi(3),
         }
     }
 
@@ -246,7 +312,20 @@ impl Model {
 
     /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
-        let c = &self.coefficients;
+        let mut out = self.contact_at(h);
+        if let AsperityLaw::Dmt(attraction) = self.law {
+            let n: Noncontact = noncontact(attraction, self.coefficients.c_0, h);
+            out.load_noncontact = n.load;
+            out.dload_dh_noncontact = n.dload_dh;
+            out.d2load_dh2_noncontact = n.d2load_dh2;
+            out.noncontact_exponent = n.exponent;
+        }
+        out
+    }
+
+    /// The integrals over the asperities in contact.
+    fn contact_at(&self, h: f64) -> Integrals {
+        let c = &self.contact;
         let dc = self.transition.critical_interference;
         let scale_exponent = kappa(h);
         let mut out = Integrals {
@@ -261,6 +340,10 @@ impl Model {
             plastic_area: 0.0,
             contacts: tail0(h),
             plastic_contacts: 0.0,
+            load_noncontact: 0.0,
+            dload_dh_noncontact: 0.0,
+            d2load_dh2_noncontact: 0.0,
+            noncontact_exponent: 0.0,
         };
         if c.has_plasticity() {
             // Closed forms at u_c = h + Δc, rescaled from e^{κ(u_c)} to e^{κ(h)}.
@@ -317,8 +400,8 @@ impl Model {
                 n += 1;
             }
         }
-        let c = &self.coefficients;
-        let c_a = c.c_a;
+        let c_a = self.contact.c_a;
+        let offset = self.elastic_offset;
         // The log-weight's minimum over [0, Δc]: panels are graded from it.
         let peak = (-h).max(0.0).min(dc);
         let level_of = |a: f64, b: f64| -> f64 {
@@ -373,8 +456,13 @@ impl Model {
                     let u = u_ref + dv * q;
                     (u, -0.5 * u * u)
                 };
-                // p_e dΔ = (s⁶ - c_a s³)(4s³ - c_d) ds.
-                let pe = if c_a == 0.0 { s3 * s3 } else { s3 * (s3 - c_a) };
+                // p_e dΔ = (s⁶ - c_a s³)(4s³ - c_d) ds (JKR); DMT: c_a = c_d = 0
+                // and p_e = Δ^{3/2} - c_0 = s⁶ - c_0.
+                let pe = if c_a == 0.0 {
+                    s3 * s3 - offset
+                } else {
+                    s3 * (s3 - c_a)
+                };
                 let f = pe * jac * w * exponent.exp();
                 pl += f;
                 pd -= f * u;

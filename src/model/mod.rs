@@ -4,8 +4,10 @@
 
 pub mod asperity;
 pub mod coefficients;
+pub mod dmt;
 pub mod gauss;
 pub mod integrals;
+pub mod law;
 pub mod scaled;
 mod scene;
 pub mod sensitivity;
@@ -16,6 +18,7 @@ pub mod wear;
 
 pub use coefficients::{Coefficients, DomainError, Transition};
 pub use integrals::{Integrals, Model, Quadrature};
+pub use law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};
 pub use scaled::Scaled;
 pub use scene::{Requirements, Scene, WearArea};
 pub use sensitivity::{sensitivities, Sensitivity, SensitivityParameter};

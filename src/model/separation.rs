@@ -12,7 +12,26 @@
 //! The first two terms increase with h. When J ≥ 0 the last one does too, so
 //! P̄' changes sign at most once: P̄ falls to a single minimum (the pull-off, with
 //! adhesion) and then rises to 0⁻. Every load then has one root on the falling
-//! branch, and no scan is needed. When J < 0 (strong adhesion, soft asperities)
+//! branch, and no scan is needed.
+//!
+//! **DMT (MODEL.md §7).** Write P̄'(h) = -∫ p'(Δ) φ̄(Δ) dΔ with p' taken in the sense
+//! of distributions (the upward jump J = c_h³ > 0 at Δc is a positive point mass).
+//! The per-asperity load falls on Δ < 0 (p' ≤ 0: the attraction grows as the gap
+//! closes, for van der Waals and Dugdale alike) and rises on Δ ≥ 0 (p' ≥ 0). Then
+//!
+//! ```text
+//! P̄'(h)/φ(h) = ∫_{Δ<0} |p'(Δ)| e^{-hΔ-Δ²/2} dΔ - ∫_{Δ≥0} p'(Δ) e^{-hΔ-Δ²/2} dΔ
+//! ```
+//!
+//! where e^{-hΔ} grows with h for Δ < 0 and shrinks for Δ > 0: P̄'/φ is strictly
+//! increasing, so P̄' changes sign exactly once when γ > 0. **The single-minimum
+//! fact holds**: P̄ falls from +∞ to one minimum (the pull-off) and rises to 0⁻
+//! (like -c_0 √(2π) z0²/h² under van der Waals, a power law). **So do the
+//! single-root facts**: a compressive load has exactly one root; a tensile load
+//! above the minimum has one root on the falling branch (the one MODEL.md §4
+//! chooses) and one on the rising branch; below it, the surfaces separate.
+//! tests/dmt.rs checks both on a grid of h for both attractions. The searches
+//! below are the J ≥ 0 paths, with the non-contact share carried at its own scale. When J < 0 (strong adhesion, soft asperities)
 //! the last term is a bump of width ~1 around h = -Δc that can add a local
 //! maximum and minimum; there the critical points are isolated by a sign scan of
 //! P̄' (step 1/8 across the bump, growing away from it, on an interval outside which the
@@ -100,9 +119,14 @@ impl Counter<'_> {
     }
 }
 
-/// The sign-carrying mantissa of P̄'(h): continuous in h.
+/// The sign-carrying mantissa of P̄'(h): continuous in h. Under DMT it is
+/// P̄' e^{k(h)} with k the smaller of the contact and non-contact scales.
 fn slope(at: &Integrals) -> f64 {
-    at.dload_dh_elastic + at.dload_dh_plastic
+    if at.has_noncontact() {
+        at.dload_dh().mantissa
+    } else {
+        at.dload_dh_elastic + at.dload_dh_plastic
+    }
 }
 
 /// The critical points of P̄ (see the module docs for the method).
@@ -133,7 +157,8 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     let increasing_part = |at: &Integrals| -> f64 {
         let h = at.separation;
         // P̄'/φ(h) as Scaled, minus the decreasing bump term.
-        let f = Scaled::new(slope(at), at.scale_exponent - 0.5 * h * h);
+        let d = at.dload_dh();
+        let f = Scaled::new(d.mantissa, d.exponent - 0.5 * h * h);
         let bump = if neg_jump > 0.0 {
             Scaled::new(neg_jump, h * dc + 0.5 * dc * dc)
         } else {
@@ -142,10 +167,11 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         f.minus(bump).signum()
     };
     // The large-h expansion puts the minimum near h ≈ p'(0)/|p(0)| = (3/2) c_d^{-1/3}/c_a.
-    let guess = if c.has_adhesion() {
-        (1.5 / (c.c_d.cbrt() * c.c_a)).clamp(0.5, 1e6)
-    } else {
-        1.0
+    let guess = match model.law {
+        _ if !c.has_adhesion() => 1.0,
+        super::law::AsperityLaw::Jkr => (1.5 / (c.c_d.cbrt() * c.c_a)).clamp(0.5, 1e6),
+        // The minimum lies within a few units of the attraction's reach.
+        super::law::AsperityLaw::Dmt(a) => 1.0 + a.range().min(1e3),
     };
     if neg_jump == 0.0 {
         // One sign change of P̄': Newton on P̄' with P̄'' from the quadrature.
@@ -254,8 +280,20 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
         // Newton on g = P̄' e^{κ(h)}, which for h > 0 is the smooth, increasing
         // p(0)-less-integral form (module docs) rather than a Gaussian tail:
         // g' = (P̄'' + h P̄') e^{κ(h)}.
-        let (d1, d2) = (at.dload_dh_elastic + at.dload_dh_plastic, at.d2load_dh2);
-        let dg = if h > 0.0 { d2 + h * d1 } else { d2 };
+        let (d1, dg) = if at.has_noncontact() {
+            // g = P̄' e^{k}, k = u_n²/2 of the larger share's scale (u_n = max(h, 0)
+            // for the contact share; h, 0 or h - Δ_h for the non-contact one), so
+            // g' = (P̄'' + k' P̄') e^{k} with k' = ±√(2k), the sign of h.
+            let s1 = at.dload_dh();
+            let k = s1.exponent;
+            let d2 = at.d2load_dh2();
+            let k_slope = (2.0 * k).sqrt().copysign(h);
+            let d2_at_k = d2.mantissa * (k - d2.exponent).exp();
+            (s1.mantissa, d2_at_k + k_slope * s1.mantissa)
+        } else {
+            let (d1, d2) = (at.dload_dh_elastic + at.dload_dh_plastic, at.d2load_dh2);
+            (d1, if h > 0.0 { d2 + h * d1 } else { d2 })
+        };
         let newton = h - d1 / dg;
         let curvature_ok = dg > 0.0;
         if curvature_ok && (newton - h).abs() <= 4.0 * f64::EPSILON * h.abs().max(1.0) {

@@ -1,0 +1,158 @@
+//! The asperity laws: how one asperity's load depends on its interference.
+//!
+//! The evaluator ([`super::Model`]) is built from one [`AsperityLaw`]:
+//!
+//! * [`AsperityLaw::Jkr`] — MODEL.md §3: JKR elastic asperities on the loading
+//!   branch, plastic junctions beyond Δc; surface forces act only inside contacts.
+//!   Its integrals live in `integrals.rs` (elastic quadrature in s = Δ1^{1/4}).
+//! * [`AsperityLaw::Dmt`] — MODEL.md §7: Hertz contact with the DMT adhesive
+//!   offset `-c_0`, Δc = c_h², and attraction of the asperities that are *not* in
+//!   contact, by a Dugdale stress of range Δ_h or by van der Waals forces with
+//!   equilibrium distance z0. Its non-contact term lives in `dmt.rs`.
+//!
+//! A law contributes (a) the coefficients its contact integrals use, (b) the
+//! elastic–plastic transition, and (c) an optional non-contact load. A third law
+//! (Maugis–Dugdale) is one more variant here, one module for its integrals, and
+//! its reference table; the separation and pull-off searches only see P̄, P̄',
+//! P̄'' and the sign of the load jump.
+
+use serde::Serialize;
+
+/// Which asperity law a scene uses (the problem-file key `adhesion_model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum AdhesionModel {
+    /// Johnson–Kendall–Roberts asperities (MODEL.md §3), for φ0 > 3.
+    #[default]
+    Jkr,
+    /// Derjaguin–Muller–Toporov asperities with non-contact attraction (MODEL.md §7), for φ0 < 0.3.
+    Dmt,
+}
+
+impl AdhesionModel {
+    /// The word used in problem files and reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            AdhesionModel::Jkr => "jkr",
+            AdhesionModel::Dmt => "dmt",
+        }
+    }
+
+    /// The other law.
+    pub fn other(self) -> AdhesionModel {
+        match self {
+            AdhesionModel::Jkr => AdhesionModel::Dmt,
+            AdhesionModel::Dmt => AdhesionModel::Jkr,
+        }
+    }
+}
+
+/// How non-contacting asperities are attracted under DMT (the key `attraction`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum AttractionKind {
+    /// Van der Waals: a power-law force -A R / (6 (g + Z0)²), A = 12π Z0² γ.
+    #[default]
+    VanDerWaals,
+    /// Dugdale: a constant stress σ0 = 1.03 γ/Z0 over a range h0 = Z0/1.03.
+    Dugdale,
+}
+
+impl AttractionKind {
+    /// The word used in problem files and reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            AttractionKind::VanDerWaals => "van_der_waals",
+            AttractionKind::Dugdale => "dugdale",
+        }
+    }
+
+    /// The non-dimensional range of the attraction for an interatomic distance
+    /// Z0 and roughness σ: z0 = Z0/σ (van der Waals) or Δ_h = Z0/(1.03 σ) (Dugdale).
+    pub fn range(self, interatomic_distance: f64, sigma: f64) -> f64 {
+        match self {
+            AttractionKind::VanDerWaals => interatomic_distance / sigma,
+            AttractionKind::Dugdale => interatomic_distance / (DUGDALE_STRESS_FACTOR * sigma),
+        }
+    }
+}
+
+/// σ0 = 1.03 γ/Z0: the Dugdale stress that matches the Lennard-Jones peak
+/// (Maugis 1992; Johnson & Greenwood 1997), so h0 = γ/σ0 = Z0/1.03.
+pub const DUGDALE_STRESS_FACTOR: f64 = 1.03;
+
+/// The attraction of non-contacting asperities, non-dimensional.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Attraction {
+    /// p(Δ) = -c_0 (z0/(z0 - Δ))² for Δ < 0.
+    VanDerWaals {
+        /// z0 = Z0/σ > 0.
+        range: f64,
+    },
+    /// p(Δ) = -c_0 (1 + Δ/Δ_h) for -Δ_h ≤ Δ < 0, 0 below.
+    Dugdale {
+        /// Δ_h = h0/σ > 0.
+        range: f64,
+    },
+}
+
+impl Attraction {
+    /// From the kind and its non-dimensional range.
+    pub fn new(kind: AttractionKind, range: f64) -> Self {
+        match kind {
+            AttractionKind::VanDerWaals => Attraction::VanDerWaals { range },
+            AttractionKind::Dugdale => Attraction::Dugdale { range },
+        }
+    }
+
+    /// Which kind.
+    pub fn kind(self) -> AttractionKind {
+        match self {
+            Attraction::VanDerWaals { .. } => AttractionKind::VanDerWaals,
+            Attraction::Dugdale { .. } => AttractionKind::Dugdale,
+        }
+    }
+
+    /// z0 or Δ_h.
+    pub fn range(self) -> f64 {
+        match self {
+            Attraction::VanDerWaals { range } | Attraction::Dugdale { range } => range,
+        }
+    }
+}
+
+/// The asperity law a [`super::Model`] is built from.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum AsperityLaw {
+    /// MODEL.md §3 (the paper's law).
+    #[default]
+    Jkr,
+    /// MODEL.md §7.
+    Dmt(Attraction),
+}
+
+impl AsperityLaw {
+    /// The law's name.
+    pub fn adhesion_model(self) -> AdhesionModel {
+        match self {
+            AsperityLaw::Jkr => AdhesionModel::Jkr,
+            AsperityLaw::Dmt(_) => AdhesionModel::Dmt,
+        }
+    }
+
+    /// The law for a scene's choice, with its attraction range from Z0 and σ.
+    pub fn of(
+        model: AdhesionModel,
+        attraction: AttractionKind,
+        interatomic_distance: f64,
+        sigma: f64,
+    ) -> Self {
+        match model {
+            AdhesionModel::Jkr => AsperityLaw::Jkr,
+            AdhesionModel::Dmt => AsperityLaw::Dmt(Attraction::new(
+                attraction,
+                attraction.range(interatomic_distance, sigma),
+            )),
+        }
+    }
+}
