@@ -236,3 +236,33 @@ fn friction_and_stiction_need_their_inputs() {
         "{err}"
     );
 }
+
+/// A baseline that breaks a limit is said to be infeasible, with the limit, and no
+/// improvement factor is claimed; constraint values carry units; the optimum's regime
+/// warnings are in the text.
+#[test]
+fn optimize_text_says_an_infeasible_baseline_plainly() {
+    let text = std::fs::read_to_string("problems/micro-gear-study.toml")
+        .unwrap()
+        .replacen("max = 1.0", "max = 0.3", 1);
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("tight-psi.toml");
+    std::fs::write(&path, text).unwrap();
+    let t = stdout_of(&["optimize", path.to_str().unwrap()]);
+    assert!(t.contains("Status: optimal"), "{t}");
+    assert!(
+        t.contains(
+            "the baseline is INFEASIBLE: plasticity_index = 0.4605 breaks its max of 0.3000"
+        ),
+        "{t}"
+    );
+    assert!(!t.contains("improvement ×"), "{t}");
+    assert!(t.contains("WARNING: Tabor parameter"), "{t}");
+    let j = stdout_of(&["optimize", path.to_str().unwrap(), "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&j).unwrap();
+    assert_eq!(v["baseline_feasible"], false);
+    assert_eq!(v["baseline_violations"][0]["quantity"], "plasticity_index");
+    // Units on constraint values: the pull-off limit of the shipped study.
+    let t = stdout_of(&["optimize", "problems/micro-gear-study.toml"]);
+    assert!(t.contains("1.000 µN"), "{t}");
+    assert!(t.contains("(improvement ×"), "{t}");
+}

@@ -7,6 +7,73 @@ use super::{number, si, sig, sig_exp};
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::problem::units::format_quantity;
 
+/// A constraint the baseline design breaks: its name, the baseline's value, the limit
+/// broken and which side ("min" or "max").
+pub struct BaselineViolation {
+    /// The constrained quantity.
+    pub quantity: &'static str,
+    /// Its value at the baseline (SI); None where it does not exist there.
+    pub value: Option<f64>,
+    /// The limit it breaks (SI).
+    pub limit: f64,
+    /// "min" or "max".
+    pub side: &'static str,
+}
+
+/// The constraints the baseline (the problem file's scene) breaks.
+pub fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
+    use crate::problem::{ConstraintQuantity, DesignQuantity, Named};
+    let Some(ev) = &o.baseline_evaluation else {
+        return Vec::new();
+    };
+    let mut scene = o.scene.clone();
+    for (n, v) in o.names.iter().zip(&o.baseline_design) {
+        if let Some(q) = DesignQuantity::from_name(n) {
+            q.set(&mut scene, *v);
+        }
+    }
+    let mut out = Vec::new();
+    for c in &o.constraints {
+        let Some(q) = ConstraintQuantity::from_name(c.quantity) else {
+            continue;
+        };
+        let value = crate::optimize::functions::quantity_value(q, ev, &scene);
+        // Relative slack as the optimiser's feasibility test allows.
+        let tol = |limit: f64| 1e-9 * limit.abs().max(f64::MIN_POSITIVE);
+        if let Some(min) = c.min {
+            if value.is_none_or(|v| v < min - tol(min)) {
+                out.push(BaselineViolation {
+                    quantity: c.quantity,
+                    value,
+                    limit: min,
+                    side: "min",
+                });
+            }
+        }
+        if let Some(max) = c.max {
+            if value.is_none_or(|v| v > max + tol(max)) {
+                out.push(BaselineViolation {
+                    quantity: c.quantity,
+                    value,
+                    limit: max,
+                    side: "max",
+                });
+            }
+        }
+    }
+    out
+}
+
+/// A constraint's value or limit with its unit.
+fn constraint_quantity(name: &str, x: f64) -> String {
+    use crate::problem::{ConstraintQuantity, Named};
+    let d = ConstraintQuantity::from_name(name)
+        .map_or(crate::problem::units::Dimension::Dimensionless, |q| {
+            q.dimension()
+        });
+    super::units::quantity(x, d, 4)
+}
+
 fn design_object(names: &[&str], values: &[f64]) -> Value {
     let mut m = Map::new();
     for (n, v) in names.iter().zip(values) {
@@ -38,6 +105,14 @@ pub fn json(name: &str, o: &Optimum) -> String {
         "best_start": o.best_start,
         "time_seconds": o.time_seconds,
         "evaluation": super::words::evaluation_json(&o.evaluation),
+        "warnings": super::words::warnings(&o.evaluation),
+        "baseline_feasible": baseline_violations(o).is_empty(),
+        "baseline_violations": baseline_violations(o).iter().map(|b| json!({
+            "quantity": b.quantity,
+            "value": b.value,
+            "limit": b.limit,
+            "side": b.side,
+        })).collect::<Vec<_>>(),
     });
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
     s.push('\n');
@@ -120,13 +195,38 @@ pub fn text(name: &str, o: &Optimum) -> String {
     }
     line(String::new());
     let unit = super::objective_unit(o.objective_name);
+    let broken = baseline_violations(o);
     line(format!(
-        "{}: {} at the optimum, {} at the baseline (improvement ×{})",
+        "{}: {} at the optimum, {} at the baseline{}",
         o.objective_name,
         si(o.objective, unit, 4),
         si(o.baseline_objective, unit, 4),
-        sig(o.baseline_objective / o.objective, 4)
+        if broken.is_empty() {
+            format!(
+                " (improvement ×{})",
+                sig(o.baseline_objective / o.objective, 4)
+            )
+        } else {
+            String::new()
+        }
     ));
+    for b in &broken {
+        line(format!(
+            "  the baseline is INFEASIBLE: {} = {} breaks its {} of {}{}",
+            b.quantity,
+            b.value
+                .map_or("(undefined)".to_string(), |v| constraint_quantity(
+                    b.quantity, v
+                )),
+            b.side,
+            constraint_quantity(b.quantity, b.limit),
+            if o.status == OptimizationStatus::Infeasible {
+                ""
+            } else {
+                "; the optimum meets every limit, so compare it with feasible designs, not with the baseline"
+            }
+        ));
+    }
     if o.objective_name != "wear_rate" {
         line(format!(
             "wear rate: {} at the optimum, {} at the baseline",
@@ -143,7 +243,9 @@ pub fn text(name: &str, o: &Optimum) -> String {
             "constraint", "value", "min", "max", "active", "multiplier", "shadow price"
         ));
         for c in &o.constraints {
-            let f = |x: Option<f64>| x.map_or("—".to_string(), |v| sig_exp(v, 4));
+            let f = |x: Option<f64>| {
+                x.map_or("—".to_string(), |v| constraint_quantity(c.quantity, v))
+            };
             line(format!(
                 "{:<22} {:>14} {:>12} {:>12} {:>7} {:>12} {:>14}",
                 c.quantity,
@@ -162,6 +264,14 @@ pub fn text(name: &str, o: &Optimum) -> String {
             "  conflicting constraints (violated at the least-violating design): {}",
             o.conflicting.join(", ")
         ));
+    }
+    let warnings = super::words::warnings(&o.evaluation);
+    if !warnings.is_empty() {
+        line(String::new());
+        line("Warnings at the optimum".into());
+        for w in warnings {
+            line(format!("  WARNING: {w}"));
+        }
     }
     line(String::new());
     line(format!(
