@@ -30,7 +30,7 @@ fn studies(c: &mut Criterion) {
             settings: &p.study.optimizer,
         };
         g.bench_function(name, |b| {
-            b.iter(|| one_thread.install(|| black_box(optimize(black_box(&study), false).unwrap())))
+            b.iter(|| one_thread.install(|| black_box(optimize(black_box(&study)).unwrap())))
         });
     }
     g.finish();

@@ -29,7 +29,7 @@ fn rank(p: &Problem) -> MaterialRanking {
         .iter()
         .map(|n| catalogue::lookup(n).unwrap())
         .collect();
-    rank_materials(&study, &materials, false).unwrap()
+    rank_materials(&study, &materials, None).unwrap()
 }
 
 #[test]
@@ -69,16 +69,13 @@ fn ranking_agrees_with_each_material_studied_alone() {
             .find(|v| v.name == DesignQuantity::WorkOfAdhesion)
             .unwrap();
         scene.work_of_adhesion = scene.work_of_adhesion.clamp(wa.min, wa.max);
-        let alone = optimize(
-            &Study {
-                scene: &scene,
-                design: &design,
-                objective: p.study.objective,
-                constraints: &p.study.constraints,
-                settings: &p.study.optimizer,
-            },
-            false,
-        )
+        let alone = optimize(&Study {
+            scene: &scene,
+            design: &design,
+            objective: p.study.objective,
+            constraints: &p.study.constraints,
+            settings: &p.study.optimizer,
+        })
         .unwrap();
         let MaterialOutcome::Optimized(o) = &r.outcome else {
             panic!("{}: not optimised", r.name())

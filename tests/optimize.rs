@@ -20,7 +20,7 @@ fn load(name: &str) -> Problem {
 }
 
 fn run(p: &Problem) -> Optimum {
-    optimize(&study(p), false).expect("study runs")
+    optimize(&study(p)).expect("study runs")
 }
 
 fn study(p: &Problem) -> Study<'_> {
@@ -228,7 +228,7 @@ fn closed_form_optimum_to_1e_8() {
         constraints: &constraints,
         settings: &settings,
     };
-    let o = optimize(&s, false).unwrap();
+    let o = optimize(&s).unwrap();
     assert_eq!(o.status, OptimizationStatus::Optimal);
     let e = wearopt::model::wear::equivalent_modulus(&p.scene);
     let exact = p.scene.asperity_radius * (psi_max * p.scene.hardness / e).powi(2);
@@ -293,16 +293,13 @@ fn custom(
     constraints: &[Constraint],
     settings: &OptimizerSettings,
 ) -> Optimum {
-    optimize(
-        &Study {
-            scene,
-            design,
-            objective: Some(Objective::WearRate),
-            constraints,
-            settings,
-        },
-        false,
-    )
+    optimize(&Study {
+        scene,
+        design,
+        objective: Some(Objective::WearRate),
+        constraints,
+        settings,
+    })
     .unwrap()
 }
 

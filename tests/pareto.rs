@@ -68,7 +68,7 @@ fn assert_points_meet_constraints(p: &Problem, front: &Front) {
         ..Default::default()
     };
     for pt in &front.points {
-        if pt.status == OptimizationStatus::Infeasible {
+        if !pt.feasible {
             continue;
         }
         let scene = scene_at(p, &pt.design);
@@ -149,7 +149,7 @@ fn micro_gear_low_has_no_trade_off_and_ends_at_the_least_wear_design() {
     assert_points_meet_constraints(&p, &front);
     assert_front_is_monotone_and_non_dominated(&front);
     // The single front point is the study's own least-wear design.
-    let single = optimize(&s, false).unwrap();
+    let single = optimize(&s).unwrap();
     let end = &front.points[0];
     assert!(
         rel(end.objective, single.objective) < 1e-6,
@@ -158,13 +158,10 @@ fn micro_gear_low_has_no_trade_off_and_ends_at_the_least_wear_design() {
         single.objective
     );
     // ... and the least pull-off the study can reach is below the floor too.
-    let least_adhesion = optimize(
-        &Study {
-            objective: Some(wearopt::problem::Objective::PullOffForce),
-            ..s.clone()
-        },
-        false,
-    )
+    let least_adhesion = optimize(&Study {
+        objective: Some(wearopt::problem::Objective::PullOffForce),
+        ..s.clone()
+    })
     .unwrap();
     assert!(least_adhesion.evaluation.pull_off_force.unwrap() < PULL_OFF_FLOOR);
     assert!(end.log10_adhesion < PULL_OFF_FLOOR.log10());
@@ -204,13 +201,10 @@ fn micro_gear_high_is_a_trade_off_whose_ends_agree_with_single_runs() {
         min: Some(100e-6),
         max: Some(100e-6),
     });
-    let single = optimize(
-        &Study {
-            constraints: &pinned,
-            ..s.clone()
-        },
-        false,
-    )
+    let single = optimize(&Study {
+        constraints: &pinned,
+        ..s.clone()
+    })
     .unwrap();
     assert_eq!(single.status, OptimizationStatus::Optimal);
     assert!(
@@ -221,7 +215,7 @@ fn micro_gear_high_is_a_trade_off_whose_ends_agree_with_single_runs() {
     );
     // The least-wear end is the study's least-wear design.
     let last = f[f.len() - 1];
-    let least = optimize(&s, false).unwrap();
+    let least = optimize(&s).unwrap();
     assert!(
         rel(last.objective, least.objective) < 1e-6,
         "{} vs {}",
@@ -250,11 +244,7 @@ fn elastic_adhesion_index_is_inverted_and_work_of_adhesion_is_fixed_in_the_scene
     assert_ne!(theta.status, FrontStatus::Infeasible);
     assert_points_meet_constraints(&p, &theta);
     assert_front_is_monotone_and_non_dominated(&theta);
-    let feasible: Vec<_> = theta
-        .points
-        .iter()
-        .filter(|q| q.status != OptimizationStatus::Infeasible)
-        .collect();
+    let feasible: Vec<_> = theta.points.iter().filter(|q| q.feasible).collect();
     for w in feasible.windows(2) {
         assert!(
             w[1].adhesion < w[0].adhesion,
@@ -278,7 +268,7 @@ fn elastic_adhesion_index_is_inverted_and_work_of_adhesion_is_fixed_in_the_scene
         .position(|d| d.name == DesignQuantity::WorkOfAdhesion)
         .unwrap();
     for q in &gamma.points {
-        if q.target_kind == "equal" && q.status != OptimizationStatus::Infeasible {
+        if q.target_kind == "equal" && q.feasible {
             assert!(rel(q.design[gi], q.target) < 1e-12, "{q:?}");
             assert!(rel(q.adhesion, q.target) < 1e-12);
         }

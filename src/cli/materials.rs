@@ -39,8 +39,15 @@ pub fn run(
         constraints: &problem.study.constraints,
         settings: &problem.study.optimizer,
     };
-    let ranking = rank_materials(&study, &materials, verbose)
-        .map_err(|e| super::usage(format!("{}: {e}", file.display())))?;
+    let tables = super::verbose::Tables::default();
+    let make = |start: usize| tables.observer(start);
+    let ranking = rank_materials(
+        &study,
+        &materials,
+        verbose.then_some(&make as wearopt::optimize::ObserverFactory),
+    )
+    .map_err(|e| super::usage(format!("{}: {e}", file.display())))?;
+    tables.print();
     if let Some(path) = trace {
         let mut csv = String::new();
         for r in &ranking.results {

@@ -6,6 +6,7 @@ mod fit_adhesion;
 mod materials;
 mod pareto;
 mod sweep;
+mod verbose;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -232,8 +233,14 @@ fn optimize(
         constraints: &problem.study.constraints,
         settings: &problem.study.optimizer,
     };
-    let optimum = wearopt::optimize::optimize(&study, verbose)
-        .map_err(|e| usage(format!("{}: {e}", file.display())))?;
+    let tables = verbose::Tables::default();
+    let make = |start: usize| tables.observer(start);
+    let optimum = wearopt::optimize::optimize_observed(
+        &study,
+        verbose.then_some(&make as wearopt::optimize::ObserverFactory),
+    )
+    .map_err(|e| usage(format!("{}: {e}", file.display())))?;
+    tables.print();
     if let Some(path) = trace {
         write_output(&path, &report::optimize::trace_csv(&optimum), "the trace")?;
     }

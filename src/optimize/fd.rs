@@ -1,114 +1,167 @@
-//! Finite-difference sensitivities of the study functions, with error estimates.
+//! Finite-difference gradients of a [`NonlinearProgram`], with error estimates.
 //!
-//! Step rule: in unit coordinates (the box is [0, 1]^n, log-scaled), central
-//! differences with h = 1e-4 and 2h, combined by Richardson extrapolation,
-//! `D = (4 D_h - D_2h)/3`. With `D_h = f' + c h² + d h⁴`, `|D_h - D_2h|/3 ≈ c h²`
-//! is the error Richardson removed and `4 d h⁴` the one left; assuming the
-//! derivatives vary on scales ℓ ≥ 0.01 of the unit box, `d h⁴ ≲ c h² (h/ℓ)²`, so
-//! the estimate reported is `|D_h - D_2h|/3 · (h/ℓ)² + 3η/h`, the second term the
-//! rounding from an evaluator accurate to η ≈ 1e-13 in ln units. Near a bound the stencil shifts inside the box (one-sided second-order
-//! differences `(-3f₀ + 4f₁ - f₂)/(2h)`, with the same pair-of-steps estimate).
-//! Evaluations run in parallel with rayon; the result does not depend on the
-//! thread count because each component is computed from the same points.
+//! Step rule: for variable i, `h = fd_step · max(|x_i|, scale_i)` (the
+//! problem's own scale, never the width of the box), central differences with
+//! h and 2h combined by Richardson extrapolation, `D = (4 D_h - D_2h)/3`. With
+//! `D_h = f' + c h² + d h⁴`, `|D_h - D_2h|/3 ≈ c h²` is the error Richardson
+//! removed; what is left is of order `c h² (h/ℓ)²` for derivatives varying on
+//! a scale ℓ; the estimate reported is `|D_h - D_2h|/3 · (fd_step/0.01)² +
+//! 3 η (1 + |f|)/h` with η = 1e-13 for the evaluation noise. Where a bound is
+//! closer than 2h the stencil moves inside the box (one-sided second-order
+//! differences `(-3f₀ + 4f₁ - f₂)/(2h)` with h and 2h); where a stencil point
+//! cannot be evaluated the other side, then halved steps, are tried. Every
+//! stencil point lies inside the bounds. Evaluations run in parallel (rayon);
+//! the result does not depend on the thread count.
 
 use rayon::prelude::*;
 
-use super::functions::{Point, StudyFunctions};
+use super::program::{NonlinearProgram, Values};
 
-/// The unit-coordinate step h.
-pub const STEP: f64 = 1e-4;
-
-/// The smallest scale (in unit coordinates) on which derivatives are assumed to vary.
-pub const VARIATION_SCALE: f64 = 0.01;
-
-/// Accuracy of one evaluation of ln(objective) or a row, used in the estimate.
+/// Accuracy of one evaluation relative to 1 + |value|, used in the estimate.
 pub const EVALUATION_NOISE: f64 = 1e-13;
 
 /// Gradients of the objective and every row at one point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Gradients {
-    /// ∇ ln(objective).
+    /// ∇f.
     pub objective: Vec<f64>,
-    /// ∇ g_j, one vector per row.
+    /// ∇g_j, one vector per row.
     pub rows: Vec<Vec<f64>>,
     /// The largest estimated absolute error over all components.
     pub error: f64,
-    /// Model evaluations spent.
+    /// Evaluations spent.
     pub evaluations: usize,
 }
 
-/// Gradients at `at` (whose values are known). None if the stencil leaves the
-/// contact region in every direction it could use.
-pub fn gradients(f: &StudyFunctions, at: &Point) -> Option<Gradients> {
-    let n = f.dim();
-    let m = f.rows.len();
-    // Stencil offsets per variable: ±h, ±2h centred, or shifted inside the box.
-    let stencils: Vec<[f64; 4]> =
-        at.x.iter()
-            .map(|&xi| {
-                if xi - 2.0 * STEP >= 0.0 && xi + 2.0 * STEP <= 1.0 {
-                    [STEP, -STEP, 2.0 * STEP, -2.0 * STEP]
-                } else if xi - 2.0 * STEP < 0.0 {
-                    [STEP, 2.0 * STEP, 3.0 * STEP, 4.0 * STEP]
-                } else {
-                    [-STEP, -2.0 * STEP, -3.0 * STEP, -4.0 * STEP]
-                }
-            })
-            .collect();
-    let jobs: Vec<(usize, f64)> = (0..n)
-        .flat_map(|i| stencils[i].iter().map(move |&d| (i, d)))
-        .collect();
-    let values: Vec<Option<Point>> = jobs
-        .par_iter()
-        .map(|&(i, d)| {
-            let mut x = at.x.clone();
-            x[i] += d;
-            f.at_from(&x, at.hints)
-        })
-        .collect();
+/// Where the four stencil points of one variable lie (offsets from x_i).
+fn stencil(x: f64, lo: f64, hi: f64, h: f64, flip: bool) -> Option<[f64; 4]> {
+    let centred = [h, -h, 2.0 * h, -2.0 * h];
+    let up = [h, 2.0 * h, 3.0 * h, 4.0 * h];
+    let down = [-h, -2.0 * h, -3.0 * h, -4.0 * h];
+    let fits = |s: &[f64; 4]| s.iter().all(|d| x + d >= lo && x + d <= hi);
+    let order: [[f64; 4]; 3] = if flip {
+        [down, up, centred]
+    } else {
+        [centred, up, down]
+    };
+    order.into_iter().find(|s| fits(s))
+}
+
+/// Gradients at `x` (whose values `at` are known), with steps scaled by
+/// `fd_step`. None when no stencil of any tried step can be evaluated.
+pub fn gradients<P: NonlinearProgram + Sync + ?Sized>(
+    problem: &P,
+    x: &[f64],
+    at: &Values,
+    fd_step: f64,
+    scale: &[f64],
+    bounds: &(Vec<f64>, Vec<f64>),
+) -> Option<Gradients> {
+    let n = x.len();
+    let m = at.constraints.len();
     let mut objective = vec![0.0; n];
     let mut rows = vec![vec![0.0; n]; m];
     let mut error = 0.0f64;
+    let mut evaluations = 0;
+    // First try every variable with its preferred stencil in one parallel batch.
+    let base_h: Vec<f64> = (0..n).map(|i| fd_step * x[i].abs().max(scale[i])).collect();
+    let first: Vec<Option<[f64; 4]>> = (0..n)
+        .map(|i| stencil(x[i], bounds.0[i], bounds.1[i], base_h[i], false))
+        .collect();
+    let jobs: Vec<(usize, f64)> = (0..n)
+        .flat_map(|i| first[i].into_iter().flatten().map(move |d| (i, d)))
+        .collect();
+    let values: Vec<Option<Values>> = jobs
+        .par_iter()
+        .map(|&(i, d)| {
+            let mut y = x.to_vec();
+            y[i] += d;
+            problem.evaluate(&y, &at.warm_start)
+        })
+        .collect();
+    evaluations += values.len();
+    let mut k = 0;
     for i in 0..n {
-        let pts: Vec<&Point> = values[4 * i..4 * i + 4].iter().flatten().collect();
-        if pts.len() < 4 {
-            return None;
+        let mut found = None;
+        if let Some(s) = first[i] {
+            let pts: Vec<&Values> = values[k..k + 4].iter().flatten().collect();
+            k += 4;
+            if pts.len() == 4 {
+                found = Some((
+                    s,
+                    [pts[0], pts[1], pts[2], pts[3]].map(Clone::clone),
+                    base_h[i],
+                ));
+            }
         }
-        let centred = stencils[i][1] < 0.0 && stencils[i][0] > 0.0;
-        let sign = stencils[i][0].signum();
-        let component = |get: &dyn Fn(&Point) -> f64| -> (f64, f64) {
+        // Fall back: the other side, then smaller steps, serially.
+        let mut h = base_h[i];
+        let mut tries = 0;
+        while found.is_none() && tries < 8 {
+            let flip = tries % 2 == 0;
+            if tries > 0 && flip {
+                h *= 0.25;
+            }
+            tries += 1;
+            let Some(s) = stencil(x[i], bounds.0[i], bounds.1[i], h, flip) else {
+                continue;
+            };
+            let pts: Vec<Option<Values>> = s
+                .par_iter()
+                .map(|&d| {
+                    let mut y = x.to_vec();
+                    y[i] += d;
+                    problem.evaluate(&y, &at.warm_start)
+                })
+                .collect();
+            evaluations += 4;
+            if pts.iter().all(Option::is_some) {
+                let p: Vec<Values> = pts.into_iter().flatten().collect();
+                found = Some((
+                    s,
+                    [p[0].clone(), p[1].clone(), p[2].clone(), p[3].clone()],
+                    h,
+                ));
+            }
+        }
+        let (s, pts, h) = found?;
+        let centred = s[0] > 0.0 && s[1] < 0.0;
+        let sign = s[0].signum();
+        let component = |get: &dyn Fn(&Values) -> f64| -> (f64, f64) {
             let f0 = get(at);
             let (d_h, d_2h) = if centred {
                 (
-                    (get(pts[0]) - get(pts[1])) / (2.0 * STEP),
-                    (get(pts[2]) - get(pts[3])) / (4.0 * STEP),
+                    (get(&pts[0]) - get(&pts[1])) / (2.0 * h),
+                    (get(&pts[2]) - get(&pts[3])) / (4.0 * h),
                 )
             } else {
-                // One-sided, second order, with steps h and 2h.
-                let (f1, f2, f4) = (get(pts[0]), get(pts[1]), get(pts[3]));
+                let (f1, f2, f4) = (get(&pts[0]), get(&pts[1]), get(&pts[3]));
                 (
-                    sign * (-3.0 * f0 + 4.0 * f1 - f2) / (2.0 * STEP),
-                    sign * (-3.0 * f0 + 4.0 * f2 - f4) / (4.0 * STEP),
+                    sign * (-3.0 * f0 + 4.0 * f1 - f2) / (2.0 * h),
+                    sign * (-3.0 * f0 + 4.0 * f2 - f4) / (4.0 * h),
                 )
             };
             let value = (4.0 * d_h - d_2h) / 3.0;
-            let err = (d_h - d_2h).abs() / 3.0 * (STEP / VARIATION_SCALE).powi(2)
-                + 3.0 * EVALUATION_NOISE / STEP;
+            let err = (d_h - d_2h).abs() / 3.0 * (fd_step / 0.01).powi(2)
+                + 3.0 * EVALUATION_NOISE * (1.0 + f0.abs()) / h;
             (value, err)
         };
-        let (g, e) = component(&|p: &Point| p.objective);
+        let (g, e) = component(&|p: &Values| p.objective);
         objective[i] = g;
         error = error.max(e);
         for (j, row) in rows.iter_mut().enumerate() {
-            let (g, e) = component(&|p: &Point| p.rows[j]);
+            let (g, e) = component(&|p: &Values| p.constraints[j]);
             row[i] = g;
-            error = error.max(e);
+            // Rows far inside their limit do not take part; their error is not the gradient's.
+            if at.constraints[j] > -1.0 {
+                error = error.max(e);
+            }
         }
     }
     Some(Gradients {
         objective,
         rows,
         error,
-        evaluations: values.len(),
+        evaluations,
     })
 }

@@ -5,6 +5,12 @@ use crate::model::{evaluate_from, Evaluation, EvaluationOptions, Quadrature, Sea
 use crate::problem::{Constraint, ConstraintQuantity, Objective};
 
 use super::design::DesignSpace;
+use super::program::{NonlinearProgram, Values};
+
+/// A row is never reported below this (ln units, a factor e^-700 inside its
+/// limit): a row that far from its limit cannot matter, and its value must
+/// not swamp the subproblem (a pull-off of 10^-2.6e8 N against a 1 µN cap).
+pub const ROW_FLOOR: f64 = -700.0;
 
 /// ln of the smallest/largest magnitudes kept finite (ln of 1e-323 and 1e308 ≈ ±744/709).
 const LN_FLOOR: f64 = -744.0;
@@ -305,6 +311,13 @@ impl StudyFunctions {
                     }
                 }
             })
+            .map(|g: f64| {
+                if g.is_nan() {
+                    -ROW_FLOOR
+                } else {
+                    g.max(ROW_FLOOR)
+                }
+            })
             .collect();
         Point {
             x: x.to_vec(),
@@ -314,6 +327,58 @@ impl StudyFunctions {
                 separation: ev.nondimensional_separation,
                 pull_off: ev.nondimensional_pull_off_separation,
             },
+        }
+    }
+}
+
+fn hints_of(near: &[f64]) -> SearchHints {
+    let get = |i: usize| near.get(i).copied().filter(|v| v.is_finite());
+    SearchHints {
+        separation: get(0),
+        pull_off: get(1),
+    }
+}
+
+/// The study as a program on the unit box: f = ln(objective), g = the rows;
+/// the warm-start data are the separation and pull-off found at a point.
+impl NonlinearProgram for StudyFunctions {
+    fn dimension(&self) -> usize {
+        self.dim()
+    }
+
+    fn bounds(&self) -> (Vec<f64>, Vec<f64>) {
+        (vec![0.0; self.dim()], vec![1.0; self.dim()])
+    }
+
+    fn objective(&self, x: &[f64]) -> Option<f64> {
+        self.at(x).map(|p| p.objective)
+    }
+
+    fn constraints(&self, x: &[f64]) -> Option<Vec<f64>> {
+        self.at(x).map(|p| p.rows)
+    }
+
+    fn evaluate(&self, x: &[f64], near: &[f64]) -> Option<Values> {
+        let p = self.at_from(x, hints_of(near))?;
+        Some(Values {
+            objective: p.objective,
+            constraints: p.rows,
+            warm_start: vec![
+                p.hints.separation.unwrap_or(f64::NAN),
+                p.hints.pull_off.unwrap_or(f64::NAN),
+            ],
+        })
+    }
+}
+
+impl Point {
+    /// The point a solver's result describes.
+    pub fn from_result(r: &super::SqpResult) -> Point {
+        Point {
+            x: r.x.clone(),
+            objective: r.objective,
+            rows: r.constraints.clone(),
+            hints: hints_of(&r.warm_start),
         }
     }
 }

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::functions::{objective_value, quantity_value};
-use super::{optimize, OptimizationStatus, OptimizeError, Optimum, Study};
+use super::{OptimizationStatus, OptimizeError, Optimum, Study};
 use crate::model::{evaluate, Evaluation, EvaluationOptions, Scene, Status};
 use crate::problem::catalogue::Material;
 use crate::problem::units::{format_quantity, Dimension};
@@ -326,7 +326,7 @@ fn check_fixed(constraints: &[Constraint], ev: &Evaluation, scene: &Scene) -> Ve
 pub fn run_case(
     study: &Study,
     case: MaterialCase,
-    verbose: bool,
+    observers: Option<super::ObserverFactory>,
 ) -> Result<MaterialResult, OptimizeError> {
     let objective = study.objective.ok_or(OptimizeError::NoObjective)?;
     let (status, outcome) = if case.excluded.is_some() {
@@ -355,7 +355,7 @@ pub fn run_case(
             constraints: study.constraints,
             settings: study.settings,
         };
-        match optimize(&sub, verbose) {
+        match super::optimize_observed(&sub, observers) {
             Ok(o) => (
                 MaterialStatus::Optimized(o.status),
                 MaterialOutcome::Optimized(Box::new(o)),
@@ -380,14 +380,14 @@ pub fn run_case(
 pub fn rank_materials(
     study: &Study,
     materials: &[&'static Material],
-    verbose: bool,
+    observers: Option<super::ObserverFactory>,
 ) -> Result<MaterialRanking, OptimizeError> {
     let objective = study.objective.ok_or(OptimizeError::NoObjective)?;
     let t0 = std::time::Instant::now();
     let cases: Vec<MaterialCase> = materials.iter().map(|m| material_case(study, m)).collect();
     let mut results = cases
         .into_par_iter()
-        .map(|case| run_case(study, case, verbose))
+        .map(|case| run_case(study, case, observers))
         .collect::<Result<Vec<_>, _>>()?;
     // Stable sort: usable by objective, the rest after in list order.
     results.sort_by(|a, b| {

@@ -2,26 +2,29 @@
 //! the predicted wear rate (or another objective) under engineering limits, with
 //! the wear model as its inner evaluator.
 //!
+//! * [`program`]: the solver's vocabulary, [`NonlinearProgram`].
+//! * [`sqp`]: [`minimize`], a trust-region SQP for any such program (argmin `Solver`).
+//! * [`qp`]: its clarabel subproblem; [`multipliers`]: KKT residual and multipliers.
+//! * [`fd`]: finite-difference gradients with error estimates (rayon).
 //! * [`design`]: variables in log space, scaled to the unit box.
-//! * [`functions`]: objective (ln) and constraint rows as functions of a design.
-//! * [`fd`]: central finite-difference sensitivities with error estimates (rayon).
-//! * [`qp`]: the clarabel subproblem (linearised rows, box, trust region as a
-//!   second-order cone, elastic slacks).
-//! * [`sqp`]: the SQP as an argmin `Solver`, driven by argmin's `Executor`.
-//! * [`optimize`]: deterministic low-discrepancy multistart in parallel.
+//! * [`functions`]: a study as a [`NonlinearProgram`] (ln objective, constraint rows).
+//! * [`optimize`]: deterministic low-discrepancy multistart in parallel, with a
+//!   search for starts in contact.
 
 pub mod design;
 pub mod fd;
 pub mod functions;
 pub mod materials;
+pub mod multipliers;
 pub mod pareto;
+pub mod program;
 pub mod qp;
 pub mod sqp;
 
 use std::time::{Duration, Instant};
 
-use argmin::core::observers::{Observe, ObserverMode};
-use argmin::core::{Executor, State, TerminationReason, KV};
+use argmin::core::observers::Observe;
+use argmin::core::KV;
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -30,36 +33,19 @@ use crate::problem::{Constraint, DesignVariable, Objective, OptimizerSettings};
 
 pub use design::DesignSpace;
 pub use functions::{Point, Row, Side, StudyFunctions};
-pub use sqp::{Sqp, SqpState, TraceRow, FEASIBILITY_TOLERANCE};
+pub use program::{NonlinearProgram, Values};
+pub use sqp::{minimize, minimize_observed, SqpResult, SqpSettings, SqpState, SqpStatus, TraceRow};
 
-/// How a study ended (contract words).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum OptimizationStatus {
-    /// A feasible point satisfying the KKT conditions to tolerance.
-    Optimal,
-    /// No start found a point meeting every constraint.
-    Infeasible,
-    /// The iteration cap ended the best start.
-    IterationLimit,
-    /// The time limit ended the best start.
-    TimeLimit,
-    /// The best start could make no more progress without meeting the KKT test.
-    Stalled,
-}
+/// Rows at or below this (in their scaled units: ln rows are relative) count
+/// as met in a study.
+pub const FEASIBILITY_TOLERANCE: f64 = 1e-7;
 
-impl OptimizationStatus {
-    /// The status word.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            OptimizationStatus::Optimal => "optimal",
-            OptimizationStatus::Infeasible => "infeasible",
-            OptimizationStatus::IterationLimit => "iteration_limit",
-            OptimizationStatus::TimeLimit => "time_limit",
-            OptimizationStatus::Stalled => "stalled",
-        }
-    }
-}
+/// Most start points drawn per study while looking for `starts` of them with
+/// the surfaces in contact (each draw costs one model evaluation).
+pub const CONTACT_SEARCH_BUDGET: usize = 2000;
+
+/// The status of a study is the status of its solver.
+pub type OptimizationStatus = SqpStatus;
 
 /// What one start of the multistart did.
 #[derive(Debug, Clone, PartialEq)]
@@ -126,6 +112,8 @@ pub struct ActiveBound {
 pub struct StartsSummary {
     /// Starts run.
     pub total: usize,
+    /// Start points drawn to find `total` with the surfaces in contact.
+    pub drawn: usize,
     /// Starts that converged (KKT test met) at a feasible point.
     pub converged: usize,
     /// Starts whose result agrees with the best to 1e-6 relative.
@@ -177,6 +165,15 @@ pub struct Optimum {
     pub best_start: usize,
 }
 
+impl Optimum {
+    /// Whether the design meets every constraint (each row to [`FEASIBILITY_TOLERANCE`]).
+    pub fn feasible(&self) -> bool {
+        self.constraints
+            .iter()
+            .all(|c| c.violation <= FEASIBILITY_TOLERANCE)
+    }
+}
+
 /// Errors of a study definition (bad input).
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum OptimizeError {
@@ -206,41 +203,26 @@ pub struct Study<'a> {
     pub settings: &'a OptimizerSettings,
 }
 
-/// Prints an iteration table to stderr (the `--verbose` observer).
-pub struct IterationTable {
-    /// Which start it reports.
-    pub start: usize,
-}
+/// An argmin observer of one start, as the caller builds it.
+pub type StartObserver = Box<dyn Observe<SqpState> + Send>;
 
-impl Observe<SqpState> for IterationTable {
+/// Makes the observer of a start from its index (`--verbose` tables).
+pub type ObserverFactory<'a> = &'a (dyn Fn(usize) -> StartObserver + Sync);
+
+struct Boxed(StartObserver);
+
+impl Observe<SqpState> for Boxed {
     fn observe_init(
         &mut self,
         name: &str,
-        _state: &SqpState,
-        _kv: &KV,
+        state: &SqpState,
+        kv: &KV,
     ) -> Result<(), argmin::core::Error> {
-        eprintln!("start {:>3}: {name}", self.start);
-        eprintln!(
-            "start iter    ln(objective)    violation          KKT       radius         step        ratio  evaluations"
-        );
-        Ok(())
+        self.0.observe_init(name, state, kv)
     }
 
     fn observe_iter(&mut self, state: &SqpState, kv: &KV) -> Result<(), argmin::core::Error> {
-        let get = |k: &str| kv.get(k).and_then(|v| v.get_float()).unwrap_or(f64::NAN);
-        eprintln!(
-            "{:>5} {:>4} {:>16.10} {:>12.3e} {:>12.3e} {:>12.3e} {:>12.3e} {:>12.3e} {:>12}",
-            self.start,
-            state.get_iter(),
-            get("objective"),
-            get("violation"),
-            get("kkt"),
-            get("radius"),
-            get("step"),
-            get("ratio"),
-            get("evaluations") as u64
-        );
-        Ok(())
+        self.0.observe_iter(state, kv)
     }
 }
 
@@ -266,9 +248,9 @@ fn splitmix(mut z: u64) -> u64 {
 
 const PRIMES: [u64; 10] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29];
 
-/// The start points: the baseline, then a Halton sequence with a
-/// Cranley–Patterson shift drawn from the seed (deterministic).
-pub fn start_points(baseline: &[f64], starts: usize, seed: u64) -> Vec<Vec<f64>> {
+/// The candidate start points: the baseline, then a Halton sequence with a
+/// Cranley–Patterson shift drawn from the seed (deterministic), `count` in all.
+pub fn start_points(baseline: &[f64], count: usize, seed: u64) -> Vec<Vec<f64>> {
     let n = baseline.len();
     let shift: Vec<f64> = (0..n)
         .map(|i| {
@@ -277,7 +259,7 @@ pub fn start_points(baseline: &[f64], starts: usize, seed: u64) -> Vec<Vec<f64>>
         })
         .collect();
     let mut out = vec![baseline.to_vec()];
-    for k in 1..starts.max(1) {
+    for k in 1..count.max(1) {
         out.push(
             (0..n)
                 .map(|i| {
@@ -291,67 +273,87 @@ pub fn start_points(baseline: &[f64], starts: usize, seed: u64) -> Vec<Vec<f64>>
     out
 }
 
+/// The first `starts` candidate points with the surfaces in contact, drawn in
+/// order (at most [`CONTACT_SEARCH_BUDGET`]), and how many were drawn.
+fn starts_in_contact(
+    functions: &StudyFunctions,
+    baseline: &[f64],
+    starts: usize,
+    seed: u64,
+) -> (Vec<Vec<f64>>, usize) {
+    let budget = CONTACT_SEARCH_BUDGET.max(starts);
+    let candidates = start_points(baseline, budget, seed);
+    let mut found = Vec::new();
+    let mut drawn = 0;
+    // Checked in batches of `starts` in parallel; the order decides, so the
+    // choice does not depend on the thread count.
+    for batch in candidates.chunks(starts.max(1)) {
+        let contact: Vec<bool> = batch
+            .par_iter()
+            .map(|x| functions.at(x).is_some())
+            .collect();
+        for (x, c) in batch.iter().zip(contact) {
+            drawn += 1;
+            if c {
+                found.push(x.clone());
+                if found.len() == starts {
+                    return (found, drawn);
+                }
+            }
+        }
+    }
+    (found, drawn)
+}
+
+/// The solver settings of a study.
+pub fn sqp_settings(settings: &OptimizerSettings, remaining: Duration) -> SqpSettings {
+    SqpSettings {
+        tolerance: settings.tolerance,
+        feasibility_tolerance: FEASIBILITY_TOLERANCE,
+        max_iterations: settings.max_iterations as u64,
+        time_limit: Some(remaining),
+        ..SqpSettings::default()
+    }
+}
+
 fn run_start(
     functions: &StudyFunctions,
     index: usize,
     x0: Vec<f64>,
     settings: &OptimizerSettings,
     deadline: Instant,
-    verbose: bool,
+    observers: Option<ObserverFactory>,
 ) -> StartOutcome {
     let remaining = deadline.saturating_duration_since(Instant::now());
-    let mut exec = Executor::new(functions.clone(), Sqp::new(settings.tolerance))
-        .configure(|s| {
-            s.param(x0.clone())
-                .max_iters(settings.max_iterations as u64)
-        })
-        .timeout(remaining.max(Duration::from_nanos(1)));
-    if verbose {
-        exec = exec.add_observer(IterationTable { start: index }, ObserverMode::Always);
-    }
-    let (solver, reason, iterations) = match exec.run() {
-        Ok(res) => {
-            let reason = res.state.get_termination_reason().cloned();
-            let iters = res.state.get_iter();
-            (res.solver, reason, iters)
-        }
-        Err(_) => (Sqp::new(settings.tolerance), None, 0),
-    };
-    let point = solver.point().cloned();
-    let status = match (&reason, solver.exit) {
-        (_, Some("converged")) => OptimizationStatus::Optimal,
-        (_, Some("infeasible")) => OptimizationStatus::Infeasible,
-        (_, Some("stalled")) => OptimizationStatus::Stalled,
-        (Some(TerminationReason::Timeout), _) => OptimizationStatus::TimeLimit,
-        (Some(TerminationReason::MaxItersReached), _) => OptimizationStatus::IterationLimit,
-        _ => OptimizationStatus::Stalled,
-    };
-    // A converged point that violates a row is a stationary point of the
-    // violation: infeasible, not optimal.
-    let status = match (&point, status) {
-        (Some(p), OptimizationStatus::Optimal) if p.max_violation() > FEASIBILITY_TOLERANCE => {
-            OptimizationStatus::Infeasible
-        }
-        (None, _) => OptimizationStatus::Infeasible,
-        (_, s) => s,
-    };
+    let sqp = sqp_settings(settings, remaining);
+    let r = minimize_observed(functions, &x0, &sqp, observers.map(|f| Boxed(f(index))));
+    let point = r.objective.is_finite().then(|| Point::from_result(&r));
     StartOutcome {
         index,
         x0,
         point,
-        multipliers: solver.multipliers.clone(),
-        kkt_residual: solver.kkt_residual,
-        gradient_error: solver.gradient_error,
-        status,
-        iterations,
-        evaluations: solver.evaluations,
-        trace: solver.trace.clone(),
-        qp_failures: solver.qp_failures.clone(),
+        multipliers: r.multipliers.clone(),
+        kkt_residual: r.kkt_residual,
+        gradient_error: r.gradient_error,
+        status: r.status,
+        iterations: r.iterations,
+        evaluations: r.evaluations,
+        trace: r.trace,
+        qp_failures: r.qp_failures,
     }
 }
 
 /// Runs a study: multistart SQP in parallel, deterministic for any thread count.
-pub fn optimize(study: &Study, verbose: bool) -> Result<Optimum, OptimizeError> {
+pub fn optimize(study: &Study) -> Result<Optimum, OptimizeError> {
+    optimize_observed(study, None)
+}
+
+/// As [`optimize`], with an argmin observer per start (made by `observers`
+/// from the start's index); each observer sees only its own start.
+pub fn optimize_observed(
+    study: &Study,
+    observers: Option<ObserverFactory>,
+) -> Result<Optimum, OptimizeError> {
     if study.design.is_empty() {
         return Err(OptimizeError::NoDesign);
     }
@@ -361,12 +363,33 @@ pub fn optimize(study: &Study, verbose: bool) -> Result<Optimum, OptimizeError> 
     let space = DesignSpace::new(study.scene, study.design);
     let functions = StudyFunctions::new(space, objective, study.constraints);
     let baseline_x = functions.space.baseline_unit();
-    let starts = start_points(&baseline_x, study.settings.starts, study.settings.seed);
+    let (starts, drawn) = starts_in_contact(
+        &functions,
+        &baseline_x,
+        study.settings.starts,
+        study.settings.seed,
+    );
+    if starts.is_empty() {
+        return Err(OptimizeError::NoContact);
+    }
     let outcomes: Vec<StartOutcome> = starts
         .into_par_iter()
         .enumerate()
-        .map(|(i, x0)| run_start(&functions, i, x0, study.settings, deadline, verbose))
+        .map(|(i, x0)| run_start(&functions, i, x0, study.settings, deadline, observers))
         .collect();
+    assemble(study, &functions, objective, outcomes, drawn, t0)
+}
+
+/// The study's result from its starts' outcomes.
+fn assemble(
+    study: &Study,
+    functions: &StudyFunctions,
+    objective: Objective,
+    outcomes: Vec<StartOutcome>,
+    drawn: usize,
+    t0: Instant,
+) -> Result<Optimum, OptimizeError> {
+    let baseline_x = functions.space.baseline_unit();
     let evaluations = outcomes.iter().map(|o| o.evaluations).sum();
 
     // The best: lowest objective among feasible ends (optimal first), else the least violating.
@@ -401,10 +424,20 @@ pub fn optimize(study: &Study, verbose: bool) -> Result<Optimum, OptimizeError> 
             .ok_or(OptimizeError::NoContact)?,
     };
     let best_point = best.point.clone().expect("best start has a point");
-    let status = if best_point.max_violation() > FEASIBILITY_TOLERANCE {
+    // Infeasible only when every start ended at a stationary point of the
+    // violation; a start stopped otherwise says how it stopped.
+    let status = if best_point.max_violation() <= FEASIBILITY_TOLERANCE {
+        best.status
+    } else if outcomes
+        .iter()
+        .all(|o| o.status == OptimizationStatus::Infeasible)
+    {
         OptimizationStatus::Infeasible
     } else {
-        best.status
+        match best.status {
+            OptimizationStatus::Optimal => OptimizationStatus::Stalled,
+            s => s,
+        }
     };
     let reached_best = outcomes
         .iter()
@@ -427,7 +460,7 @@ pub fn optimize(study: &Study, verbose: bool) -> Result<Optimum, OptimizeError> 
         (ev.status == crate::model::Status::Ok).then_some(ev)
     };
     let constraints = constraint_reports(
-        &functions,
+        functions,
         study.constraints,
         &best_point,
         &best.multipliers,
@@ -491,6 +524,7 @@ pub fn optimize(study: &Study, verbose: bool) -> Result<Optimum, OptimizeError> 
         evaluations,
         starts: StartsSummary {
             total: outcomes.len(),
+            drawn,
             converged,
             reached_best,
         },

@@ -132,6 +132,8 @@ pub struct FrontPoint {
     pub wear_rate: f64,
     /// How the solve ended.
     pub status: OptimizationStatus,
+    /// The design meets every constraint of the study and the target.
+    pub feasible: bool,
     /// An earlier point is at least as good in adhesion and wear.
     pub dominated: bool,
     /// Feasible and not dominated.
@@ -402,7 +404,7 @@ impl Sweep<'_> {
             constraints: &constraints,
             settings,
         };
-        let (status, end_scene, evaluations) = if design.is_empty() {
+        let (status, feasible, end_scene, evaluations) = if design.is_empty() {
             // Only γ moved and it is fixed: the point is the scene itself.
             let space = super::DesignSpace::new(&scene, &[]);
             let f = super::StudyFunctions::new(space, self.objective, &constraints);
@@ -412,10 +414,15 @@ impl Sweep<'_> {
             } else {
                 OptimizationStatus::Infeasible
             };
-            (status, scene.clone(), 1)
+            (
+                status,
+                status == OptimizationStatus::Optimal,
+                scene.clone(),
+                1,
+            )
         } else {
-            let o = optimize(&sub, false).ok()?;
-            (o.status, o.scene, o.evaluations)
+            let o = optimize(&sub).ok()?;
+            (o.status, o.feasible(), o.scene, o.evaluations)
         };
         let ev = self.evaluate(&end_scene);
         if ev.status != Status::Ok {
@@ -424,7 +431,7 @@ impl Sweep<'_> {
         let (value, log10) = measure_of(self.measure, &ev, &end_scene)?;
         Some(Solved {
             status,
-            feasible: status != OptimizationStatus::Infeasible,
+            feasible,
             objective: super::functions::objective_value(self.objective, &ev),
             wear_rate: ev.wear_rate,
             value,
@@ -628,13 +635,10 @@ fn dominated_by_earlier(
         ParetoDirection::Low => s,
         ParetoDirection::High => -s,
     };
-    earlier
-        .iter()
-        .filter(|q| q.status != OptimizationStatus::Infeasible)
-        .any(|q| {
-            pref(q.strength) <= pref(p.strength) + STRENGTH_TOLERANCE
-                && q.objective <= p.objective * (1.0 + WEAR_TOLERANCE)
-        })
+    earlier.iter().filter(|q| q.feasible).any(|q| {
+        pref(q.strength) <= pref(p.strength) + STRENGTH_TOLERANCE
+            && q.objective <= p.objective * (1.0 + WEAR_TOLERANCE)
+    })
 }
 
 /// The knee of the front (see the module docs).
@@ -717,9 +721,9 @@ pub fn pareto(
 
     // The least-wear design: the study without an adhesion target.
     observer.range_started();
-    let optimum = optimize(study, false)?;
+    let optimum = optimize(study)?;
     let mut evaluations = optimum.evaluations;
-    let least_wear_feasible = optimum.status != OptimizationStatus::Infeasible;
+    let least_wear_feasible = optimum.feasible();
     let least_wear = sweep
         .reference(&optimum.scene, least_wear_feasible)
         .ok_or(OptimizeError::NoContact)?;
@@ -858,6 +862,7 @@ pub fn pareto(
                     objective: r.objective,
                     wear_rate: r.wear_rate,
                     status: r.status,
+                    feasible: r.feasible,
                     dominated: false,
                     on_front: false,
                     design: r.design.clone(),
@@ -874,6 +879,7 @@ pub fn pareto(
                     objective: f64::NAN,
                     wear_rate: f64::NAN,
                     status: OptimizationStatus::Infeasible,
+                    feasible: false,
                     dominated: false,
                     on_front: false,
                     design: vec![f64::NAN; names.len()],
@@ -881,7 +887,7 @@ pub fn pareto(
                     evaluations: evals,
                 },
             };
-            if p.status != OptimizationStatus::Infeasible {
+            if p.feasible {
                 p.dominated = dominated_by_earlier(&points, &p, spec.direction);
                 p.on_front = !p.dominated;
             }

@@ -3,7 +3,7 @@
 //! ```text
 //! min_{p,t}  ½ pᵀBp + ∇fᵀp + ρ Σ t_j
 //! s.t.       g_j + ∇g_jᵀp ≤ t_j,  t_j ≥ 0          (elastic mode: always feasible)
-//!            0 ≤ x + p ≤ 1                          (the scaled box)
+//!            lower ≤ x + p ≤ upper                  (the box)
 //!            ‖p‖₂ ≤ Δ                               (trust region, a second-order cone)
 //! ```
 //!
@@ -21,8 +21,15 @@ use nalgebra::DMatrix;
 
 /// The data of one subproblem.
 pub struct Subproblem<'a> {
-    /// The current unit design point.
+    /// The current point.
     pub x: &'a [f64],
+    /// Lower bounds of x.
+    pub lower: &'a [f64],
+    /// Upper bounds of x.
+    pub upper: &'a [f64],
+    /// Which rows take part (a row that no step within the trust region can
+    /// bring to its limit is left out: its multiplier is 0).
+    pub include: &'a [bool],
     /// The quasi-Newton Hessian of the Lagrangian (positive definite).
     pub hessian: &'a DMatrix<f64>,
     /// ∇f.
@@ -60,26 +67,30 @@ pub struct QpFailure {
 /// Solves the subproblem.
 pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
     let n = sp.x.len();
-    let m = sp.rows.len();
+    let rows_in: Vec<usize> = (0..sp.rows.len()).filter(|&j| sp.include[j]).collect();
+    let m = rows_in.len();
     let nv = n + m;
+    // The objective is divided by max(1, ρ) so that a large penalty does not
+    // swamp the interior-point solver; the multipliers are scaled back.
+    let weight = sp.penalty.max(1.0);
     // P: upper triangle of B.
     let (mut pi, mut pj, mut pv) = (Vec::new(), Vec::new(), Vec::new());
     for j in 0..n {
         for i in 0..=j {
             pi.push(i);
             pj.push(j);
-            pv.push(sp.hessian[(i, j)]);
+            pv.push(sp.hessian[(i, j)] / weight);
         }
     }
     let P = CscMatrix::new_from_triplets(nv, nv, pi, pj, pv);
-    let mut q = sp.gradient.to_vec();
-    q.extend(std::iter::repeat_n(sp.penalty, m));
+    let mut q: Vec<f64> = sp.gradient.iter().map(|g| g / weight).collect();
+    q.extend(std::iter::repeat_n(sp.penalty / weight, m));
 
     let (mut ai, mut aj, mut av) = (Vec::new(), Vec::new(), Vec::new());
     let mut b = Vec::new();
     let mut row = 0;
     // Linearised rows: ∇g_jᵀp - t_j ≤ -g_j.
-    for j in 0..m {
+    for (k, &j) in rows_in.iter().enumerate() {
         for (i, &d) in sp.jacobian[j].iter().enumerate() {
             if d != 0.0 {
                 ai.push(row);
@@ -88,7 +99,7 @@ pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
             }
         }
         ai.push(row);
-        aj.push(n + j);
+        aj.push(n + k);
         av.push(-1.0);
         b.push(-sp.rows[j]);
         row += 1;
@@ -101,17 +112,17 @@ pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
         b.push(0.0);
         row += 1;
     }
-    // Box: p_i ≤ 1 - x_i and -p_i ≤ x_i.
+    // Box: p_i ≤ upper_i - x_i and -p_i ≤ x_i - lower_i.
     for i in 0..n {
         ai.push(row);
         aj.push(i);
         av.push(1.0);
-        b.push(1.0 - sp.x[i]);
+        b.push((sp.upper[i] - sp.x[i]).max(0.0));
         row += 1;
         ai.push(row);
         aj.push(i);
         av.push(-1.0);
-        b.push(sp.x[i]);
+        b.push((sp.x[i] - sp.lower[i]).max(0.0));
         row += 1;
     }
     let linear_rows = row;
@@ -149,8 +160,12 @@ pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
         });
     }
     let p: Vec<f64> = sol.x[..n].to_vec();
-    let slack: Vec<f64> = sol.x[n..].iter().map(|t| t.max(0.0)).collect();
-    let multipliers: Vec<f64> = sol.z[..m].iter().map(|z| z.max(0.0)).collect();
+    let mut slack = vec![0.0; sp.rows.len()];
+    let mut multipliers = vec![0.0; sp.rows.len()];
+    for (k, &j) in rows_in.iter().enumerate() {
+        slack[j] = sol.x[n + k].max(0.0);
+        multipliers[j] = sol.z[k].max(0.0) * weight;
+    }
     let mut quad = 0.0;
     for i in 0..n {
         for j in 0..n {
@@ -166,75 +181,6 @@ pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
     })
 }
 
-/// First-order multiplier estimate: the λ ≥ 0 of the active rows (g_j ≥
-/// -`active`) and μ ≥ 0 of the active bounds that minimise the stationarity
-/// residual `‖∇f + Σ_j λ_j ∇g_j - Σ_lower μ_i e_i + Σ_upper μ_i e_i‖²`; other
-/// rows get 0. Unlike the subproblem's multipliers it does not depend on the
-/// quasi-Newton matrix, which near a degenerate vertex can be far from the true
-/// Hessian. Where the active set is degenerate the minimiser is not unique, but
-/// every minimiser has the same residual. None if clarabel does not solve it.
-pub fn least_squares_multipliers(
-    x: &[f64],
-    gradient: &[f64],
-    rows: &[f64],
-    jacobian: &[Vec<f64>],
-    active: f64,
-) -> Option<Vec<f64>> {
-    let n = x.len();
-    let act: Vec<usize> = (0..rows.len()).filter(|&j| rows[j] >= -active).collect();
-    let mut out = vec![0.0; rows.len()];
-    if act.is_empty() {
-        return Some(out);
-    }
-    // Columns of M: active rows' gradients, then ∓e_i for bounds that hold.
-    let mut columns: Vec<Vec<f64>> = act.iter().map(|&j| jacobian[j].clone()).collect();
-    for i in 0..n {
-        let sign = if x[i] <= 0.0 {
-            -1.0
-        } else if x[i] >= 1.0 {
-            1.0
-        } else {
-            continue;
-        };
-        let mut e = vec![0.0; n];
-        e[i] = sign;
-        columns.push(e);
-    }
-    let k = columns.len();
-    let (mut pi, mut pj, mut pv) = (Vec::new(), Vec::new(), Vec::new());
-    for b in 0..k {
-        for a in 0..=b {
-            let v: f64 = (0..n).map(|i| columns[a][i] * columns[b][i]).sum();
-            pi.push(a);
-            pj.push(b);
-            pv.push(if a == b { v + 1e-14 } else { v });
-        }
-    }
-    let p = CscMatrix::new_from_triplets(k, k, pi, pj, pv);
-    let q: Vec<f64> = columns
-        .iter()
-        .map(|c| (0..n).map(|i| c[i] * gradient[i]).sum())
-        .collect();
-    // All unknowns ≥ 0, written -v ≤ 0.
-    let a = CscMatrix::new_from_triplets(k, k, (0..k).collect(), (0..k).collect(), vec![-1.0; k]);
-    let b = vec![0.0; k];
-    let settings = DefaultSettingsBuilder::default()
-        .verbose(false)
-        .tol_gap_abs(1e-14)
-        .tol_gap_rel(1e-14)
-        .build()
-        .ok()?;
-    let mut solver = DefaultSolver::new(&p, &q, &a, &b, &[NonnegativeConeT(k)], settings).ok()?;
-    solver.solve();
-    if solver.solution.status != SolverStatus::Solved {
-        return None;
-    }
-    for (a, &j) in act.iter().enumerate() {
-        out[j] = solver.solution.x[a].max(0.0);
-    }
-    Some(out)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -247,6 +193,9 @@ mod tests {
         let jac = vec![vec![1.0, 1.0]];
         let sp = Subproblem {
             x: &[0.5, 0.5],
+            lower: &[0.0, 0.0],
+            upper: &[1.0, 1.0],
+            include: &[true],
             hessian: &b,
             gradient: &[-1.0, -1.0],
             rows: &[-0.5],
@@ -279,6 +228,9 @@ mod tests {
         let jac = vec![vec![0.0]];
         let sp = Subproblem {
             x: &[0.5],
+            lower: &[0.0],
+            upper: &[1.0],
+            include: &[true],
             hessian: &b,
             gradient: &[1.0],
             rows: &[1.0],

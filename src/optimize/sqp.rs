@@ -1,28 +1,142 @@
-//! A trust-region SQP as an argmin [`Solver`]: quasi-Newton (damped BFGS)
-//! subproblems solved by clarabel ([`super::qp`]), elastic mode for
-//! inconsistent linearisations, acceptance by the ℓ1 merit function
-//! `φ = f + ρ Σ max(0, g_j)`, and convergence on the KKT residual.
+//! A trust-region SQP for any [`NonlinearProgram`], as an argmin [`Solver`]:
+//! quasi-Newton (damped BFGS) subproblems solved by clarabel ([`super::qp`]),
+//! elastic mode for inconsistent linearisations, acceptance by the ℓ1 merit
+//! function `φ = f + ρ Σ max(0, g_j)` with a second-order correction, and
+//! convergence on the KKT residual of [`super::multipliers::kkt`] measured in
+//! the problem's own coordinates.
+//!
+//! Every tuning constant is a field of [`SqpSettings`], with its default in
+//! [`SqpSettings::default`].
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
+use argmin::core::observers::{Observe, ObserverMode};
 use argmin::core::{
-    Error, IterState, Problem, Solver, State, TerminationReason, TerminationStatus, KV,
+    Error, Executor, IterState, Problem, Solver, State, TerminationReason, TerminationStatus, KV,
 };
 use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
 
 use super::fd::{gradients, Gradients};
-use super::functions::{Point, StudyFunctions};
+use super::multipliers::{kkt, least_squares, Kkt, KktData};
+use super::program::{NonlinearProgram, Values};
 use super::qp::{self, Subproblem};
 
 /// The argmin state the SQP runs on: parameter and gradient are `Vec<f64>`.
 pub type SqpState = IterState<Vec<f64>, Vec<f64>, (), (), (), f64>;
 
-/// Rows at or below this (in their scaled units) count as satisfied.
-pub const FEASIBILITY_TOLERANCE: f64 = 1e-7;
+/// How hard and how the SQP works. `SqpSettings::default()` holds every default.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SqpSettings {
+    /// `optimal` needs the KKT residual ≤ this (default 1e-8).
+    pub tolerance: f64,
+    /// A point whose rows (and bounds) are violated by at most this counts as
+    /// feasible when a run ends otherwise than `optimal` (default 1e-7).
+    pub feasibility_tolerance: f64,
+    /// Iteration cap (default 200).
+    pub max_iterations: u64,
+    /// Wall-clock limit (default none).
+    pub time_limit: Option<Duration>,
+    /// Initial trust radius, relative to max(1, ‖x0‖∞) (default 0.3).
+    pub initial_radius: f64,
+    /// A step is accepted when actual/predicted merit reduction exceeds this (default 0.1).
+    pub accept_ratio: f64,
+    /// The radius grows when the ratio is at least this and the step reached the radius (default 0.5).
+    pub grow_ratio: f64,
+    /// The radius shrinks after an accepted step whose ratio is below this (default 0.25).
+    pub shrink_ratio: f64,
+    /// Factor of growth (default 2).
+    pub grow_factor: f64,
+    /// Factor of shrinking, applied to the step length on rejection (default 0.5).
+    pub shrink_factor: f64,
+    /// The run stops (`stalled`) when the radius falls below this times max(1, ‖x‖∞) (default 1e-12).
+    pub min_radius: f64,
+    /// The run stops (`stalled`) after this many rejected steps in a row (default 30).
+    pub max_rejections: usize,
+    /// Initial penalty ρ of the merit function, times max(1, ‖∇f‖∞) (default 10).
+    pub penalty_initial: f64,
+    /// ρ is kept at least this times the largest multiplier (default 2).
+    pub penalty_margin: f64,
+    /// ρ is multiplied by this when a linearisation cannot be met (default 10).
+    pub penalty_growth: f64,
+    /// Largest ρ (default 1e10).
+    pub penalty_max: f64,
+    /// Finite-difference step relative to max(|x_i|, scale_i) (default 1e-4).
+    pub fd_step: f64,
+    /// A step this short relative to max(1, ‖x‖∞) is no step (default 1e-14).
+    pub step_tolerance: f64,
+    /// Merit changes within this relative to 1 + |φ| are noise (default 1e-12).
+    pub merit_noise: f64,
+    /// Rows with g ≥ -t for each t here are tried as the active set of the
+    /// least-squares multipliers; the estimate with the smallest residual is
+    /// kept (default 1e-10, 1e-7, 1e-4).
+    pub active_tolerances: Vec<f64>,
+    /// A trial point closer to a bound than this times max(1, |bound|) is put on it (default 1e-10).
+    pub bound_snap: f64,
+}
 
-/// Unit coordinates closer than this to a face are put on it (1e-8 of the
-/// log range of a variable: far below any engineering meaning).
-pub const BOUND_SNAP: f64 = 1e-8;
+impl Default for SqpSettings {
+    fn default() -> Self {
+        SqpSettings {
+            tolerance: 1e-8,
+            feasibility_tolerance: 1e-7,
+            max_iterations: 200,
+            time_limit: None,
+            initial_radius: 0.3,
+            accept_ratio: 0.1,
+            grow_ratio: 0.5,
+            shrink_ratio: 0.25,
+            grow_factor: 2.0,
+            shrink_factor: 0.5,
+            min_radius: 1e-12,
+            max_rejections: 30,
+            penalty_initial: 10.0,
+            penalty_margin: 2.0,
+            penalty_growth: 10.0,
+            penalty_max: 1e10,
+            fd_step: 1e-4,
+            step_tolerance: 1e-14,
+            merit_noise: 1e-12,
+            active_tolerances: vec![1e-10, 1e-7, 1e-4],
+            bound_snap: 1e-10,
+        }
+    }
+}
+
+/// How a run ended (contract words via `Display`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SqpStatus {
+    /// KKT residual ≤ tolerance.
+    Optimal,
+    /// Ended at a stationary point of the violation with a row violated.
+    Infeasible,
+    /// The iteration cap stopped it.
+    IterationLimit,
+    /// The time limit stopped it.
+    TimeLimit,
+    /// No more progress without meeting the KKT test (or the start could not be evaluated).
+    Stalled,
+}
+
+impl SqpStatus {
+    /// The status word.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SqpStatus::Optimal => "optimal",
+            SqpStatus::Infeasible => "infeasible",
+            SqpStatus::IterationLimit => "iteration_limit",
+            SqpStatus::TimeLimit => "time_limit",
+            SqpStatus::Stalled => "stalled",
+        }
+    }
+}
+
+impl std::fmt::Display for SqpStatus {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
 
 /// One row of the iteration trace.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -30,9 +144,9 @@ pub struct TraceRow {
     /// Iteration number (0 = the start point); the row describes the point
     /// the iteration starts from.
     pub iteration: usize,
-    /// Wall time since the start's first evaluation (s).
+    /// Wall time since the run began (s).
     pub time: f64,
-    /// ln(objective) at the current point.
+    /// f at the current point.
     pub objective: f64,
     /// KKT residual at the current point.
     pub kkt_residual: f64,
@@ -40,48 +154,99 @@ pub struct TraceRow {
     pub violation: f64,
 }
 
-/// The SQP solver and, after a run, what it found.
+/// What [`minimize`] found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SqpResult {
+    /// The point (problem coordinates).
+    pub x: Vec<f64>,
+    /// f(x) (∞ only when the start could not be evaluated).
+    pub objective: f64,
+    /// g(x).
+    pub constraints: Vec<f64>,
+    /// How it ended.
+    pub status: SqpStatus,
+    /// The KKT residual at x (see [`super::multipliers::Kkt`]).
+    pub kkt_residual: f64,
+    /// λ_j ≥ 0, one per row in the order `constraints` returns them.
+    pub multipliers: Vec<f64>,
+    /// μ ≥ 0 of the lower bounds.
+    pub lower_bound_multipliers: Vec<f64>,
+    /// μ ≥ 0 of the upper bounds.
+    pub upper_bound_multipliers: Vec<f64>,
+    /// Calls of the objective (each evaluation of the program counts once).
+    pub evaluations: usize,
+    /// Iterations run.
+    pub iterations: u64,
+    /// Largest estimated error of the last finite-difference gradients.
+    pub gradient_error: f64,
+    /// Per-iteration trace.
+    pub trace: Vec<TraceRow>,
+    /// Subproblem statuses other than Solved met on the way.
+    pub qp_failures: Vec<String>,
+    /// The program's warm-start data at x.
+    pub warm_start: Vec<f64>,
+}
+
+impl SqpResult {
+    /// max_j max(0, g_j).
+    pub fn max_violation(&self) -> f64 {
+        self.constraints.iter().fold(0.0, |m, g| m.max(*g))
+    }
+}
+
+/// A program as argmin's problem.
+pub struct Program<'a, P: ?Sized>(&'a P);
+
+/// The SQP solver state.
 pub struct Sqp {
-    tolerance: f64,
-    point: Option<Point>,
+    settings: SqpSettings,
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    scale: Vec<f64>,
+    x: Vec<f64>,
+    values: Option<Values>,
     grads: Option<Gradients>,
     hessian: DMatrix<f64>,
     radius: f64,
+    max_radius: f64,
     penalty: f64,
-    /// Multipliers of the rows at the current point.
-    pub multipliers: Vec<f64>,
-    /// KKT residual at the current point.
-    pub kkt_residual: f64,
-    /// Largest error estimate of the last gradients.
-    pub gradient_error: f64,
-    /// Model evaluations spent.
-    pub evaluations: usize,
+    qp_multipliers: Vec<f64>,
+    kkt: Option<(Kkt, Vec<f64>)>,
+    evaluations: usize,
     rejections: usize,
     started: Option<Instant>,
-    /// Per-iteration trace.
-    pub trace: Vec<TraceRow>,
-    /// Why the run stopped when the solver stopped it ("converged", "stalled", "infeasible").
-    pub exit: Option<&'static str>,
-    /// Subproblem failures (clarabel statuses other than Solved).
-    pub qp_failures: Vec<String>,
+    trace: Vec<TraceRow>,
+    exit: Option<&'static str>,
+    qp_failures: Vec<String>,
     last_step: f64,
     last_ratio: f64,
+    last_kkt: f64,
+}
+
+fn norm2(v: &[f64]) -> f64 {
+    v.iter().map(|a| a * a).sum::<f64>().sqrt()
+}
+
+fn norm_inf(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, a| m.max(a.abs()))
 }
 
 impl Sqp {
-    /// A solver converging when the KKT residual is below `tolerance` (or below
-    /// twice the finite-difference error, which it cannot beat).
-    pub fn new(tolerance: f64) -> Self {
+    fn new(settings: &SqpSettings, bounds: (Vec<f64>, Vec<f64>), scale: Vec<f64>) -> Self {
         Sqp {
-            tolerance,
-            point: None,
+            settings: settings.clone(),
+            lower: bounds.0,
+            upper: bounds.1,
+            scale,
+            x: Vec::new(),
+            values: None,
             grads: None,
             hessian: DMatrix::identity(0, 0),
-            radius: 0.3,
-            penalty: 10.0,
-            multipliers: Vec::new(),
-            kkt_residual: f64::INFINITY,
-            gradient_error: 0.0,
+            radius: settings.initial_radius,
+            max_radius: 1.0,
+            penalty: settings.penalty_initial,
+            qp_multipliers: Vec::new(),
+            kkt: None,
             evaluations: 0,
             rejections: 0,
             started: None,
@@ -90,320 +255,466 @@ impl Sqp {
             qp_failures: Vec::new(),
             last_step: f64::NAN,
             last_ratio: f64::NAN,
+            last_kkt: f64::NAN,
         }
     }
 
-    /// The current point (after a run: where it stopped).
-    pub fn point(&self) -> Option<&Point> {
-        self.point.as_ref()
+    fn evaluate<P: NonlinearProgram + ?Sized>(
+        &mut self,
+        p: &P,
+        x: &[f64],
+        near: &[f64],
+    ) -> Option<Values> {
+        self.evaluations += 1;
+        p.evaluate(x, near)
+            .filter(|v| v.objective.is_finite() && v.constraints.iter().all(|g| !g.is_nan()))
     }
 
-    /// The gradients at the current point.
-    pub fn gradients(&self) -> Option<&Gradients> {
-        self.grads.as_ref()
+    fn gradients_at<P: NonlinearProgram + Sync + ?Sized>(
+        &mut self,
+        p: &P,
+        x: &[f64],
+        v: &Values,
+    ) -> Option<Gradients> {
+        let g = gradients(
+            p,
+            x,
+            v,
+            self.settings.fd_step,
+            &self.scale,
+            &(self.lower.clone(), self.upper.clone()),
+        );
+        self.evaluations += g.as_ref().map_or(4 * x.len(), |g| g.evaluations);
+        g.filter(|g| {
+            g.objective.iter().all(|d| d.is_finite())
+                && g.rows.iter().flatten().all(|d| d.is_finite())
+        })
+    }
+
+    /// Clamp into the box and put points a hair from a bound on it.
+    fn project(&self, x: &[f64]) -> Vec<f64> {
+        x.iter()
+            .enumerate()
+            .map(|(i, &v)| {
+                let (lo, hi) = (self.lower[i], self.upper[i]);
+                let y = v.clamp(lo, hi);
+                let snap = |b: f64| self.settings.bound_snap * b.abs().max(1.0);
+                if y - lo <= snap(lo) {
+                    lo
+                } else if hi - y <= snap(hi) {
+                    hi
+                } else {
+                    y
+                }
+            })
+            .collect()
+    }
+
+    fn merit(&self, v: &Values) -> f64 {
+        v.objective + self.penalty * v.violation()
+    }
+
+    fn kkt_data<'a>(&'a self, v: &'a Values, g: &'a Gradients) -> KktData<'a> {
+        KktData {
+            x: &self.x,
+            lower: &self.lower,
+            upper: &self.upper,
+            objective: v.objective,
+            rows: &v.constraints,
+            gradient: &g.objective,
+            jacobian: &g.rows,
+        }
+    }
+
+    /// The best multiplier estimate among `extra` and the least-squares ones.
+    fn best_kkt(&self, v: &Values, g: &Gradients, extra: &[Vec<f64>]) -> (Kkt, Vec<f64>) {
+        let d = self.kkt_data(v, g);
+        let mut candidates: Vec<Vec<f64>> = extra.to_vec();
+        for &t in &self.settings.active_tolerances {
+            candidates.push(least_squares(&d, t));
+        }
+        candidates
+            .into_iter()
+            .map(|l| (kkt(&d, &l), l))
+            .min_by(|a, b| a.0.residual.total_cmp(&b.0.residual))
+            .unwrap_or_else(|| {
+                let l = vec![0.0; v.constraints.len()];
+                (kkt(&d, &l), l)
+            })
+    }
+
+    fn include(&self, rows: &[f64], jacobian: &[Vec<f64>], radius: f64) -> Vec<bool> {
+        rows.iter()
+            .zip(jacobian)
+            .map(|(&g, d)| g + norm2(d) * radius >= -1e-12 * (1.0 + g.abs()))
+            .collect()
+    }
+
+    fn subproblem(&self, rows: &[f64], radius: f64) -> Result<qp::Step, qp::QpFailure> {
+        let g = self.grads.as_ref().expect("initialised");
+        let include = self.include(rows, &g.rows, radius);
+        qp::solve(&Subproblem {
+            x: &self.x,
+            lower: &self.lower,
+            upper: &self.upper,
+            include: &include,
+            hessian: &self.hessian,
+            gradient: &g.objective,
+            rows,
+            jacobian: &g.rows,
+            radius,
+            penalty: self.penalty,
+        })
+    }
+
+    /// Σ_j max(0, g_j + ∇g_jᵀp): the linearised violation after step p.
+    fn linear_violation(&self, rows: &[f64], p: &[f64]) -> f64 {
+        let g = self.grads.as_ref().expect("initialised");
+        rows.iter()
+            .zip(&g.rows)
+            .map(|(&r, d)| (r + d.iter().zip(p).map(|(a, b)| a * b).sum::<f64>()).max(0.0))
+            .sum()
+    }
+
+    /// The least linearised violation any step within `radius` reaches.
+    fn least_linear_violation(&self, v: &Values, radius: f64) -> Option<f64> {
+        let g = self.grads.as_ref().expect("initialised");
+        let n = self.x.len();
+        let tiny = DMatrix::identity(n, n) * 1e-8;
+        let include = vec![true; v.constraints.len()];
+        let zero = vec![0.0; n];
+        let sp = Subproblem {
+            x: &self.x,
+            lower: &self.lower,
+            upper: &self.upper,
+            include: &include,
+            hessian: &tiny,
+            gradient: &zero,
+            rows: &v.constraints,
+            jacobian: &g.rows,
+            radius,
+            penalty: 1.0,
+        };
+        qp::solve(&sp)
+            .ok()
+            .map(|step| self.linear_violation(&v.constraints, &step.p))
+    }
+
+    /// Whether no step decreases the linearised violation (a stationary point of it).
+    fn violation_stationary(&self, v: &Values) -> bool {
+        let radius = self.settings.initial_radius * norm_inf(&self.x).max(1.0);
+        self.least_linear_violation(v, radius)
+            .is_none_or(|least| least >= v.violation() * (1.0 - 1e-6))
+    }
+
+    /// Whether step p reduces the linearised violation by less than half of
+    /// what a step of its length could (then the penalty is too small).
+    fn steps_too_little_to_feasibility(&self, v: &Values, p: &[f64]) -> bool {
+        let viol = v.violation();
+        let reached = viol - self.linear_violation(&v.constraints, p);
+        match self.least_linear_violation(v, norm2(p).max(1e-300)) {
+            Some(least) => reached < 0.5 * (viol - least),
+            None => true,
+        }
+    }
+
+    /// Ends a run that cannot go on: `infeasible` at a stationary point of a
+    /// violation, `stalled` otherwise.
+    fn stop_stuck(&mut self) {
+        let v = self.values.clone().expect("initialised");
+        self.exit = Some(
+            if v.max_violation() > self.settings.feasibility_tolerance
+                && self.violation_stationary(&v)
+            {
+                "infeasible"
+            } else {
+                "stalled"
+            },
+        );
     }
 
     fn record(&mut self, iteration: usize) {
-        if let Some(p) = &self.point {
+        if let (Some(v), Some((k, _))) = (&self.values, &self.kkt) {
             self.trace.push(TraceRow {
                 iteration,
                 time: self.started.map_or(0.0, |t| t.elapsed().as_secs_f64()),
-                objective: p.objective,
-                kkt_residual: self.kkt_residual,
-                violation: p.max_violation(),
+                objective: v.objective,
+                kkt_residual: k.residual,
+                violation: v.max_violation(),
             });
         }
     }
-}
 
-/// The KKT residual at a point with multipliers λ: the largest of
-/// `‖x - P_box(x - ∇_x L)‖∞` (stationarity, with the bounds' own multipliers
-/// implied by the projection, so a point a hair inside a bound is judged by its
-/// distance to it), `max_j max(0, g_j)` (feasibility) and `max_j |λ_j g_j|`
-/// (complementarity). λ ≥ 0 holds by construction.
-pub fn kkt_residual(point: &Point, grads: &Gradients, multipliers: &[f64]) -> f64 {
-    let n = point.x.len();
-    let mut worst = 0.0f64;
-    for i in 0..n {
-        let mut r = grads.objective[i];
-        for (j, l) in multipliers.iter().enumerate() {
-            r += l * grads.rows[j][i];
+    fn reject(&mut self, step_length: f64) {
+        self.radius = self.settings.shrink_factor * step_length.min(self.radius);
+        self.rejections += 1;
+        let floor = self.settings.min_radius * norm_inf(&self.x).max(1.0);
+        if self.radius < floor || self.rejections > self.settings.max_rejections {
+            self.stop_stuck();
         }
-        let x = point.x[i];
-        worst = worst.max((x - (x - r).clamp(0.0, 1.0)).abs());
     }
-    for (j, &g) in point.rows.iter().enumerate() {
-        worst = worst.max(g.max(0.0));
-        worst = worst.max((multipliers.get(j).copied().unwrap_or(0.0) * g).abs());
+
+    fn kv(&self) -> KV {
+        let (obj, viol) = self
+            .values
+            .as_ref()
+            .map_or((f64::NAN, f64::NAN), |v| (v.objective, v.max_violation()));
+        argmin::kv!(
+            "objective" => obj;
+            "violation" => viol;
+            "kkt" => self.last_kkt;
+            "radius" => self.radius;
+            "penalty" => self.penalty;
+            "evaluations" => self.evaluations as u64;
+            "step" => self.last_step;
+            "ratio" => self.last_ratio;
+        )
     }
-    worst
+
+    /// Damped BFGS update (Powell) of the Lagrangian Hessian.
+    fn update_hessian(&mut self, s: &[f64], old: &Gradients, new: &Gradients, lambda: &[f64]) {
+        let n = s.len();
+        let lag = |g: &Gradients| {
+            DVector::from_iterator(
+                n,
+                (0..n).map(|i| {
+                    g.objective[i]
+                        + lambda
+                            .iter()
+                            .zip(&g.rows)
+                            .map(|(l, r)| l * r[i])
+                            .sum::<f64>()
+                }),
+            )
+        };
+        let s = DVector::from_column_slice(s);
+        let y = lag(new) - lag(old);
+        let bs = &self.hessian * &s;
+        let sbs = s.dot(&bs);
+        let sy = s.dot(&y);
+        if sbs > 1e-300 {
+            let theta = if sy >= 0.2 * sbs {
+                1.0
+            } else {
+                0.8 * sbs / (sbs - sy)
+            };
+            let r = &y * theta + &bs * (1.0 - theta);
+            let sr = s.dot(&r);
+            if sr > 1e-300 {
+                self.hessian += &r * r.transpose() / sr - &bs * bs.transpose() / sbs;
+            }
+        }
+    }
 }
 
-fn lagrangian_gradient(grads: &Gradients, multipliers: &[f64]) -> DVector<f64> {
-    let n = grads.objective.len();
-    DVector::from_iterator(
-        n,
-        (0..n).map(|i| {
-            grads.objective[i]
-                + multipliers
-                    .iter()
-                    .enumerate()
-                    .map(|(j, l)| l * grads.rows[j][i])
-                    .sum::<f64>()
-        }),
-    )
+/// The merit ratio actual/predicted, with noise and sign rules.
+fn merit_ratio(actual: f64, predicted: f64, noise: f64) -> f64 {
+    if predicted.abs() <= noise {
+        if actual >= -noise {
+            1.0
+        } else {
+            -1.0
+        }
+    } else if predicted > 0.0 {
+        actual / predicted
+    } else if actual > 0.0 {
+        1.0
+    } else {
+        -1.0
+    }
 }
 
-fn merit(p: &Point, penalty: f64) -> f64 {
-    p.objective + penalty * p.violation()
-}
-
-impl Solver<StudyFunctions, SqpState> for Sqp {
+impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for Sqp {
     fn name(&self) -> &str {
         "SQP (clarabel subproblems, damped BFGS, ℓ1 merit)"
     }
 
     fn init(
         &mut self,
-        problem: &mut Problem<StudyFunctions>,
+        problem: &mut Problem<Program<'_, P>>,
         state: SqpState,
     ) -> Result<(SqpState, Option<KV>), Error> {
         self.started = Some(Instant::now());
+        let prog = problem
+            .problem
+            .as_ref()
+            .map(|p| p.0)
+            .ok_or_else(|| Error::msg("no problem"))?;
         let x0 = state
             .get_param()
             .cloned()
             .ok_or_else(|| Error::msg("the SQP needs a start point"))?;
-        let n = x0.len();
+        self.x = self.project(&x0);
+        let n = self.x.len();
         self.hessian = DMatrix::identity(n, n);
-        let (point, grads) = problem.problem("evaluations", |f| {
-            let p = f.at(&x0);
-            let g = p.as_ref().and_then(|p| gradients(f, p));
-            Ok((p, g))
-        })?;
-        self.evaluations += 1 + grads.as_ref().map_or(0, |g| g.evaluations);
-        let (Some(point), Some(grads)) = (point, grads) else {
-            self.exit = Some("no_contact");
-            return Ok((
-                state.terminate_with(TerminationReason::SolverExit(
-                    "no contact at the start".into(),
-                )),
-                None,
-            ));
+        let xs = norm_inf(&self.x).max(1.0);
+        self.radius = self.settings.initial_radius * xs;
+        let widths: Vec<f64> = self
+            .lower
+            .iter()
+            .zip(&self.upper)
+            .map(|(l, u)| u - l)
+            .collect();
+        self.max_radius = norm2(&widths).max(self.radius);
+        let x = self.x.clone();
+        let values = self.evaluate(prog, &x, &[]);
+        let grads = values.as_ref().and_then(|v| self.gradients_at(prog, &x, v));
+        let (Some(values), Some(grads)) = (values, grads) else {
+            self.exit = Some("unevaluable");
+            return Ok((state, None));
         };
-        let scale = grads.objective.iter().fold(1.0f64, |m, g| m.max(g.abs()));
-        self.penalty = 10.0 * scale;
-        self.multipliers = vec![0.0; point.rows.len()];
-        self.gradient_error = grads.error;
-        self.kkt_residual = kkt_residual(&point, &grads, &self.multipliers);
-        let cost = point.objective;
+        self.penalty = self.settings.penalty_initial * norm_inf(&grads.objective).max(1.0);
+        self.qp_multipliers = vec![0.0; values.constraints.len()];
+        let cost = values.objective;
         let gradient = grads.objective.clone();
-        self.point = Some(point);
+        self.kkt = Some(self.best_kkt(&values, &grads, &[]));
+        self.values = Some(values);
         self.grads = Some(grads);
         Ok((state.cost(cost).gradient(gradient), None))
     }
 
     fn next_iter(
         &mut self,
-        problem: &mut Problem<StudyFunctions>,
+        problem: &mut Problem<Program<'_, P>>,
         state: SqpState,
     ) -> Result<(SqpState, Option<KV>), Error> {
-        let point = self
-            .point
+        let prog = problem
+            .problem
+            .as_ref()
+            .map(|p| p.0)
+            .ok_or_else(|| Error::msg("no problem"))?;
+        let v = self
+            .values
             .clone()
             .ok_or_else(|| Error::msg("not initialised"))?;
         let grads = self
             .grads
             .clone()
             .ok_or_else(|| Error::msg("not initialised"))?;
-        let n = point.x.len();
-        let sp = Subproblem {
-            x: &point.x,
-            hessian: &self.hessian,
-            gradient: &grads.objective,
-            rows: &point.rows,
-            jacobian: &grads.rows,
-            radius: self.radius,
-            penalty: self.penalty,
-        };
-        let step = match qp::solve(&sp) {
+        let step = match self.subproblem(&v.constraints, self.radius) {
             Ok(s) => s,
             Err(fail) => {
-                // Not Solved is not solved: shrink the region and try again.
                 self.qp_failures.push(fail.status);
-                self.radius *= 0.25;
-                self.rejections += 1;
-                if self.radius < 1e-10 || self.rejections > 30 {
-                    self.exit = Some("stalled");
-                }
-                return Ok((state.cost(point.objective), Some(self.kv())));
+                let r = self.radius;
+                self.reject(r);
+                return Ok((state.cost(v.objective), Some(self.kv())));
             }
         };
-        // Converged? KKT at x with the subproblem's multipliers; where the trust
-        // region binds they are not the KKT multipliers, so take them from the
-        // same subproblem without it.
-        let p_len = step.p.iter().map(|v| v * v).sum::<f64>().sqrt();
-        let estimate = if p_len >= 0.99 * self.radius {
-            qp::solve(&Subproblem {
-                radius: (n as f64).sqrt() + 1.0,
-                ..sp
-            })
-            .map(|s| s.multipliers)
-            .unwrap_or_else(|_| step.multipliers.clone())
-        } else {
-            step.multipliers.clone()
-        };
-        // The best of the two estimates (each gives an upper bound on the
-        // residual minimised over λ ≥ 0).
-        let estimate = match qp::least_squares_multipliers(
-            &point.x,
-            &grads.objective,
-            &point.rows,
-            &grads.rows,
-            1e-6,
-        ) {
-            Some(ls)
-                if kkt_residual(&point, &grads, &ls) < kkt_residual(&point, &grads, &estimate) =>
-            {
-                ls
+        // Multipliers: the subproblem's (without the trust region where it
+        // binds, since there they are not the KKT multipliers) and the
+        // least-squares ones; the estimate with the smallest residual.
+        let p_len = norm2(&step.p);
+        let mut extra = vec![step.multipliers.clone()];
+        if p_len >= 0.99 * self.radius {
+            if let Ok(s) = self.subproblem(&v.constraints, 1e3 * self.max_radius) {
+                extra.push(s.multipliers);
             }
-            _ => estimate,
-        };
-        let kkt = kkt_residual(&point, &grads, &estimate);
-        self.kkt_residual = kkt;
+        }
+        self.kkt = Some(self.best_kkt(&v, &grads, &extra));
+        self.last_kkt = self.kkt.as_ref().map_or(f64::NAN, |k| k.0.residual);
         self.record(state.get_iter() as usize);
-        // Finite-difference gradients carry an error of `grads.error` per
-        // component; stationarity cannot be resolved below what that error
-        // becomes through ∇f + Σ λ_j ∇g_j (with a safety factor of 10 for an
-        // estimate that is itself estimated).
-        let resolvable = 10.0 * grads.error * (1.0 + estimate.iter().sum::<f64>());
-        let threshold = self.tolerance.max(resolvable);
-        let slack: f64 = step.slack.iter().sum();
-        if kkt <= threshold {
-            self.multipliers = estimate;
+        if self
+            .kkt
+            .as_ref()
+            .is_some_and(|k| k.0.residual <= self.settings.tolerance)
+        {
             self.exit = Some("converged");
-            return Ok((state.cost(point.objective), Some(self.kv())));
+            return Ok((state.cost(v.objective), Some(self.kv())));
         }
-        let p_norm = step.p.iter().map(|v| v * v).sum::<f64>().sqrt();
-        if p_norm <= 1e-12 {
-            // The subproblem cannot move: a stationary point of the violation
-            // (infeasible) or a point the KKT test cannot certify (stalled).
-            self.exit = Some(if point.max_violation() > FEASIBILITY_TOLERANCE {
-                "infeasible"
-            } else {
-                "stalled"
-            });
-            return Ok((state.cost(point.objective), Some(self.kv())));
+        // No step: the subproblem's, put into the box, does not move x.
+        let xs = norm_inf(&self.x).max(1.0);
+        let x_old = self.x.clone();
+        let target: Vec<f64> = x_old.iter().zip(&step.p).map(|(a, b)| a + b).collect();
+        let mut trial_x = self.project(&target);
+        let moved: Vec<f64> = trial_x.iter().zip(&x_old).map(|(a, b)| a - b).collect();
+        if p_len <= self.settings.step_tolerance * xs
+            || norm2(&moved) <= self.settings.step_tolerance * xs
+        {
+            self.stop_stuck();
+            return Ok((state.cost(v.objective), Some(self.kv())));
         }
-        let predicted = -step.objective_change + self.penalty * (point.violation() - slack);
-        // Interior-point steps stop a hair from a bound: snap to the face.
-        let trial_x: Vec<f64> = point
-            .x
-            .iter()
-            .zip(&step.p)
-            .map(|(x, d)| {
-                let y = (x + d).clamp(0.0, 1.0);
-                if y < BOUND_SNAP {
-                    0.0
-                } else if y > 1.0 - BOUND_SNAP {
-                    1.0
-                } else {
-                    y
-                }
-            })
-            .collect();
-        let hints = point.hints;
-        let trial = problem.problem("evaluations", |f| Ok(f.at_from(&trial_x, hints)))?;
-        self.evaluations += 1;
-        // The merit is known to about 1e-13 (evaluator accuracy in ln units):
-        // a step whose predicted change lies within that noise cannot be judged
-        // by the ratio and is taken when it does not lose more than the noise.
-        let noise = 1e-12 * (1.0 + merit(&point, self.penalty).abs());
-        let ratio = match &trial {
+        // Penalty: above the multipliers by a margin; up when the
+        // linearisation could not be met.
+        let lmax = norm_inf(&step.multipliers);
+        let slack: f64 = step.slack.iter().sum();
+        self.penalty = self
+            .penalty
+            .max(self.settings.penalty_margin * lmax)
+            .min(self.settings.penalty_max);
+        let predicted = -step.objective_change
+            + self.penalty * (v.violation() - self.linear_violation(&v.constraints, &step.p));
+        let noise = self.settings.merit_noise * (1.0 + self.merit(&v).abs());
+        let mut trial = self.evaluate(prog, &trial_x, &v.warm_start);
+        let ratio_of = |s: &Sqp, t: &Option<Values>| match t {
             None => -1.0,
-            Some(t) => {
-                let actual = merit(&point, self.penalty) - merit(t, self.penalty);
-                if predicted.abs() <= noise {
-                    // Within the noise: take the step unless it loses more than it.
-                    if actual >= -noise {
-                        1.0
-                    } else {
-                        -1.0
-                    }
-                } else if predicted > 0.0 {
-                    actual / predicted
-                } else if actual > 0.0 {
-                    1.0
-                } else {
-                    -1.0
-                }
-            }
+            Some(t) => merit_ratio(s.merit(&v) - s.merit(t), predicted, noise),
         };
-        self.last_step = p_norm;
-        self.last_ratio = ratio;
-        if ratio > 0.1 {
-            let trial = trial.expect("ratio > 0 only with a trial point");
-            let new_grads = problem.problem("gradients", |f| Ok(gradients(f, &trial)))?;
-            let Some(new_grads) = new_grads else {
-                self.radius = 0.25 * p_norm;
-                self.rejections += 1;
-                return Ok((state.cost(point.objective), Some(self.kv())));
-            };
-            self.evaluations += new_grads.evaluations;
-            // Damped BFGS on the Lagrangian (Powell).
-            let s = DVector::from_iterator(n, trial.x.iter().zip(&point.x).map(|(a, b)| a - b));
-            let y = lagrangian_gradient(&new_grads, &step.multipliers)
-                - lagrangian_gradient(&grads, &step.multipliers);
-            let bs = &self.hessian * &s;
-            let sbs = s.dot(&bs);
-            let sy = s.dot(&y);
-            if sbs > 1e-300 {
-                let theta = if sy >= 0.2 * sbs {
-                    1.0
-                } else {
-                    0.8 * sbs / (sbs - sy)
-                };
-                let r = &y * theta + &bs * (1.0 - theta);
-                let sr = s.dot(&r);
-                if sr > 1e-300 {
-                    self.hessian += &r * r.transpose() / sr - &bs * bs.transpose() / sbs;
+        let mut ratio = ratio_of(self, &trial);
+        // Second-order correction: the rows re-linearised with their values at
+        // the trial point (against the Maratos effect near curved active rows).
+        if ratio < self.settings.accept_ratio {
+            if let Some(t) = &trial {
+                if t.violation() > v.violation() {
+                    let s: Vec<f64> = trial_x.iter().zip(&x_old).map(|(a, b)| a - b).collect();
+                    let rows: Vec<f64> = t
+                        .constraints
+                        .iter()
+                        .zip(&grads.rows)
+                        .map(|(g, d)| g - d.iter().zip(&s).map(|(a, b)| a * b).sum::<f64>())
+                        .collect();
+                    if let Ok(c) = self.subproblem(&rows, self.radius) {
+                        let target: Vec<f64> = x_old.iter().zip(&c.p).map(|(a, b)| a + b).collect();
+                        let cx = self.project(&target);
+                        let ct = self.evaluate(prog, &cx, &v.warm_start);
+                        let cr = ratio_of(self, &ct);
+                        if cr >= self.settings.accept_ratio {
+                            trial_x = cx;
+                            trial = ct;
+                            ratio = cr;
+                        }
+                    }
                 }
             }
-            if ratio > 0.75 && p_norm >= 0.8 * self.radius {
-                self.radius = (2.0 * self.radius).min((n as f64).sqrt());
+        }
+        self.last_step = p_len;
+        self.last_ratio = ratio;
+        if ratio < self.settings.accept_ratio {
+            if slack > 1e-9 && self.steps_too_little_to_feasibility(&v, &step.p) {
+                self.penalty =
+                    (self.settings.penalty_growth * self.penalty).min(self.settings.penalty_max);
             }
-            self.rejections = 0;
-            self.multipliers = step.multipliers;
-            self.gradient_error = new_grads.error;
-            let cost = trial.objective;
-            let gradient = new_grads.objective.clone();
-            self.point = Some(trial);
-            self.grads = Some(new_grads);
-            if slack > 1e-9 {
-                // The linearisation could not be met: weigh feasibility more.
-                self.penalty = (10.0 * self.penalty).min(1e8);
-            }
-            return Ok((
-                state
-                    .cost(cost)
-                    .gradient(gradient)
-                    .param(self.point.as_ref().map(|p| p.x.clone()).unwrap_or_default()),
-                Some(self.kv()),
-            ));
+            self.reject(p_len);
+            return Ok((state.cost(v.objective), Some(self.kv())));
         }
-        // Rejected.
-        self.radius = 0.5 * p_norm.min(self.radius);
-        self.rejections += 1;
-        if slack > 1e-9 && self.penalty < 1e8 {
-            self.penalty = (10.0 * self.penalty).min(1e8);
+        let trial = trial.expect("accepted steps have values");
+        let Some(new_grads) = self.gradients_at(prog, &trial_x, &trial) else {
+            self.reject(p_len);
+            return Ok((state.cost(v.objective), Some(self.kv())));
+        };
+        let s: Vec<f64> = trial_x.iter().zip(&x_old).map(|(a, b)| a - b).collect();
+        self.update_hessian(&s, &grads, &new_grads, &step.multipliers);
+        let s_len = norm2(&s);
+        if ratio >= self.settings.grow_ratio && s_len >= 0.8 * self.radius {
+            self.radius = (self.settings.grow_factor * self.radius).min(self.max_radius);
+        } else if ratio < self.settings.shrink_ratio {
+            self.radius *= self.settings.shrink_factor;
         }
-        if self.radius < 1e-10 || self.rejections > 30 {
-            self.exit = Some(if point.max_violation() > FEASIBILITY_TOLERANCE {
-                "infeasible"
-            } else {
-                "stalled"
-            });
+        if slack > 1e-9 && self.steps_too_little_to_feasibility(&v, &step.p) {
+            self.penalty =
+                (self.settings.penalty_growth * self.penalty).min(self.settings.penalty_max);
         }
-        Ok((state.cost(point.objective), Some(self.kv())))
+        self.rejections = 0;
+        self.qp_multipliers = step.multipliers;
+        self.x = trial_x;
+        let cost = trial.objective;
+        let gradient = new_grads.objective.clone();
+        self.kkt = None;
+        self.values = Some(trial);
+        self.grads = Some(new_grads);
+        Ok((
+            state.cost(cost).gradient(gradient).param(self.x.clone()),
+            Some(self.kv()),
+        ))
     }
 
     fn terminate(&mut self, _state: &SqpState) -> TerminationStatus {
@@ -417,21 +728,125 @@ impl Solver<StudyFunctions, SqpState> for Sqp {
     }
 }
 
-impl Sqp {
-    fn kv(&self) -> KV {
-        let (obj, viol) = self
-            .point
-            .as_ref()
-            .map_or((f64::NAN, f64::NAN), |p| (p.objective, p.max_violation()));
-        argmin::kv!(
-            "objective" => obj;
-            "violation" => viol;
-            "kkt" => self.kkt_residual;
-            "radius" => self.radius;
-            "penalty" => self.penalty;
-            "evaluations" => self.evaluations as u64;
-            "step" => self.last_step;
-            "ratio" => self.last_ratio;
-        )
+/// An observer that does nothing.
+pub struct NoObserver;
+impl Observe<SqpState> for NoObserver {}
+
+/// Minimises `problem` from `x0` (projected into the bounds). Never
+/// evaluates outside the bounds; bad input shows in the status.
+pub fn minimize(
+    problem: &(impl NonlinearProgram + Sync),
+    x0: &[f64],
+    settings: &SqpSettings,
+) -> SqpResult {
+    minimize_observed(problem, x0, settings, None::<NoObserver>)
+}
+
+/// As [`minimize`], with an argmin observer that sees every iteration's
+/// key-value diagnostics (`objective`, `violation`, `kkt`, `radius`,
+/// `penalty`, `evaluations`, `step`, `ratio`).
+pub fn minimize_observed<P, O>(
+    problem: &P,
+    x0: &[f64],
+    settings: &SqpSettings,
+    observer: Option<O>,
+) -> SqpResult
+where
+    P: NonlinearProgram + Sync + ?Sized,
+    O: Observe<SqpState> + 'static,
+{
+    let n = problem.dimension();
+    let bounds = problem.bounds();
+    let mut scale = problem.scale();
+    scale.resize(n, 1.0);
+    let mut x0 = x0.to_vec();
+    x0.resize(n, 0.0);
+    let solver = Sqp::new(settings, bounds, scale);
+    let mut exec = Executor::new(Program(problem), solver)
+        .configure(|s| s.param(x0.clone()).max_iters(settings.max_iterations));
+    if let Some(t) = settings.time_limit {
+        exec = exec.timeout(t.max(Duration::from_nanos(1)));
+    }
+    if let Some(o) = observer {
+        exec = exec.add_observer(o, ObserverMode::Always);
+    }
+    let (mut solver, reason, iterations) = match exec.run() {
+        Ok(res) => {
+            let reason = res.state.get_termination_reason().cloned();
+            (res.solver, reason, res.state.get_iter())
+        }
+        Err(_) => {
+            let mut s = Sqp::new(settings, problem.bounds(), problem.scale());
+            s.exit = Some("unevaluable");
+            (s, None, 0)
+        }
+    };
+    finish(problem, &mut solver, reason, iterations)
+}
+
+fn finish<P: NonlinearProgram + Sync + ?Sized>(
+    problem: &P,
+    solver: &mut Sqp,
+    reason: Option<TerminationReason>,
+    iterations: u64,
+) -> SqpResult {
+    let (Some(v), Some(g)) = (solver.values.clone(), solver.grads.clone()) else {
+        let x = solver.project(&solver.x);
+        let m = problem.constraints(&x).map_or(0, |c| c.len());
+        return SqpResult {
+            x,
+            objective: f64::INFINITY,
+            constraints: vec![0.0; m],
+            status: SqpStatus::Stalled,
+            kkt_residual: f64::INFINITY,
+            multipliers: vec![0.0; m],
+            lower_bound_multipliers: vec![0.0; problem.dimension()],
+            upper_bound_multipliers: vec![0.0; problem.dimension()],
+            evaluations: solver.evaluations,
+            iterations,
+            gradient_error: 0.0,
+            trace: Vec::new(),
+            qp_failures: solver.qp_failures.clone(),
+            warm_start: Vec::new(),
+        };
+    };
+    if solver.kkt.is_none() {
+        let extra = vec![solver.qp_multipliers.clone()];
+        solver.kkt = Some(solver.best_kkt(&v, &g, &extra));
+        solver.record(iterations as usize);
+    }
+    let (k, lambda) = solver.kkt.clone().expect("set above");
+    let status = match (solver.exit, &reason) {
+        (Some("converged"), _) => SqpStatus::Optimal,
+        (Some("infeasible"), _) => SqpStatus::Infeasible,
+        (Some(_), _) => SqpStatus::Stalled,
+        (None, Some(TerminationReason::Timeout)) => SqpStatus::TimeLimit,
+        (None, Some(TerminationReason::MaxItersReached)) => SqpStatus::IterationLimit,
+        (None, _) => SqpStatus::Stalled,
+    };
+    // The test is the residual itself: a run stopped otherwise that happens
+    // to meet it is optimal, one marked converged that does not is not.
+    let status = if k.residual <= solver.settings.tolerance {
+        SqpStatus::Optimal
+    } else if status == SqpStatus::Optimal {
+        SqpStatus::Stalled
+    } else {
+        status
+    };
+    SqpResult {
+        x: solver.x.clone(),
+        objective: v.objective,
+        constraints: v.constraints.clone(),
+        status,
+        kkt_residual: k.residual,
+        multipliers: lambda,
+        lower_bound_multipliers: k.lower,
+        upper_bound_multipliers: k.upper,
+        evaluations: solver.evaluations,
+        iterations,
+        gradient_error: g.error,
+        trace: solver.trace.clone(),
+        qp_failures: solver.qp_failures.clone(),
+        warm_start: v.warm_start,
     }
 }

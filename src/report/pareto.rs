@@ -407,10 +407,7 @@ pub fn svg(name: &str, front: &Front) -> String {
     };
     let on_front = pick(&|p| p.on_front, &mut x_of);
     let dominated = pick(&|p| p.dominated, &mut x_of);
-    let infeasible = pick(
-        &|p| p.status == crate::optimize::OptimizationStatus::Infeasible,
-        &mut x_of,
-    );
+    let infeasible = pick(&|p| !p.feasible, &mut x_of);
     let knee = pick(&|p| front.knee == Some(p.index), &mut x_of);
     let baseline: Vec<(f64, f64)> = front
         .baseline
