@@ -497,9 +497,10 @@ fn hock_schittkowski_problems_solve_to_optimal_from_their_standard_starts() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// The iteration table of one problem, for diagnosis.
 #[test]
-#[ignore]
-fn debug_one() {
+#[ignore = "diagnostic: HS=15 cargo test --test hock_schittkowski iteration_table -- --ignored --nocapture"]
+fn iteration_table() {
     struct Print;
     impl argmin::core::observers::Observe<wearopt::optimize::SqpState> for Print {
         fn observe_iter(
@@ -521,9 +522,10 @@ fn debug_one() {
             Ok(())
         }
     }
-    let n: u32 = std::env::var("HS").unwrap().parse().unwrap();
+    let n: u32 = std::env::var("HS").map_or(15, |v| v.parse().expect("HS=<problem number>"));
     let all = problems();
     let p = all.iter().find(|p| p.number == n).unwrap();
     let r = wearopt::optimize::minimize_observed(p, &p.x0, &SqpSettings::default(), Some(Print));
     println!("{:?} {:?} {}", r.status, r.x, r.objective);
+    assert_eq!(r.status, SqpStatus::Optimal);
 }
