@@ -18,4 +18,5 @@ pub mod model;
 pub mod optimize;
 pub mod problem;
 pub mod report;
+pub mod surface;
 pub mod sweep;

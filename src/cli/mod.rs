@@ -5,6 +5,7 @@ mod figures;
 mod fit_adhesion;
 mod materials;
 mod pareto;
+mod roughness;
 mod sweep;
 mod verbose;
 
@@ -108,6 +109,13 @@ Under a Slurm job array, the shard comes from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TA
     /// Join the shard outputs of one sweep (CSV or JSON) into the output of the unsharded run, byte for byte.
     #[command(after_help = "Example:\n  wearopt merge part-*.csv --samples 1000000 > sweep.csv")]
     Merge(sweep::MergeArgs),
+    /// Roughness from a measured height map: spectral moments, the McCool σ, R and N for [roughness], a summit count, the PSD.
+    #[command(
+        after_help = "Example:\n  wearopt roughness problems/scans/self-affine.gsf --cutoff 100nm\n  \
+wearopt roughness scan.npy --pixel-size 20nm --height-unit nm --format json --psd psd.svg\n\n\
+Exit code 2 for an unreadable file or a map that cannot be analysed."
+    )]
+    Roughness(roughness::RoughnessArgs),
     /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
     #[command(
         after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh.\n\
@@ -160,6 +168,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::Pareto(args) => pareto::run(args),
         Command::Sweep(args) => sweep::run(args),
         Command::Merge(args) => sweep::merge(args),
+        Command::Roughness(args) => roughness::run(args),
         Command::FitAdhesion(args) => fit_adhesion::run(args),
         Command::Curve {
             theta,

@@ -9,6 +9,7 @@ pub mod eval;
 pub mod materials;
 pub mod optimize;
 pub mod pareto;
+pub mod roughness;
 pub mod svg;
 pub mod sweep;
 pub mod units;
