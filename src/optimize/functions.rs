@@ -93,6 +93,7 @@ pub fn quantity_value(
         ConstraintQuantity::StictionMargin => ev.stiction?.margin,
         ConstraintQuantity::FrictionForce => ev.friction_force?,
         ConstraintQuantity::FrictionCoefficient => ev.friction_coefficient?,
+        ConstraintQuantity::ReleaseMargin => ev.pull_off_force? / scene.load.abs(),
     })
 }
 
@@ -117,6 +118,10 @@ fn ln_quantity(q: ConstraintQuantity, ev: &Evaluation, scene: &crate::model::Sce
             .map_or(LN_FLOOR, |l| {
                 l * ln10 - scene.requirements.restoring_force.unwrap_or(1.0).ln()
             }),
+        ConstraintQuantity::ReleaseMargin => ev
+            .log10_pull_off_force
+            .filter(|l| l.is_finite())
+            .map_or(LN_FLOOR, |l| l * ln10 - scene.load.abs().ln()),
         ConstraintQuantity::FrictionForce | ConstraintQuantity::FrictionCoefficient => {
             ln_friction(q == ConstraintQuantity::FrictionCoefficient, ev, scene)
         }
@@ -254,7 +259,9 @@ impl StudyFunctions {
             || constraints.iter().any(|c| {
                 matches!(
                     c.quantity,
-                    ConstraintQuantity::PullOffForce | ConstraintQuantity::StictionMargin
+                    ConstraintQuantity::PullOffForce
+                        | ConstraintQuantity::StictionMargin
+                        | ConstraintQuantity::ReleaseMargin
                 )
             });
         StudyFunctions {

@@ -28,7 +28,8 @@ pub type SqpState = IterState<Vec<f64>, Vec<f64>, (), (), (), f64>;
 /// How hard and how the SQP works. `SqpSettings::default()` holds every default.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SqpSettings {
-    /// `optimal` needs the KKT residual ≤ this (default 1e-8).
+    /// `optimal` needs the KKT residual ≤ this (default 1e-8) and the
+    /// violation ≤ `feasibility_tolerance`.
     pub tolerance: f64,
     /// A point whose rows (and bounds) are violated by at most this counts as
     /// feasible when a run ends otherwise than `optimal` (default 1e-7).
@@ -75,6 +76,14 @@ pub struct SqpSettings {
     pub bound_snap: f64,
 }
 
+impl SqpSettings {
+    /// The test for `optimal`: KKT residual ≤ `tolerance` and no row or bound
+    /// violated by more than `feasibility_tolerance`.
+    pub fn met(&self, k: &Kkt) -> bool {
+        k.residual <= self.tolerance && k.violation <= self.feasibility_tolerance
+    }
+}
+
 impl Default for SqpSettings {
     fn default() -> Self {
         SqpSettings {
@@ -107,7 +116,7 @@ impl Default for SqpSettings {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SqpStatus {
-    /// KKT residual ≤ tolerance.
+    /// KKT residual ≤ tolerance at a feasible point.
     Optimal,
     /// Ended at a stationary point of the violation with a row violated.
     Infeasible,
@@ -613,11 +622,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         self.kkt = Some(self.best_kkt(&v, &grads, &extra));
         self.last_kkt = self.kkt.as_ref().map_or(f64::NAN, |k| k.0.residual);
         self.record(state.get_iter() as usize);
-        if self
-            .kkt
-            .as_ref()
-            .is_some_and(|k| k.0.residual <= self.settings.tolerance)
-        {
+        if self.kkt.as_ref().is_some_and(|k| self.settings.met(&k.0)) {
             self.exit = Some("converged");
             return Ok((state.cost(v.objective), Some(self.kv())));
         }
@@ -826,7 +831,7 @@ fn finish<P: NonlinearProgram + Sync + ?Sized>(
     };
     // The test is the residual itself: a run stopped otherwise that happens
     // to meet it is optimal, one marked converged that does not is not.
-    let status = if k.residual <= solver.settings.tolerance {
+    let status = if solver.settings.met(&k) {
         SqpStatus::Optimal
     } else if status == SqpStatus::Optimal {
         SqpStatus::Stalled

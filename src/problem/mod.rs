@@ -961,6 +961,8 @@ impl Reader<'_> {
         for (index, constraint) in raw.constraint.iter().enumerate() {
             let c = self.constraint(index, constraint)?;
             let needs = match c.quantity {
+                ConstraintQuantity::ReleaseMargin => (scene.load >= 0.0)
+                    .then_some("a tensile load (contact.load < 0): it measures how far a pulled contact is from snapping apart"),
                 ConstraintQuantity::StictionMargin => scene
                     .requirements
                     .restoring_force
@@ -981,6 +983,20 @@ impl Reader<'_> {
                 ));
             }
             study.constraints.push(c);
+        }
+        // A tensile study keeps a margin to its pull-off unless it sets its own.
+        if scene.load < 0.0
+            && study.has_design()
+            && !study
+                .constraints
+                .iter()
+                .any(|c| c.quantity == ConstraintQuantity::ReleaseMargin)
+        {
+            study.constraints.push(Constraint {
+                quantity: ConstraintQuantity::ReleaseMargin,
+                min: Some(study::DEFAULT_RELEASE_MARGIN),
+                max: None,
+            });
         }
 
         // [pareto]

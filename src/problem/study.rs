@@ -225,8 +225,16 @@ named_enum! {
         FrictionForce => "friction_force",
         /// Friction force over load; needs `interface.shear_strength`.
         FrictionCoefficient => "friction_coefficient",
+        /// Pull-off force over |load|, for a tensile load only: how far the
+        /// contact is from snapping apart (1 = at the pull-off).
+        ReleaseMargin => "release_margin",
     }
 }
+
+/// The `release_margin` minimum added to every study under a tensile load that
+/// does not bound it itself: a design holding with less than 20 % to spare is one
+/// small disturbance (a shock, a drift of the load) from releasing.
+pub const DEFAULT_RELEASE_MARGIN: f64 = 1.2;
 
 impl ConstraintQuantity {
     /// The dimension of its bounds.

@@ -196,20 +196,28 @@ pub fn text(name: &str, o: &Optimum) -> String {
     line(String::new());
     let unit = super::objective_unit(o.objective_name);
     let broken = baseline_violations(o);
-    line(format!(
-        "{}: {} at the optimum, {} at the baseline{}",
-        o.objective_name,
-        si(o.objective, unit, 4),
-        si(o.baseline_objective, unit, 4),
-        if broken.is_empty() {
-            format!(
-                " (improvement ×{})",
-                sig(o.baseline_objective / o.objective, 4)
-            )
-        } else {
-            String::new()
-        }
-    ));
+    if o.baseline_evaluation.is_none() {
+        line(format!(
+            "{}: {} at the optimum; the baseline has no contact (the load pulls its surfaces apart)",
+            o.objective_name,
+            si(o.objective, unit, 4),
+        ));
+    } else {
+        line(format!(
+            "{}: {} at the optimum, {} at the baseline{}",
+            o.objective_name,
+            si(o.objective, unit, 4),
+            si(o.baseline_objective, unit, 4),
+            if broken.is_empty() {
+                format!(
+                    " (improvement ×{})",
+                    sig(o.baseline_objective / o.objective, 4)
+                )
+            } else {
+                String::new()
+            }
+        ));
+    }
     for b in &broken {
         line(format!(
             "  the baseline is INFEASIBLE: {} = {} breaks its {} of {}{}",
@@ -220,7 +228,7 @@ pub fn text(name: &str, o: &Optimum) -> String {
                 )),
             b.side,
             constraint_quantity(b.quantity, b.limit),
-            if o.status == OptimizationStatus::Infeasible {
+            if !o.feasible() {
                 ""
             } else {
                 "; the optimum meets every limit, so compare it with feasible designs, not with the baseline"
