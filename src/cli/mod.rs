@@ -199,6 +199,7 @@ fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
         name: &problem.name,
         scene: &problem.scene,
         input_notes: &problem.notes,
+        scan: problem.scan.as_ref(),
         evaluation: &evaluation,
         sensitivities: &sensitivities,
     };

@@ -47,6 +47,7 @@ mod error;
 mod locate;
 pub mod raw;
 mod study;
+mod topography;
 pub mod units;
 
 use std::ops::Range;
@@ -61,6 +62,7 @@ pub use study::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
     Objective, OptimizerSettings, ParetoDirection, ParetoSpec, SettingsError, Study,
 };
+pub use topography::ScanSource;
 
 use crate::model::{Scene, WearArea};
 use catalogue::Material;
@@ -83,6 +85,8 @@ pub struct Problem {
     /// Things the loader decided for the user, to show beside the results (values taken
     /// from the catalogue, overrides, implausible but accepted values).
     pub notes: Vec<String>,
+    /// The measured scan σ, R and N came from (`[roughness] topography`), if any.
+    pub scan: Option<ScanSource>,
 }
 
 /// Reads and validates a problem file. The file must be UTF-8; its path (as given) is
@@ -581,7 +585,7 @@ const BODIES_HINT: &str =
 const INTERFACE_HINT: &str =
     "add an [interface] table with work_of_adhesion (and hardness unless body a is a catalogue material)";
 const ROUGHNESS_HINT: &str =
-    "add a [roughness] table with sigma, asperity_radius and asperity_density";
+    "add a [roughness] table with sigma, asperity_radius and asperity_density, or topography = \"scans/x.gsf\" (a measured height map)";
 
 impl Problem {
     /// Stage two: units, catalogue look-ups, defaults, ranges and cross-field checks.
@@ -782,36 +786,44 @@ impl Problem {
         let roughness = r.required(&raw.roughness, "table [roughness]", None, ROUGHNESS_HINT)?;
         let rspan = roughness.span();
         let g = roughness.get_ref();
-        let sigma = r.quantity(
-            "roughness.sigma",
-            r.required(
-                &g.sigma,
-                "roughness.sigma",
-                Some(&rspan),
-                "the standard deviation of asperity heights, e.g. sigma = \"5 nm\"",
-            )?,
-            Accept::positive(Dimension::Length),
-        )?;
-        let asperity_radius = r.quantity(
-            "roughness.asperity_radius",
-            r.required(
-                &g.asperity_radius,
-                "roughness.asperity_radius",
-                Some(&rspan),
-                "the asperity tip radius, e.g. asperity_radius = \"1 um\"",
-            )?,
-            Accept::positive(Dimension::Length),
-        )?;
-        let asperity_density = r.quantity(
-            "roughness.asperity_density",
-            r.required(
-                &g.asperity_density,
-                "roughness.asperity_density",
-                Some(&rspan),
-                "asperities per unit area, e.g. asperity_density = \"10 um^-2\"",
-            )?,
-            Accept::positive(Dimension::InverseArea),
-        )?;
+        let scan_values = r.topography(g)?;
+        let (sigma, asperity_radius, asperity_density, scan) =
+            if let Some((s, rad, n, src)) = scan_values {
+                (s, rad, n, Some(src))
+            } else {
+                let sigma = r.quantity(
+                    "roughness.sigma",
+                    r.required(
+                        &g.sigma,
+                        "roughness.sigma",
+                        Some(&rspan),
+                        "the standard deviation of asperity heights, e.g. sigma = \"5 nm\"",
+                    )?,
+                    Accept::positive(Dimension::Length),
+                )?;
+                let asperity_radius = r.quantity(
+                    "roughness.asperity_radius",
+                    r.required(
+                        &g.asperity_radius,
+                        "roughness.asperity_radius",
+                        Some(&rspan),
+                        "the asperity tip radius, e.g. asperity_radius = \"1 um\"",
+                    )?,
+                    Accept::positive(Dimension::Length),
+                )?;
+                let asperity_density = r.quantity(
+                    "roughness.asperity_density",
+                    r.required(
+                        &g.asperity_density,
+                        "roughness.asperity_density",
+                        Some(&rspan),
+                        "asperities per unit area, e.g. asperity_density = \"10 um^-2\"",
+                    )?,
+                    Accept::positive(Dimension::InverseArea),
+                )?;
+
+                (sigma, asperity_radius, asperity_density, None)
+            };
 
         let shear_strength = r.optional_quantity(
             "interface.shear_strength",
@@ -848,6 +860,7 @@ impl Problem {
             scene,
             study,
             notes: r.notes,
+            scan,
         })
     }
 }

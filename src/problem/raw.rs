@@ -154,6 +154,12 @@ pub struct RawRoughness {
     pub sigma: Option<Spanned<RawQuantity>>,
     pub asperity_radius: Option<Spanned<RawQuantity>>,
     pub asperity_density: Option<Spanned<RawQuantity>>,
+    /// A height-map file (relative to the problem file) in place of the three values.
+    pub topography: Option<Spanned<String>>,
+    pub cutoff: Option<Spanned<RawQuantity>>,
+    pub level: Option<Spanned<String>>,
+    pub pixel_size: Option<Spanned<RawQuantity>>,
+    pub height_unit: Option<Spanned<String>>,
 }
 
 /// `{ min = …, max = … }` of one design variable.

@@ -17,6 +17,8 @@ pub struct EvalReport<'a> {
     pub evaluation: &'a Evaluation,
     /// Wear-rate elasticities.
     pub sensitivities: &'a [Sensitivity],
+    /// The measured scan σ, R and N came from, if any.
+    pub scan: Option<&'a crate::problem::ScanSource>,
 }
 
 fn opt(x: Option<f64>) -> Value {
@@ -49,6 +51,10 @@ pub fn json(r: &EvalReport) -> String {
         obj.insert(
             "scene".into(),
             serde_json::to_value(r.scene).unwrap_or(Value::Null),
+        );
+        obj.insert(
+            "roughness_source".into(),
+            r.scan.map_or(Value::Null, super::roughness::scan_json),
         );
         let mut sens = Map::new();
         for s in r.sensitivities {
@@ -115,6 +121,9 @@ pub fn text(r: &EvalReport) -> String {
         si(sc.asperity_radius, "m", 3),
         si(sc.asperity_density, "m⁻²", 3)
     ));
+    for l in r.scan.map(super::roughness::scan_lines).unwrap_or_default() {
+        line(l);
+    }
     line(format!(
         "  load W = {} on nominal area {}, sliding {}, wear coefficient k = {}, wearing area: {}",
         si(sc.load, "N", 3),

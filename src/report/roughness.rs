@@ -358,3 +358,52 @@ pub fn psd_svg(r: &RoughnessReport, psd: &Psd) -> String {
     }
     plot.to_svg()
 }
+
+/// Lines for a scene report whose roughness came from a scan: where from, α, cut-off,
+/// levelling, and the analysis' warnings.
+pub fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
+    let g = &scan.roughness;
+    let p = &g.parameters;
+    let mut lines = vec![format!(
+        "  σ, R and N come from the scan {} ({}, {} × {} points of {} × {}): bandwidth α = {}, {} levelling, cut-off {}; the summits' mean plane (from which d is measured) lies {} above the surface's",
+        scan.topography,
+        scan.format.name(),
+        g.nx,
+        g.ny,
+        si(g.pixel_size_x, "m", 4),
+        si(g.pixel_size_y, "m", 4),
+        sig(p.bandwidth, 4),
+        g.settings.level.as_str(),
+        g.settings
+            .cutoff
+            .map_or("none".to_string(), |c| si(c, "m", 4)),
+        si(p.mean_summit_height, "m", 4),
+    )];
+    for w in &g.warnings {
+        lines.push(format!("  scan: {}", warning_text(w)));
+    }
+    lines
+}
+
+/// The JSON object of a scene's scan source (SI units).
+pub fn scan_json(scan: &crate::problem::ScanSource) -> Value {
+    let g = &scan.roughness;
+    let p = &g.parameters;
+    json!({
+        "topography": scan.topography,
+        "path": scan.path,
+        "format": scan.format,
+        "nx": g.nx,
+        "ny": g.ny,
+        "pixel_size_x": g.pixel_size_x,
+        "pixel_size_y": g.pixel_size_y,
+        "level": g.settings.level.as_str(),
+        "cutoff": opt(g.settings.cutoff),
+        "bandwidth": p.bandwidth,
+        "summit_sigma": p.summit_sigma,
+        "summit_radius": p.summit_radius,
+        "summit_density": p.summit_density,
+        "mean_summit_height": p.mean_summit_height,
+        "warnings": g.warnings.iter().map(warning_text).collect::<Vec<_>>(),
+    })
+}

@@ -1,0 +1,148 @@
+//! `[roughness] topography = "scans/x.gsf"`: σ, R and N from a measured height map.
+//!
+//! ```toml
+//! [roughness]
+//! topography = "scans/self-affine.gsf"   # relative to the problem file
+//! cutoff = "100 nm"                      # optional ISO 16610-61 short-wavelength cut-off
+//! level = "plane"                        # none | plane (default) | quadratic
+//! pixel_size = "20 nm"                   # only when the file gives none (.npy, bare ASCII)
+//! height_unit = "nm"                     # likewise
+//! ```
+//!
+//! in place of `sigma`, `asperity_radius` and `asperity_density`; giving both is refused.
+
+use std::ops::Range;
+use std::path::Path;
+
+use serde::Serialize;
+use toml::Spanned;
+
+use super::raw::{RawQuantity, RawRoughness};
+use super::units::Dimension;
+use super::{Accept, ProblemError, Reader};
+use crate::surface::read::{self, parse_height_unit, Format, Overrides};
+use crate::surface::{analyse, Levelling, Roughness, Settings};
+
+/// Where the scene's roughness came from when the file names a scan.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ScanSource {
+    /// `topography` as written in the problem file.
+    pub topography: String,
+    /// The path read (relative to the problem file's folder).
+    pub path: String,
+    /// The file's format.
+    pub format: Format,
+    /// The whole analysis (moments, parameters, summit count, warnings).
+    pub roughness: Roughness,
+}
+
+/// The optional keys that only make sense with `topography`.
+const SCAN_KEYS: [&str; 4] = ["cutoff", "level", "pixel_size", "height_unit"];
+
+impl Reader<'_> {
+    /// σ, R, N and the source, when `[roughness]` names a topography; `None` otherwise
+    /// (after refusing scan settings without a scan).
+    pub(super) fn topography(
+        &mut self,
+        g: &RawRoughness,
+    ) -> Result<Option<(f64, f64, f64, ScanSource)>, ProblemError> {
+        let Some(topo) = &g.topography else {
+            let given: [(&str, Option<Range<usize>>); 4] = [
+                ("cutoff", g.cutoff.as_ref().map(|v| v.span())),
+                ("level", g.level.as_ref().map(|v| v.span())),
+                ("pixel_size", g.pixel_size.as_ref().map(|v| v.span())),
+                ("height_unit", g.height_unit.as_ref().map(|v| v.span())),
+            ];
+            if let Some((key, Some(span))) = given.into_iter().find(|(_, s)| s.is_some()) {
+                return Err(self.invalid(
+                    &format!("roughness.{key}"),
+                    &span,
+                    format!(
+                        "applies only to a measured scan; add topography = \"scans/your-scan.gsf\" or remove {key} (scan settings: {})",
+                        SCAN_KEYS.join(", ")
+                    ),
+                ));
+            }
+            return Ok(None);
+        };
+        let tspan = topo.span();
+        for (key, value) in [
+            ("sigma", &g.sigma),
+            ("asperity_radius", &g.asperity_radius),
+            ("asperity_density", &g.asperity_density),
+        ] {
+            if let Some(v) = value {
+                return Err(self.invalid(
+                    &format!("roughness.{key}"),
+                    &v.span(),
+                    format!(
+                        "clashes with roughness.topography (line {}): the scan supplies σ, R and N; give either topography or sigma, asperity_radius and asperity_density, not both",
+                        super::line_of(self.text, tspan.start)
+                    ),
+                ));
+            }
+        }
+        let written = topo.get_ref().clone();
+        if written.trim().is_empty() {
+            return Err(self.invalid(
+                "roughness.topography",
+                &tspan,
+                "must name a height-map file (.gsf, .x3p, .npy, or an ASCII matrix)",
+            ));
+        }
+        let base = Path::new(self.origin)
+            .parent()
+            .unwrap_or_else(|| Path::new(""));
+        let path = base.join(&written);
+        let length = |r: &Self, key: &str, v: &Option<Spanned<RawQuantity>>| {
+            r.optional_quantity(key, v, Accept::positive(Dimension::Length))
+        };
+        let cutoff = length(self, "roughness.cutoff", &g.cutoff)?;
+        let pixel_size = length(self, "roughness.pixel_size", &g.pixel_size)?;
+        let height_unit = match &g.height_unit {
+            None => None,
+            Some(u) => Some(parse_height_unit(u.get_ref()).ok_or_else(|| {
+                self.invalid(
+                    "roughness.height_unit",
+                    &u.span(),
+                    "not a length unit; expected e.g. \"nm\", \"um\", \"m\" or \"1e-9\"",
+                )
+            })?),
+        };
+        let level = match &g.level {
+            None => Levelling::Plane,
+            Some(l) => Levelling::from_name(l.get_ref()).ok_or_else(|| {
+                self.invalid(
+                    "roughness.level",
+                    &l.span(),
+                    format!(
+                        "unknown levelling (one of: {})",
+                        Levelling::NAMES.join(", ")
+                    ),
+                )
+            })?,
+        };
+        let overrides = Overrides {
+            pixel_size,
+            height_unit,
+        };
+        let scan_error = |r: &Self, e: String| r.invalid("roughness.topography", &tspan, e);
+        let map = read::load(&path, &overrides).map_err(|e| scan_error(self, e.to_string()))?;
+        let settings = Settings { level, cutoff };
+        let roughness = analyse(&map, &settings)
+            .map_err(|e| scan_error(self, format!("{}: {e}", path.display())))?;
+        let p = roughness.parameters;
+        let source = ScanSource {
+            topography: written,
+            path: path.display().to_string(),
+            format: Format::from_path(&path).unwrap_or(Format::Ascii),
+            roughness,
+        };
+        Ok(Some((
+            p.summit_sigma,
+            p.summit_radius,
+            p.summit_density,
+            source,
+        )))
+    }
+}
