@@ -27,8 +27,8 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 
 use wearopt::model::{
-    evaluate, find_pull_off, landscape, solve_separation, Coefficients, EvaluationOptions,
-    Landscape, Model, Scene, SeparationOutcome, Status, WearArea,
+    evaluate, find_pull_off, landscape, solve_separation, AdhesionModel, AttractionKind,
+    Coefficients, EvaluationOptions, Landscape, Model, Scene, SeparationOutcome, Status, WearArea,
 };
 
 /// Default cases per property (debug build, opt-level 1).
@@ -331,10 +331,11 @@ fn scene() -> impl Strategy<Value = Scene> {
             prop_oneof![4 => Just(1.0), 1 => Just(-1.0)], // compressive or tensile
             log_uniform(1e-12, 1e-4),                     // A_n
             any::<bool>(),                                // plastic wear area
+            0..3u8,                                       // JKR, DMT van der Waals, DMT Dugdale
         ),
     )
         .prop_map(
-            |((ea, na, eb, nb, hard, gamma), (sigma, r, n, w, sign, an, plastic))| Scene {
+            |((ea, na, eb, nb, hard, gamma), (sigma, r, n, w, sign, an, plastic, law))| Scene {
                 youngs_modulus_a: ea,
                 poisson_ratio_a: na,
                 youngs_modulus_b: eb,
@@ -355,6 +356,16 @@ fn scene() -> impl Strategy<Value = Scene> {
                     WearArea::Total
                 },
                 requirements: Default::default(),
+                adhesion_model: if law == 0 {
+                    AdhesionModel::Jkr
+                } else {
+                    AdhesionModel::Dmt
+                },
+                attraction: if law == 2 {
+                    AttractionKind::Dugdale
+                } else {
+                    AttractionKind::VanDerWaals
+                },
             },
         )
 }
@@ -475,8 +486,12 @@ fn scene_outputs_sane(scene: &Scene) -> Result<(), TestCaseError> {
             // the terms: an adhesive contact carries down to −1.5πγR (the
             // asperity pull-off), so the elastic integral's terms are as large as
             // |parts| + 1.5πγR × contacts even where the parts nearly cancel.
-            let (el, pl) = (ev.elastic_load, ev.plastic_load);
-            let scale = el.abs() + pl.abs() + ev.asperity_pull_off_force * ev.contact_count;
+            // Under DMT the attracted, non-contacting asperities carry a share too.
+            let nc = ev.noncontact_load.unwrap_or(f64::NAN);
+            prop_assert!(nc <= 0.0, "noncontact_load {nc} for {scene:?}");
+            let (el, pl) = (ev.elastic_load, ev.plastic_load + nc);
+            let scale =
+                el.abs() + pl.abs() + nc.abs() + ev.asperity_pull_off_force * ev.contact_count;
             // Only where the parts are representable (not underflowed) doubles.
             if scale > 1e-290 && scene.load.abs() > 1e-290 {
                 prop_assert!(

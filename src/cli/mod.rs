@@ -193,7 +193,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
 fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
     let problem = wearopt::problem::load(&file)?;
     let options = EvaluationOptions::default();
-    let evaluation = model::evaluate(&problem.scene, &options);
+    let evaluation = model::evaluate_with_other(&problem.scene, &options);
     let sensitivities = model::sensitivities(&problem.scene, options.quadrature);
     let r = report::eval::EvalReport {
         name: &problem.name,

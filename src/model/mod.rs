@@ -28,6 +28,6 @@ pub use separation::{
 };
 pub use warnings::{Note, ScalarInput, Warning};
 pub use wear::{
-    evaluate, evaluate_from, Evaluation, EvaluationOptions, Indices, Regime, SearchHints, Status,
-    Stiction, StictionVerdict,
+    evaluate, evaluate_from, evaluate_with_other, Evaluation, EvaluationOptions, Indices,
+    OtherModel, Regime, SearchHints, Status, Stiction, StictionVerdict,
 };

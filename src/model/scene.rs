@@ -2,6 +2,8 @@
 
 use serde::Serialize;
 
+use super::law::{AdhesionModel, AttractionKind};
+
 /// Which real area wears (paper eq. 13): all contacts, or only the plastic
 /// ("welded") junctions.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
@@ -34,7 +36,8 @@ pub struct Scene {
     pub hardness: f64,
     /// γ, work of adhesion (J/m² = N/m), ≥ 0 (0: no adhesion).
     pub work_of_adhesion: f64,
-    /// Z0, equilibrium interatomic distance (m), > 0; only for the Tabor parameter.
+    /// Z0, equilibrium interatomic distance (m), > 0: the Tabor parameter and,
+    /// under DMT, the range of the attraction (z0 = Z0/σ, Δ_h = Z0/(1.03σ)).
     pub interatomic_distance: f64,
     /// σ, standard deviation of asperity heights (m), > 0.
     pub sigma: f64,
@@ -55,6 +58,13 @@ pub struct Scene {
     /// What the designer judges the contact by: allowed wear, cycles, the spring that
     /// must free the part, the interface's shear strength (all optional).
     pub requirements: Requirements,
+    /// The asperity law (MODEL.md §3 JKR, §7 DMT). Reported at the top level of
+    /// an evaluation, not inside the scene.
+    #[serde(skip)]
+    pub adhesion_model: AdhesionModel,
+    /// Under DMT: how non-contacting asperities are attracted (ignored under JKR).
+    #[serde(skip)]
+    pub attraction: AttractionKind,
 }
 
 /// The optional inputs of the numbers a designer decides on: life, stiction, friction.

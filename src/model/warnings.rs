@@ -98,6 +98,12 @@ pub enum Warning {
         /// φ0.
         tabor_parameter: f64,
     },
+    /// φ0 > 0.3 with the DMT law: outside the regime it holds in (above 3: JKR's;
+    /// 0.3–3: the transition, where the two laws bracket the truth).
+    OutsideDmtRegime {
+        /// φ0.
+        tabor_parameter: f64,
+    },
     /// The separation search stopped without converging.
     SeparationNotConverged {
         /// Model evaluations spent.

@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use super::integrals::{Model, Quadrature};
+use super::law::{AdhesionModel, AsperityLaw, AttractionKind};
 use super::scaled::Scaled;
 use super::scene::{Scene, WearArea};
 use super::separation::{
@@ -180,7 +181,43 @@ pub struct Evaluation {
     pub friction_force: Option<f64>,
     /// friction_force / load; None without `shear_strength` or for a load ≤ 0.
     pub friction_coefficient: Option<f64>,
+    /// The asperity law the numbers come from.
+    pub adhesion_model: AdhesionModel,
+    /// Under DMT, how non-contacting asperities are attracted (absent under JKR).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub attraction: Option<AttractionKind>,
+    /// Under DMT with van der Waals attraction, the Hamaker constant A = 12π Z0² γ
+    /// that makes the sphere–flat force -A R/(6 (g + Z0)²) equal -2πRγ at contact (J).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hamaker_constant: Option<f64>,
+    /// The load carried by attracted asperities not in contact (N, ≤ 0; 0 under
+    /// JKR); None when separated.
+    pub noncontact_load: Option<f64>,
+    /// For 0.3 ≤ φ0 ≤ 3, where neither law is exact: the other law's numbers.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub other_model: Option<OtherModel>,
 }
+
+/// The headline numbers of the other asperity law, for a scene in the JKR–DMT
+/// transition (0.3 ≤ φ0 ≤ 3) where the two laws bracket the truth.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct OtherModel {
+    /// Which law.
+    pub adhesion_model: AdhesionModel,
+    /// Its status under the load.
+    pub status: Status,
+    /// h = d/σ; None when separated.
+    pub nondimensional_separation: Option<f64>,
+    /// A_r (m²); 0 when separated.
+    pub real_area: f64,
+    /// The pull-off force (N).
+    pub pull_off_force: Option<f64>,
+    /// The wear rate (m³/m); 0 when separated.
+    pub wear_rate: f64,
+}
+
+/// φ0 range where neither law is exact and `eval` gives both.
+pub const TRANSITION_TABOR: (f64, f64) = (0.3, 3.0);
 
 /// Does the part come free? The pull-off force against the restoring force.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -298,12 +335,44 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
     evaluate_from(scene, options, SearchHints::default())
 }
 
+/// As [`evaluate`], and for a scene in the JKR–DMT transition (0.3 ≤ φ0 ≤ 3,
+/// with adhesion) also the other law's headline numbers in `other_model`
+/// (what `wearopt eval` reports). Under JKR the other law is DMT with the scene's
+/// attraction (van der Waals by default).
+pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
+    let mut ev = evaluate(scene, options);
+    let phi = ev.indices.tabor_parameter;
+    let transition = phi >= TRANSITION_TABOR.0 && phi <= TRANSITION_TABOR.1;
+    if transition && scene.work_of_adhesion > 0.0 {
+        let other_scene = Scene {
+            adhesion_model: scene.adhesion_model.other(),
+            ..scene.clone()
+        };
+        let o = evaluate(&other_scene, options);
+        ev.other_model = Some(OtherModel {
+            adhesion_model: other_scene.adhesion_model,
+            status: o.status,
+            nondimensional_separation: o.nondimensional_separation,
+            real_area: o.real_area,
+            pull_off_force: o.pull_off_force,
+            wear_rate: o.wear_rate,
+        });
+    }
+    ev
+}
+
 /// As [`evaluate`], starting the searches from `hints`.
 pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHints) -> Evaluation {
     let e = equivalent_modulus(scene);
     let k = 4.0 / 3.0 * e;
     let coeffs = coefficients(scene);
-    let model = Model::with_quadrature(coeffs, options.quadrature);
+    let law = AsperityLaw::of(
+        scene.adhesion_model,
+        scene.attraction,
+        scene.interatomic_distance,
+        scene.sigma,
+    );
+    let model = Model::with_law(coeffs, law, options.quadrature);
     let idx = indices(scene);
     let reg = regime(&idx, coeffs.has_adhesion());
     let (r, s, n, an) = (
@@ -319,10 +388,19 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
 
     let mut warnings = warnings::scene_warnings(scene);
     let mut notes = Vec::new();
-    if coeffs.has_adhesion() && idx.tabor_parameter < 3.0 {
-        warnings.push(Warning::OutsideJkrRegime {
-            tabor_parameter: idx.tabor_parameter,
-        });
+    let phi = idx.tabor_parameter;
+    match scene.adhesion_model {
+        AdhesionModel::Jkr if coeffs.has_adhesion() && phi < TRANSITION_TABOR.1 => {
+            warnings.push(Warning::OutsideJkrRegime {
+                tabor_parameter: phi,
+            });
+        }
+        AdhesionModel::Dmt if coeffs.has_adhesion() && phi > TRANSITION_TABOR.0 => {
+            warnings.push(Warning::OutsideDmtRegime {
+                tabor_parameter: phi,
+            });
+        }
+        _ => {}
     }
     if reg.elastic_adhesion_matters {
         notes.push(Note::ElasticAdhesionMatters {
@@ -472,6 +550,13 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         stiction: None,
         friction_force: None,
         friction_coefficient: None,
+        adhesion_model: scene.adhesion_model,
+        attraction: (scene.adhesion_model == AdhesionModel::Dmt).then_some(scene.attraction),
+        hamaker_constant: (scene.adhesion_model == AdhesionModel::Dmt
+            && scene.attraction == AttractionKind::VanDerWaals)
+            .then(|| 12.0 * PI * scene.interatomic_distance.powi(2) * scene.work_of_adhesion),
+        noncontact_load: at.map(|a| a.noncontact_load().scale(load_scale).value()),
+        other_model: None,
     };
     with_contact_checks(with_designer_numbers(evaluation, scene))
 }

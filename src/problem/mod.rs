@@ -31,7 +31,9 @@
 //! [interface]
 //! hardness = "10 GPa"             # H > 0 or "inf"; default: body a's catalogue value
 //! work_of_adhesion = "0.1 J/m^2"  # γ >= 0
-//! interatomic_distance = "0.3 nm" # Z0 > 0 (default 0.3 nm)
+//! interatomic_distance = "0.3 nm" # Z0 > 0 (default 0.3 nm); under DMT also the attraction's range
+//! adhesion_model = "jkr"          # or "dmt" (default "jkr"): the asperity law
+//! attraction = "van_der_waals"    # DMT only: or "dugdale" (default "van_der_waals")
 //!
 //! [roughness]
 //! sigma = "5 nm"
@@ -64,7 +66,7 @@ pub use study::{
 };
 pub use topography::ScanSource;
 
-use crate::model::{Scene, WearArea};
+use crate::model::{AdhesionModel, AttractionKind, Scene, WearArea};
 use catalogue::Material;
 use error::line_of;
 use raw::{RawBody, RawBound, RawInteger, RawProblem, RawQuantity};
@@ -825,6 +827,48 @@ impl Problem {
                 (sigma, asperity_radius, asperity_density, None)
             };
 
+        let adhesion_model = match &i.adhesion_model {
+            None => AdhesionModel::default(),
+            Some(w) => match w.get_ref().as_str() {
+                "jkr" => AdhesionModel::Jkr,
+                "dmt" => AdhesionModel::Dmt,
+                other => {
+                    let hint = suggest(other, ["jkr", "dmt"])
+                        .map(|s| format!("; did you mean \"{s}\"?"))
+                        .unwrap_or_default();
+                    return Err(r.invalid(
+                        "interface.adhesion_model",
+                        &w.span(),
+                        format!("unknown asperity law{hint} (one of: jkr, dmt)"),
+                    ));
+                }
+            },
+        };
+        let attraction = match &i.attraction {
+            None => AttractionKind::default(),
+            Some(w) if adhesion_model == AdhesionModel::Jkr => {
+                return Err(r.invalid(
+                    "interface.attraction",
+                    &w.span(),
+                    "attraction applies to the DMT law only, and adhesion_model is \"jkr\" (the default): remove attraction, or set adhesion_model = \"dmt\"",
+                ));
+            }
+            Some(w) => match w.get_ref().as_str() {
+                "van_der_waals" => AttractionKind::VanDerWaals,
+                "dugdale" => AttractionKind::Dugdale,
+                other => {
+                    let hint = suggest(other, ["van_der_waals", "dugdale"])
+                        .map(|s| format!("; did you mean \"{s}\"?"))
+                        .unwrap_or_default();
+                    return Err(r.invalid(
+                        "interface.attraction",
+                        &w.span(),
+                        format!("unknown attraction{hint} (one of: van_der_waals, dugdale)"),
+                    ));
+                }
+            },
+        };
+
         let shear_strength = r.optional_quantity(
             "interface.shear_strength",
             &i.shear_strength,
@@ -852,6 +896,8 @@ impl Problem {
                 restoring_force,
                 shear_strength,
             },
+            adhesion_model,
+            attraction,
         };
 
         let study = r.study(&raw, &scene)?;

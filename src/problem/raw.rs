@@ -144,6 +144,8 @@ pub struct RawInterface {
     pub hardness: Option<Spanned<RawQuantity>>,
     pub work_of_adhesion: Option<Spanned<RawQuantity>>,
     pub interatomic_distance: Option<Spanned<RawQuantity>>,
+    pub adhesion_model: Option<Spanned<String>>,
+    pub attraction: Option<Spanned<String>>,
     pub shear_strength: Option<Spanned<RawQuantity>>,
 }
 

@@ -3,7 +3,7 @@
 use serde_json::{json, Map, Value};
 
 use super::{si, sig, sig_exp};
-use crate::model::{Evaluation, Scene, Sensitivity, WearArea};
+use crate::model::{AdhesionModel, AttractionKind, Evaluation, Scene, Sensitivity, WearArea};
 
 /// Everything an evaluation report shows.
 pub struct EvalReport<'a> {
@@ -74,6 +74,26 @@ pub fn json(r: &EvalReport) -> String {
     s
 }
 
+/// The asperity law in words, with the attraction's range under DMT.
+fn law_words(ev: &Evaluation, sc: &Scene) -> String {
+    match ev.adhesion_model {
+        AdhesionModel::Jkr => {
+            "JKR (adhesion inside contacts only; adhesion_model = \"jkr\")".to_string()
+        }
+        AdhesionModel::Dmt => match sc.attraction {
+            AttractionKind::VanDerWaals => format!(
+                "DMT with van der Waals attraction of asperities not in contact (range z0 = Z0/σ = {}, Hamaker constant A = 12π Z0² γ = {} J)",
+                sig_exp(sc.interatomic_distance / sc.sigma, 4),
+                sig_exp(ev.hamaker_constant.unwrap_or(f64::NAN), 4)
+            ),
+            AttractionKind::Dugdale => format!(
+                "DMT with Dugdale attraction of asperities not in contact (stress 1.03 γ/Z0 over h0 = Z0/1.03; h0/σ = {})",
+                sig_exp(sc.interatomic_distance / (1.03 * sc.sigma), 4)
+            ),
+        },
+    }
+}
+
 /// A report for people.
 pub fn text(r: &EvalReport) -> String {
     let ev = r.evaluation;
@@ -115,6 +135,7 @@ pub fn text(r: &EvalReport) -> String {
             format!("{} J/m²", sig_exp(sc.work_of_adhesion, 3))
         }
     ));
+    line(format!("  asperity law: {}", law_words(ev, sc)));
     line(format!(
         "  roughness σ = {}, asperity radius R = {}, asperity density N = {}",
         si(sc.sigma, "m", 3),
@@ -199,11 +220,19 @@ pub fn text(r: &EvalReport) -> String {
     if let Some(p) = ev.mean_real_pressure {
         line(format!("  mean real pressure W/A_r = {}", si(p, "Pa", 4)));
     }
-    line(format!(
-        "  load carried: elastic {}, plastic {}",
-        si(ev.elastic_load, "N", 4),
-        si(ev.plastic_load, "N", 4)
-    ));
+    match ev.noncontact_load {
+        Some(nc) if ev.adhesion_model == AdhesionModel::Dmt => line(format!(
+            "  load carried: elastic {}, plastic {}, attracted asperities not in contact {}",
+            si(ev.elastic_load, "N", 4),
+            si(ev.plastic_load, "N", 4),
+            si(nc, "N", 4)
+        )),
+        _ => line(format!(
+            "  load carried: elastic {}, plastic {}",
+            si(ev.elastic_load, "N", 4),
+            si(ev.plastic_load, "N", 4)
+        )),
+    }
     match (ev.pull_off_force, ev.log10_pull_off_force) {
         (Some(f), Some(l)) => line(format!(
             "  pull-off force {} (10^{} N) at d = {}; one asperity (JKR 1.5πγR): {}",
@@ -214,6 +243,26 @@ pub fn text(r: &EvalReport) -> String {
         )),
         (Some(f), None) => line(format!("  pull-off force {} (no adhesion)", si(f, "N", 3))),
         _ => {}
+    }
+    if let Some(om) = &ev.other_model {
+        line(format!(
+            "  under the other law ({}): {}",
+            om.adhesion_model.as_str().to_uppercase(),
+            match om.nondimensional_separation {
+                Some(h) => format!(
+                    "h = {}, real area {}, pull-off force {}, wear rate {}",
+                    sig(h, 6),
+                    si(om.real_area, "m²", 4),
+                    om.pull_off_force.map_or("-".into(), |f| si(f, "N", 4)),
+                    si(om.wear_rate, "m³/m", 4)
+                ),
+                None => format!(
+                    "{} (no contact under this load), pull-off force {}",
+                    om.status.as_str(),
+                    om.pull_off_force.map_or("-".into(), |f| si(f, "N", 4))
+                ),
+            }
+        ));
     }
     line(String::new());
     line("Wear (Archard, V = k A L)".into());

@@ -57,11 +57,32 @@ fn did_you_mean(value: f64, lo: f64, hi: f64, d: Dimension) -> Vec<String> {
 /// A warning in words.
 pub fn warning(w: &Warning) -> String {
     match w {
-        Warning::OutsideJkrRegime { tabor_parameter } => format!(
-            "Tabor parameter φ0 = {} < 3: the elastic asperities are outside the JKR regime the model assumes ({} regime)",
-            sig_exp(*tabor_parameter, 3),
-            if *tabor_parameter < 0.3 { "DMT" } else { "JKR–DMT transition" }
-        ),
+        Warning::OutsideJkrRegime { tabor_parameter } => {
+            if *tabor_parameter < 0.3 {
+                format!(
+                    "Tabor parameter φ0 = {} < 0.3: the asperities are in the DMT regime, outside the JKR law used here, which leaves out the attraction of asperities not in contact and can understate the pull-off by many orders of magnitude; set [interface] adhesion_model = \"dmt\"",
+                    sig_exp(*tabor_parameter, 3)
+                )
+            } else {
+                format!(
+                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the truth lies between this JKR result and the DMT one under other_model",
+                    sig_exp(*tabor_parameter, 3)
+                )
+            }
+        }
+        Warning::OutsideDmtRegime { tabor_parameter } => {
+            if *tabor_parameter > 3.0 {
+                format!(
+                    "Tabor parameter φ0 = {} > 3: the asperities are in the JKR regime, outside the DMT law used here; set [interface] adhesion_model = \"jkr\"",
+                    sig_exp(*tabor_parameter, 3)
+                )
+            } else {
+                format!(
+                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the truth lies between this DMT result and the JKR one under other_model",
+                    sig_exp(*tabor_parameter, 3)
+                )
+            }
+        }
         Warning::SeparationNotConverged { evaluations, separation } => format!(
             "the separation search did not converge after {evaluations} evaluations; results are at the best estimate h = {separation:.6}"
         ),

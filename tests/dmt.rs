@@ -1,0 +1,306 @@
+//! The DMT asperity law (MODEL.md §7): limits, the facts the separation search
+//! relies on, MODEL.md's worked hub, and the problem-file keys.
+
+use std::path::Path;
+
+use wearopt::model::{
+    evaluate, evaluate_with_other, find_pull_off, landscape, solve_separation, AdhesionModel,
+    AsperityLaw, Attraction, AttractionKind, Coefficients, EvaluationOptions, Model, Quadrature,
+    SeparationOutcome, Status,
+};
+
+fn dmt(c: Coefficients, attraction: Attraction) -> Model {
+    Model::with_law(c, AsperityLaw::Dmt(attraction), Quadrature::default())
+}
+
+const ATTRACTIONS: [Attraction; 6] = [
+    Attraction::VanDerWaals { range: 1e-4 },
+    Attraction::VanDerWaals { range: 0.1 },
+    Attraction::VanDerWaals { range: 10.0 },
+    Attraction::Dugdale { range: 1e-6 },
+    Attraction::Dugdale { range: 0.1 },
+    Attraction::Dugdale { range: 1e3 },
+];
+
+/// γ = 0: DMT is exactly the JKR model at γ = 0 (MODEL.md §7 "checks"): both are
+/// Greenwood–Williamson with the same plastic junctions, bit for bit.
+#[test]
+fn no_adhesion_is_identical_to_jkr() {
+    for c_h in [1e-3, 1.0, 5.12, 1e3, f64::INFINITY] {
+        let c = Coefficients::new(0.0, c_h);
+        let jkr = Model::new(c);
+        for a in ATTRACTIONS {
+            let m = dmt(c, a);
+            assert_eq!(m.critical_interference(), jkr.critical_interference());
+            for h in [-4.0, -1.0, 0.0, 0.5, 3.0, 12.0, 40.0, 60.0] {
+                let (x, y) = (m.at(h), jkr.at(h));
+                assert_eq!(x, y, "c_h={c_h} {a:?} h={h}");
+                assert_eq!(x.noncontact_load().value(), 0.0);
+            }
+        }
+    }
+}
+
+/// Δc = c_h² under DMT (Hertz mean contact pressure K a/(πR) reaches H), ∞ for H = ∞.
+#[test]
+fn critical_interference_is_c_h_squared() {
+    let c = Coefficients::from_indices(184.0, 1.309e5);
+    let m = dmt(c, ATTRACTIONS[1]);
+    assert!((m.critical_interference() / (c.c_h * c.c_h) - 1.0).abs() < 1e-15);
+    assert!((m.transition.jump / c.c_h.powi(3) - 1.0).abs() < 1e-15);
+    let m = dmt(Coefficients::new(1.0, f64::INFINITY), ATTRACTIONS[0]);
+    assert!(m.critical_interference().is_infinite());
+}
+
+/// The non-contact load is ≤ 0, and at h = 40 and 60 under van der Waals it is the
+/// whole load: non-zero, finite, and the power law -c_0 √(2π) z0²/(z0+h)² to
+/// leading order (MODEL.md §7).
+#[test]
+fn van_der_waals_tail_is_the_whole_load_far_out() {
+    let c = Coefficients::from_indices(184.0, 1.309e5);
+    for z0 in [1e-4, 0.1, 10.0] {
+        let m = dmt(c, Attraction::VanDerWaals { range: z0 });
+        for h in [40.0, 60.0, 1e3, 1e6] {
+            let at = m.at(h);
+            let p = at.load();
+            assert!(p.value() < 0.0 && p.value().is_finite(), "{z0} {h}: {p:?}");
+            let lead = -c.c_0 * 2.5066282746310002 * (z0 / (z0 + h)).powi(2);
+            let b2 = (z0 + h).powi(2);
+            let series = lead * (1.0 + 3.0 / b2 + 15.0 / (b2 * b2));
+            // The next term is 105/b⁶ of the leading one.
+            let next = 105.0 / (b2 * b2 * b2);
+            assert!(
+                (p.value() / series - 1.0).abs() < 2.0 * next + 1e-14,
+                "{z0} {h}"
+            );
+            // The contact share is e^{-h²/2} small, but kept in scaled form.
+            assert!(at.contact_load().value() >= 0.0 || h < 41.0);
+            assert!(at.area().ln_abs().is_finite());
+        }
+    }
+    for a in ATTRACTIONS {
+        let m = dmt(c, a);
+        for h in [-4.0, -1.0, 0.0, 0.3, 2.0, 5.0, 20.0, 60.0] {
+            let n = m.at(h).noncontact_load();
+            assert!(n.mantissa <= 0.0, "{a:?} {h}: {n:?}");
+            assert!(n.mantissa.is_finite() && n.exponent.is_finite());
+        }
+    }
+}
+
+/// dP̄/dh from the model against a central difference of P̄ (the derivative the
+/// Newton steps use), for both attractions.
+#[test]
+fn slope_matches_central_differences() {
+    for (theta, lambda) in [(184.0, 1.309e5), (1.0, 1.0), (1e-3, 1e-2)] {
+        let c = Coefficients::from_indices(theta, lambda);
+        for a in ATTRACTIONS {
+            let m = dmt(c, a);
+            for h in [-2.0, 0.0, 1.0, 3.0, 10.0] {
+                let d = 1e-5;
+                let fd = (m.at(h + d).load().value() - m.at(h - d).load().value()) / (2.0 * d);
+                let got = m.at(h).dload_dh().value();
+                let scale = got.abs().max(m.at(h).load().value().abs()).max(1e-300);
+                assert!(
+                    (fd - got).abs() <= 1e-7 * scale,
+                    "θ={theta} {a:?} h={h}: {got} vs {fd}"
+                );
+            }
+        }
+    }
+}
+
+/// The single-minimum fact (separation.rs module docs): P̄' changes sign exactly
+/// once on a fine grid, at the minimum the landscape reports; and the single-root
+/// facts: a compressive load has one root, a tensile one above the minimum one on
+/// the falling branch.
+#[test]
+fn one_minimum_and_the_roots_the_rules_choose() {
+    for (theta, lambda) in [(184.0, 1.309e5), (10.0, 1.0), (1.0, 1e-2), (1e-3, 1e-6)] {
+        let c = Coefficients::from_indices(theta, lambda);
+        for a in ATTRACTIONS {
+            let m = dmt(c, a);
+            let mut changes = Vec::new();
+            let mut prev = m.at(-6.0).dload_dh().signum();
+            let mut h = -6.0;
+            while h < 80.0 {
+                h += if h < 20.0 { 0.01 } else { 0.1 };
+                let s = m.at(h).dload_dh().signum();
+                if s != prev && s != 0.0 {
+                    changes.push(h);
+                }
+                prev = s;
+            }
+            assert_eq!(changes.len(), 1, "θ={theta} λ={lambda} {a:?}: {changes:?}");
+            let land = landscape(&m);
+            assert_eq!(land.critical_points.len(), 1, "{a:?}");
+            let po = find_pull_off(&m).expect("a pull-off with adhesion");
+            assert!((po.separation - changes[0]).abs() < 0.02, "{a:?}");
+            let p_min = po.load.value();
+            // Compressive: one root, and P̄ < target to its right.
+            for target in [1e-6, 0.01, 1.0, 100.0] {
+                match solve_separation(&m, target) {
+                    SeparationOutcome::Contact { separation, .. } => {
+                        // The root to ~1e-9 in h (P̄ is ill-conditioned where the contact
+                        // and non-contact shares nearly cancel): P̄ brackets the target.
+                        let d = 1e-9 * separation.abs().max(1.0);
+                        let (l, r) = (m.at(separation - d), m.at(separation + d));
+                        assert!(
+                            l.load().value() >= target && r.load().value() <= target,
+                            "{a:?} {target}: {separation}"
+                        );
+                        assert!(m.at(separation + 0.1).load().value() < target);
+                    }
+                    other => panic!("{a:?} {target}: {other:?}"),
+                }
+            }
+            // Tensile above the minimum: the root left of the minimum.
+            if p_min.is_normal() {
+                let target = 0.5 * p_min;
+                match solve_separation(&m, target) {
+                    SeparationOutcome::Contact { separation, .. } => {
+                        assert!(separation < po.separation, "{a:?}");
+                        let d = 1e-9 * separation.abs().max(1.0);
+                        let (l, r) = (m.at(separation - d), m.at(separation + d));
+                        assert!(
+                            l.load().value() >= target && r.load().value() <= target,
+                            "{a:?} {target}: {separation}"
+                        );
+                    }
+                    other => panic!("{a:?}: {other:?}"),
+                }
+                assert!(matches!(
+                    solve_separation(&m, 2.0 * p_min),
+                    SeparationOutcome::Separated { .. }
+                ));
+            }
+        }
+    }
+}
+
+fn hub() -> wearopt::problem::Problem {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/micro-gear.toml"
+    ));
+    wearopt::problem::load(path).expect("the hub loads")
+}
+
+/// MODEL.md §7's worked scene: the polysilicon hub's pull-off under the three laws
+/// (4.2785 µN van der Waals, 3.61e-21 N Dugdale, 2.08e-63 N JKR) and the pull of the
+/// non-contacting asperities at 800 µN (≈ 51 µN, ≈ 14 µN).
+#[test]
+fn hub_reproduces_model_md() {
+    let mut scene = hub().scene;
+    scene.load = 800e-6;
+    let opts = EvaluationOptions::default();
+    scene.adhesion_model = AdhesionModel::Jkr;
+    let jkr = evaluate(&scene, &opts);
+    scene.adhesion_model = AdhesionModel::Dmt;
+    scene.attraction = AttractionKind::VanDerWaals;
+    let vdw = evaluate(&scene, &opts);
+    scene.attraction = AttractionKind::Dugdale;
+    let dug = evaluate(&scene, &opts);
+    let po = |e: &wearopt::model::Evaluation| e.pull_off_force.unwrap();
+    assert!((po(&vdw) / 4.2785e-6 - 1.0).abs() < 2e-5, "{}", po(&vdw));
+    assert!((po(&dug) / 3.61e-21 - 1.0).abs() < 2e-3, "{}", po(&dug));
+    assert!((po(&jkr) / 2.08e-63 - 1.0).abs() < 3e-3, "{}", po(&jkr));
+    let nc = |e: &wearopt::model::Evaluation| -e.noncontact_load.unwrap();
+    assert!((nc(&vdw) / 51e-6 - 1.0).abs() < 0.01, "{}", nc(&vdw));
+    assert!((nc(&dug) / 14e-6 - 1.0).abs() < 0.04, "{}", nc(&dug));
+    assert_eq!(jkr.noncontact_load, Some(0.0));
+    let a = vdw.hamaker_constant.unwrap();
+    assert!((a / 3.393e-19 - 1.0).abs() < 1e-3, "{a}");
+    // Load balance: the shares add up to the load.
+    let sum = vdw.elastic_load + vdw.plastic_load + vdw.noncontact_load.unwrap();
+    assert!((sum / 800e-6 - 1.0).abs() < 1e-12, "{sum}");
+}
+
+/// φ0 = 0.374 (transition): `other_model` carries the other law's numbers, which
+/// equal that law's own evaluation.
+#[test]
+fn transition_scene_reports_the_other_law() {
+    let scene = hub().scene;
+    let opts = EvaluationOptions::default();
+    let ev = evaluate_with_other(&scene, &opts);
+    let om = ev.other_model.expect("0.3 ≤ φ0 ≤ 3");
+    assert_eq!(om.adhesion_model, AdhesionModel::Dmt);
+    let mut dmt_scene = scene.clone();
+    dmt_scene.adhesion_model = AdhesionModel::Dmt;
+    let d = evaluate(&dmt_scene, &opts);
+    assert_eq!(om.pull_off_force, d.pull_off_force);
+    assert_eq!(om.wear_rate, d.wear_rate);
+    assert_eq!(om.nondimensional_separation, d.nondimensional_separation);
+    // Outside the transition there is none.
+    let mut far = scene.clone();
+    far.interatomic_distance = 0.05e-9; // φ0 grows as Z0^{-1}: 0.374 · 6 = 2.2 → still transition
+    far.interatomic_distance = 0.01e-9; // 0.374 · 30 = 11 > 3
+    assert!(evaluate_with_other(&far, &opts).other_model.is_none());
+    // A tensile load beyond the DMT pull-off separates under DMT: null/0 there.
+    let mut pull = scene;
+    pull.load = -1e-3;
+    let ev = evaluate_with_other(&pull, &opts);
+    assert_eq!(ev.status, Status::Separated);
+    assert_eq!(ev.noncontact_load, None);
+    let om = ev.other_model.unwrap();
+    assert_eq!(om.status, Status::Separated);
+    assert_eq!(om.nondimensional_separation, None);
+    assert_eq!(om.real_area, 0.0);
+    assert_eq!(om.wear_rate, 0.0);
+}
+
+fn with_interface(extra: &str) -> String {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/micro-gear.toml"
+    ))
+    .unwrap();
+    text.replace("[interface]\n", &format!("[interface]\n{extra}\n"))
+}
+
+#[test]
+fn problem_keys_and_bad_input() {
+    let p = wearopt::problem::parse(&with_interface("adhesion_model = \"dmt\""), "t.toml").unwrap();
+    assert_eq!(p.scene.adhesion_model, AdhesionModel::Dmt);
+    assert_eq!(p.scene.attraction, AttractionKind::VanDerWaals);
+    let p = wearopt::problem::parse(
+        &with_interface("adhesion_model = \"dmt\"\nattraction = \"dugdale\""),
+        "t.toml",
+    )
+    .unwrap();
+    assert_eq!(p.scene.attraction, AttractionKind::Dugdale);
+    let p = wearopt::problem::parse(&with_interface(""), "t.toml").unwrap();
+    assert_eq!(p.scene.adhesion_model, AdhesionModel::Jkr);
+
+    let err = |extra: &str| {
+        wearopt::problem::parse(&with_interface(extra), "t.toml")
+            .unwrap_err()
+            .to_string()
+    };
+    let e = err("adhesion_model = \"dmtt\"");
+    assert!(
+        e.contains("interface.adhesion_model") && e.contains("jkr, dmt"),
+        "{e}"
+    );
+    assert!(e.contains("did you mean \"dmt\""), "{e}");
+    let e = err("adhesion_model = \"dmt\"\nattraction = \"vdw\"");
+    assert!(
+        e.contains("interface.attraction") && e.contains("van_der_waals, dugdale"),
+        "{e}"
+    );
+    let e = err("attraction = \"dugdale\"");
+    assert!(
+        e.contains("interface.attraction")
+            && e.contains("DMT law only")
+            && e.contains("adhesion_model"),
+        "{e}"
+    );
+    let text = with_interface("adhesion_model = \"dmt\"").replace(
+        "interatomic_distance = \"0.3 nm\"",
+        "interatomic_distance = \"0 nm\"",
+    );
+    let e = wearopt::problem::parse(&text, "t.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("interface.interatomic_distance"), "{e}");
+}
