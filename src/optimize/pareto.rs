@@ -25,21 +25,24 @@
 //!   spans a decade or more, evenly in value otherwise, ordered from the
 //!   preferred end; the target nearest `s_w` is moved onto it, so the front
 //!   ends exactly at the study's least-wear design.
-//! * **Solves.** Points are solved in waves of [`WAVE`] in parallel (rayon).
-//!   Each point runs the study's multistart from the baseline scene and one
-//!   start from the previous wave's last solution (its nearest solved
-//!   neighbour), and keeps the better. Waves are fixed in size, so the result
-//!   is the same for any thread count, and each wave's points are final when
-//!   it ends: an [`Observer`] receives them in order as they are.
+//! * **Solves.** Each ε-point is the study's own [`optimize`] with the ε-row
+//!   added. Points are solved in waves of [`WAVE`] in parallel (rayon): one
+//!   start from the nearest solution known before the wave, one from the
+//!   baseline, the study's multistart where neither ends optimal. Then every
+//!   point is re-solved from both neighbours' designs (and with the multistart
+//!   where it is still not optimal), keeping the better design, until no point
+//!   improves ([`MAX_REFINE_ROUNDS`] at most). Each step reads only designs
+//!   known before it, so the result is the same for any thread count; the
+//!   [`Observer`] receives the points in order once they are final.
 //! * **Dominance.** A point is dominated when an earlier point of the sweep
 //!   (nearer the preferred end, so with an adhesion at least as good) has a
 //!   wear no larger (to [`WEAR_TOLERANCE`] relative): it is decided as soon as
 //!   the point is known. Feasible, non-dominated points are the front.
-//! * **Knee.** In normalised log coordinates (strength and log10 wear, each
-//!   scaled to [0, 1] over the front), the interior front point farthest from
-//!   the chord joining the front's ends; none when the front has two points
-//!   or is straight (distance < [`KNEE_MIN_DISTANCE`]); a one-point front is
-//!   its own knee.
+//! * **Knee.** In normalised log coordinates (strength clamped to the
+//!   reachable range the report prints, and log10 wear, each scaled to [0, 1]
+//!   over the front), the interior front point farthest from the chord joining
+//!   the front's ends; none when the front has fewer than three points or is
+//!   straight (distance < [`KNEE_MIN_DISTANCE`]).
 
 use std::time::Instant;
 
@@ -73,6 +76,9 @@ pub const KNEE_MIN_DISTANCE: f64 = 1e-3;
 
 /// Bisection stops when the bracket of a range end is this narrow (decades).
 pub const RANGE_RESOLUTION: f64 = 0.01;
+
+/// Most re-solve rounds of the sweep (each point from its neighbours' designs).
+pub const MAX_REFINE_ROUNDS: usize = 4;
 
 /// Most feasibility probes per end of the range.
 pub const MAX_PROBES: usize = 12;
@@ -641,17 +647,23 @@ fn dominated_by_earlier(
     })
 }
 
-/// The knee of the front (see the module docs).
-pub fn knee(points: &[FrontPoint]) -> Option<usize> {
+/// The knee of the front (see the module docs), with strengths clamped to
+/// `range`, the range the report prints (a pull-off of 10^-1105 N sits at its
+/// floor end, not a thousand decades beyond it).
+pub fn knee(points: &[FrontPoint], range: (f64, f64)) -> Option<usize> {
     let front: Vec<&FrontPoint> = points.iter().filter(|p| p.on_front).collect();
-    match front.len() {
-        0 | 2 => return None,
-        1 => return Some(front[0].index),
-        _ => {}
+    if front.len() < 3 {
+        return None;
     }
+    let (lo, hi) = (range.0.min(range.1), range.0.max(range.1));
     let xy: Vec<(f64, f64)> = front
         .iter()
-        .map(|p| (p.strength, p.objective.max(f64::MIN_POSITIVE).log10()))
+        .map(|p| {
+            (
+                p.strength.clamp(lo, hi),
+                p.objective.max(f64::MIN_POSITIVE).log10(),
+            )
+        })
         .collect();
     let span = |f: fn(&(f64, f64)) -> f64| {
         let lo = xy.iter().map(f).fold(f64::INFINITY, f64::min);
@@ -678,6 +690,139 @@ pub fn knee(points: &[FrontPoint]) -> Option<usize> {
         .map(|(k, &(x, y))| (k, ((x - a.0) * cy - (y - a.1) * cx).abs() / len))
         .fold((0, -1.0), |best, c| if c.1 > best.1 { c } else { best });
     (d >= KNEE_MIN_DISTANCE).then(|| front[k].index)
+}
+
+/// One ε-point of the sweep while it is being solved.
+struct Slot {
+    strength: f64,
+    target: Target,
+    solved: Option<Solved>,
+    warm_started: bool,
+    evaluations: usize,
+}
+
+/// `a` is better than `b` by more than the relative tolerance: feasible where
+/// `b` is not, or a lower objective.
+fn improves(a: &Solved, b: Option<&Solved>, tolerance: f64) -> bool {
+    match b {
+        None => true,
+        Some(b) => {
+            (a.feasible && !b.feasible)
+                || (a.feasible == b.feasible && a.objective < b.objective * (1.0 - tolerance))
+        }
+    }
+}
+
+/// Re-solves the ε-points until none improves (at most [`MAX_REFINE_ROUNDS`]
+/// rounds): each point from both neighbours' designs, then, when it is still
+/// not optimal, with the study's multistart; the better design is kept. Each
+/// round reads the previous round's designs only, so the result does not
+/// depend on the thread count.
+fn refine(sweep: &Sweep, slots: &mut [Slot]) {
+    let tolerance = sweep.study.settings.tolerance.max(WEAR_TOLERANCE * 1e-3);
+    for _ in 0..MAX_REFINE_ROUNDS {
+        let designs: Vec<Option<Scene>> = slots
+            .iter()
+            .map(|s| {
+                s.solved
+                    .as_ref()
+                    .filter(|r| r.feasible && r.log10 > -300.0)
+                    .map(|r| r.scene.clone())
+            })
+            .collect();
+        let updates: Vec<(Option<Solved>, usize)> = (0..slots.len())
+            .into_par_iter()
+            .map(|i| {
+                let current = slots[i].solved.as_ref();
+                let mut best: Option<Solved> = None;
+                let mut evaluations = 0;
+                let neighbours = [i.checked_sub(1), Some(i + 1)];
+                for k in neighbours.into_iter().flatten() {
+                    let Some(Some(scene)) = designs.get(k) else {
+                        continue;
+                    };
+                    let r = sweep.solve(slots[i].target, scene, &sweep.warm_settings);
+                    evaluations += r.as_ref().map_or(0, |r| r.evaluations);
+                    if let Some(r) = r {
+                        if improves(&r, best.as_ref().or(current), tolerance) {
+                            best = Some(r);
+                        }
+                    }
+                }
+                let optimal = |r: Option<&Solved>| {
+                    r.is_some_and(|r| r.feasible && r.status == OptimizationStatus::Optimal)
+                };
+                if !optimal(best.as_ref().or(current)) {
+                    let r = sweep.solve(slots[i].target, sweep.study.scene, sweep.study.settings);
+                    evaluations += r.as_ref().map_or(0, |r| r.evaluations);
+                    if let Some(r) = r {
+                        if improves(&r, best.as_ref().or(current), tolerance) {
+                            best = Some(r);
+                        }
+                    }
+                }
+                (best, evaluations)
+            })
+            .collect();
+        let mut improved = false;
+        for (slot, (best, evaluations)) in slots.iter_mut().zip(updates) {
+            slot.evaluations += evaluations;
+            if let Some(b) = best {
+                slot.solved = Some(b);
+                slot.warm_started = false;
+                improved = true;
+            }
+        }
+        if !improved {
+            break;
+        }
+    }
+}
+
+/// The reported point of a solved slot.
+fn front_point(index: usize, slot: &Slot, measure: AdhesionMeasure, n: usize) -> FrontPoint {
+    let kind = match slot.target {
+        Target::AtMost(_) => "at_most",
+        Target::AtLeast(_) => "at_least",
+        Target::Equal(_) => "equal",
+    };
+    let target = value_at(measure, slot.strength);
+    match &slot.solved {
+        Some(r) => FrontPoint {
+            index,
+            target,
+            target_kind: kind,
+            adhesion: r.value,
+            log10_adhesion: r.log10,
+            strength: r.strength,
+            objective: r.objective,
+            wear_rate: r.wear_rate,
+            status: r.status,
+            feasible: r.feasible,
+            dominated: false,
+            on_front: false,
+            design: r.design.clone(),
+            warm_started: slot.warm_started,
+            evaluations: slot.evaluations,
+        },
+        None => FrontPoint {
+            index,
+            target,
+            target_kind: kind,
+            adhesion: f64::NAN,
+            log10_adhesion: f64::NAN,
+            strength: f64::NAN,
+            objective: f64::NAN,
+            wear_rate: f64::NAN,
+            status: OptimizationStatus::Infeasible,
+            feasible: false,
+            dominated: false,
+            on_front: false,
+            design: vec![f64::NAN; n],
+            warm_started: false,
+            evaluations: slot.evaluations,
+        },
+    }
 }
 
 /// Sweeps the wear–adhesion curve of a study (see the module docs). The
@@ -822,9 +967,9 @@ pub fn pareto(
     for r in [&lo_solved, &hi_solved, &start] {
         remember(&mut known, r);
     }
-    let mut points: Vec<FrontPoint> = Vec::with_capacity(strengths.len());
+    let mut slots: Vec<Slot> = Vec::with_capacity(strengths.len());
     for (w, wave) in strengths.chunks(WAVE).enumerate() {
-        let solved: Vec<(Option<Solved>, bool, usize)> = wave
+        let solved: Vec<Slot> = wave
             .par_iter()
             .enumerate()
             .map(|(j, &s)| {
@@ -839,64 +984,34 @@ pub fn pareto(
                     .iter()
                     .min_by(|a, b| (a.0 - s).abs().total_cmp(&(b.0 - s).abs()))
                     .map(|k| &k.1);
-                sweep.solve_point(target, warm)
+                let (solved, warm_started, evaluations) = sweep.solve_point(target, warm);
+                Slot {
+                    strength: s,
+                    target,
+                    solved,
+                    warm_started,
+                    evaluations,
+                }
             })
             .collect();
-        for (j, (r, warm_started, evals)) in solved.into_iter().enumerate() {
-            let index = w * WAVE + j;
-            let s = wave[j];
-            evaluations += evals;
-            let kind = if Some(index) == floor_index {
-                "at_most"
-            } else {
-                "equal"
-            };
-            let mut p = match &r {
-                Some(r) => FrontPoint {
-                    index,
-                    target: value_at(measure, s),
-                    target_kind: kind,
-                    adhesion: r.value,
-                    log10_adhesion: r.log10,
-                    strength: r.strength,
-                    objective: r.objective,
-                    wear_rate: r.wear_rate,
-                    status: r.status,
-                    feasible: r.feasible,
-                    dominated: false,
-                    on_front: false,
-                    design: r.design.clone(),
-                    warm_started,
-                    evaluations: evals,
-                },
-                None => FrontPoint {
-                    index,
-                    target: value_at(measure, s),
-                    target_kind: kind,
-                    adhesion: f64::NAN,
-                    log10_adhesion: f64::NAN,
-                    strength: f64::NAN,
-                    objective: f64::NAN,
-                    wear_rate: f64::NAN,
-                    status: OptimizationStatus::Infeasible,
-                    feasible: false,
-                    dominated: false,
-                    on_front: false,
-                    design: vec![f64::NAN; names.len()],
-                    warm_started: false,
-                    evaluations: evals,
-                },
-            };
-            if p.feasible {
-                p.dominated = dominated_by_earlier(&points, &p, spec.direction);
-                p.on_front = !p.dominated;
-            }
-            if let Some(r) = &r {
+        for slot in solved {
+            if let Some(r) = &slot.solved {
                 remember(&mut known, r);
             }
-            observer.point_done(&p);
-            points.push(p);
+            slots.push(slot);
         }
+    }
+    refine(&sweep, &mut slots);
+    let mut points: Vec<FrontPoint> = Vec::with_capacity(slots.len());
+    for (index, slot) in slots.iter().enumerate() {
+        evaluations += slot.evaluations;
+        let mut p = front_point(index, slot, measure, names.len());
+        if p.feasible {
+            p.dominated = dominated_by_earlier(&points, &p, spec.direction);
+            p.on_front = !p.dominated;
+        }
+        observer.point_done(&p);
+        points.push(p);
     }
     let front = points.iter().filter(|p| p.on_front).count();
     let status = match front {
@@ -910,7 +1025,7 @@ pub fn pareto(
         direction: spec.direction,
         objective_name: objective.as_str(),
         names,
-        knee: knee(&points),
+        knee: knee(&points, (lo, hi)),
         points,
         strength_range: (lo, hi),
         floor_end,
