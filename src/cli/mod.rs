@@ -34,6 +34,8 @@ pub struct Cli {
 enum EvalFormat {
     Text,
     Json,
+    /// One self-contained HTML page with tables and inline SVG plots.
+    Html,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -59,6 +61,9 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = EvalFormat::Text)]
         format: EvalFormat,
+        /// Write the report to this file instead of stdout ("-": stdout).
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
     },
     /// The paper's figures 1-4: wear volume against load (CSV, SVG), slopes, and a verdict on each claim of §4.
     #[command(
@@ -91,6 +96,9 @@ Exit code 1 when the study is infeasible."
         /// Write the per-iteration trace (time, objective, KKT residual, violation) as CSV ("-": stdout).
         #[arg(long, value_name = "TRACE.csv")]
         trace: Option<PathBuf>,
+        /// Write the report to this file instead of stdout ("-": stdout).
+        #[arg(long, value_name = "FILE")]
+        out: Option<PathBuf>,
     },
     /// The wear–adhesion trade-off of a study with a [pareto] section: least wear at each adhesion (ε-constraint), the Pareto front and its knee.
     #[command(after_help = "Example:\n  wearopt pareto problems/micro-gear.toml\n  \
@@ -157,13 +165,14 @@ pub struct UsageError(String);
 pub fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         Command::Accuracy(args) => accuracy::run(args),
-        Command::Eval { file, format } => eval(file, format),
+        Command::Eval { file, format, out } => eval(file, format, out),
         Command::Optimize {
             file,
             format,
             verbose,
             trace,
-        } => optimize(file, format, verbose, trace),
+            out,
+        } => optimize(file, format, verbose, trace, out),
         Command::Figures(args) => figures::run(args),
         Command::Pareto(args) => pareto::run(args),
         Command::Sweep(args) => sweep::run(args),
@@ -190,7 +199,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
     }
 }
 
-fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
+fn eval(file: PathBuf, format: EvalFormat, out: Option<PathBuf>) -> Result<ExitCode> {
     let problem = wearopt::problem::load(&file)?;
     let options = EvaluationOptions::default();
     let evaluation = model::evaluate_with_other(&problem.scene, &options);
@@ -203,11 +212,19 @@ fn eval(file: PathBuf, format: EvalFormat) -> Result<ExitCode> {
         evaluation: &evaluation,
         sensitivities: &sensitivities,
     };
-    let out = match format {
+    let text = match format {
         EvalFormat::Text => report::eval::text(&r),
         EvalFormat::Json => report::eval::json(&r),
+        EvalFormat::Html => {
+            let curve = model::load_curve(&problem.scene, &evaluation, &options, 201);
+            report::eval::html(&r, &curve)
+        }
     };
-    print!("{out}");
+    write_output(
+        out.as_deref().unwrap_or(std::path::Path::new("-")),
+        &text,
+        "the report",
+    )?;
     Ok(match evaluation.status {
         Status::Ok | Status::Separated => ExitCode::SUCCESS,
         Status::NotConverged | Status::OutOfRange => ExitCode::from(1),
@@ -219,14 +236,24 @@ fn optimize(
     format: EvalFormat,
     verbose: bool,
     trace: Option<PathBuf>,
+    out: Option<PathBuf>,
 ) -> Result<ExitCode> {
-    if trace.as_deref().is_some_and(|p| p.as_os_str() == "-") && !matches!(format, EvalFormat::Text)
+    let to_stdout = out.as_deref().is_none_or(|p| p.as_os_str() == "-");
+    if trace.as_deref().is_some_and(|p| p.as_os_str() == "-")
+        && !matches!(format, EvalFormat::Text)
+        && to_stdout
     {
         return Err(usage(
             "--trace - would write the CSV trace to stdout, where the JSON report goes: give --trace a file name (--trace trace.csv), or use --format text".to_string(),
         ));
     }
     let problem = wearopt::problem::load(&file)?;
+    if !problem.study.materials.is_empty() && (matches!(format, EvalFormat::Html) || !to_stdout) {
+        return Err(usage(format!(
+            "{}: a material ranking is written as text or JSON to stdout (--format html and --out are for a single study)",
+            file.display()
+        )));
+    }
     if !problem.study.materials.is_empty() {
         return materials::run(
             &file,
@@ -254,11 +281,24 @@ fn optimize(
     if let Some(path) = trace {
         write_output(&path, &report::optimize::trace_csv(&optimum), "the trace")?;
     }
-    let out = match format {
+    let text = match format {
         EvalFormat::Text => report::optimize::text(&problem.name, &optimum),
         EvalFormat::Json => report::optimize::json(&problem.name, &optimum),
+        EvalFormat::Html => {
+            let curve = model::load_curve(
+                &optimum.scene,
+                &optimum.evaluation,
+                &EvaluationOptions::default(),
+                201,
+            );
+            report::optimize::html(&problem.name, &optimum, &curve)
+        }
     };
-    print!("{out}");
+    write_output(
+        out.as_deref().unwrap_or(std::path::Path::new("-")),
+        &text,
+        "the report",
+    )?;
     Ok(match optimum.status {
         wearopt::optimize::OptimizationStatus::Infeasible => ExitCode::from(1),
         _ => ExitCode::SUCCESS,

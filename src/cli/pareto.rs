@@ -27,6 +27,8 @@ pub enum ParetoFormat {
     Csv,
     /// One object: status, adhesion_measure, points, knee, …
     Json,
+    /// One self-contained HTML page: the report and the front as inline SVG.
+    Html,
 }
 
 /// Arguments of `wearopt pareto`.
@@ -43,6 +45,9 @@ pub struct ParetoArgs {
     /// Also draw the front as SVG to this file.
     #[arg(long, value_name = "FRONT.svg")]
     pub plot: Option<PathBuf>,
+    /// Write the HTML page to this file instead of stdout (with --format html).
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
 }
 
 /// Whether a progress bar may be drawn: stderr is a terminal, and neither
@@ -111,13 +116,19 @@ impl Observer for Stream<'_> {
         match self.format {
             ParetoFormat::Csv => self.write(&out::csv_row(p)),
             ParetoFormat::Json => self.write(&out::json_point(self.names, p, first)),
-            ParetoFormat::Text => {}
+            ParetoFormat::Text | ParetoFormat::Html => {}
         }
     }
 }
 
 /// Runs `wearopt pareto`.
 pub fn run(args: ParetoArgs) -> Result<ExitCode> {
+    if args.out.is_some() && args.format != ParetoFormat::Html {
+        return Err(usage(
+            "--out is for --format html; text, CSV and JSON stream to stdout (redirect it)"
+                .to_string(),
+        ));
+    }
     let problem = wearopt::problem::load(&args.file)?;
     let file = args.file.display();
     let Some(mut spec) = problem.study.pareto else {
@@ -174,7 +185,7 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     match args.format {
         ParetoFormat::Csv => stream.write(&out::csv_header(&names)),
         ParetoFormat::Json => stream.write(&out::json_head(&head)),
-        ParetoFormat::Text => {}
+        ParetoFormat::Text | ParetoFormat::Html => {}
     }
     let front =
         pareto::pareto(&study, &spec, &stream).map_err(|e| usage(format!("{file}: {e}")))?;
@@ -189,6 +200,14 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
             &front,
             &problem.study.constraints,
         )),
+        ParetoFormat::Html => {
+            let page = out::html(&problem.name, &front, &problem.study.constraints);
+            super::write_output(
+                args.out.as_deref().unwrap_or(std::path::Path::new("-")),
+                &page,
+                "the page",
+            )?;
+        }
     }
     if let Some(e) = stream
         .state

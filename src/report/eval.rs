@@ -94,6 +94,255 @@ fn law_words(ev: &Evaluation, sc: &Scene) -> String {
     }
 }
 
+/// The load–separation curve as an SVG plot: W against d, the operating point and
+/// the pull-off marked.
+pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
+    use super::svg::{Axis, LinePlot, Marker, Series};
+    let max_w = c
+        .points
+        .iter()
+        .chain(c.operating_point.iter())
+        .chain(c.pull_off_point.iter())
+        .map(|p| p.1.abs())
+        .fold(0.0, f64::max);
+    let (wf, wu) = super::units::axis_unit(max_w, "N");
+    let (df, du) =
+        super::units::axis_unit(c.points.iter().map(|p| p.0.abs()).fold(0.0, f64::max), "m");
+    let scaled = |p: &(f64, f64)| (p.0 / df, p.1 / wf);
+    let mut plot = LinePlot::new(
+        title,
+        Axis::linear("mean-plane separation d").with_unit(du),
+        Axis::linear("load W (positive presses)").with_unit(wu),
+    )
+    .with_series(
+        Series::new("W(d), the model", c.points.iter().map(scaled).collect())
+            .with_marker(Marker::None),
+    );
+    if let Some(p) = &c.operating_point {
+        plot = plot.with_series(
+            Series::new("operating point", vec![scaled(p)])
+                .without_line()
+                .with_marker(Marker::Circle),
+        );
+    }
+    if let Some(p) = &c.pull_off_point {
+        plot = plot.with_series(
+            Series::new("pull-off", vec![scaled(p)])
+                .without_line()
+                .with_marker(Marker::Triangle),
+        );
+    }
+    plot.to_svg()
+}
+
+/// A self-contained HTML page: the tables of [`text`] and the load–separation curve
+/// and sensitivity bars as inline SVG.
+pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
+    let ev = r.evaluation;
+    let sc = r.scene;
+    let mut p = super::html::Page::new(&format!("wearopt eval — {}", r.name));
+    p.paragraph(&format!("Status: {}", ev.status.as_str()), Some("status"));
+    let mut warnings = super::words::warnings(ev);
+    warnings.extend(
+        r.input_notes
+            .iter()
+            .filter(|n| n.starts_with("warning"))
+            .cloned(),
+    );
+    p.list(
+        &warnings
+            .iter()
+            .map(|w| format!("WARNING: {w}"))
+            .collect::<Vec<_>>(),
+        "warn",
+    );
+    p.heading("Scene");
+    let q = |x: f64, u: &str| si(x, u, 4);
+    let rows = vec![
+        vec![
+            "Young's modulus E1 (body a)".into(),
+            q(sc.youngs_modulus_a, "Pa"),
+        ],
+        vec!["Poisson ratio ν1".into(), sig(sc.poisson_ratio_a, 3)],
+        vec![
+            "Young's modulus E2 (counterface b)".into(),
+            if sc.youngs_modulus_b.is_infinite() {
+                "rigid".into()
+            } else {
+                q(sc.youngs_modulus_b, "Pa")
+            },
+        ],
+        vec![
+            "equivalent modulus E".into(),
+            q(ev.equivalent_modulus, "Pa"),
+        ],
+        vec![
+            "hardness H".into(),
+            if sc.hardness.is_infinite() {
+                "∞ (no plasticity)".into()
+            } else {
+                q(sc.hardness, "Pa")
+            },
+        ],
+        vec!["work of adhesion γ".into(), q(sc.work_of_adhesion, "J/m²")],
+        vec!["roughness σ".into(), q(sc.sigma, "m")],
+        vec!["asperity radius R".into(), q(sc.asperity_radius, "m")],
+        vec!["asperity density N".into(), q(sc.asperity_density, "m⁻²")],
+        vec!["load W".into(), q(sc.load, "N")],
+        vec!["nominal area A_n".into(), q(sc.nominal_area, "m²")],
+        vec!["sliding distance L".into(), q(sc.sliding_distance, "m")],
+        vec!["wear coefficient k".into(), sig_exp(sc.wear_coefficient, 3)],
+    ];
+    p.table(&["input", "value"], &rows, &[]);
+    p.list(r.input_notes, "note");
+    p.heading("Indices and regime");
+    let i = &ev.indices;
+    p.table(
+        &["index", "value", "meaning"],
+        &[
+            vec![
+                "elastic adhesion index θ".into(),
+                sig_exp(i.elastic_adhesion_index, 4),
+                "≤ 10: adhesion matters".into(),
+            ],
+            vec![
+                "plastic adhesion index λ".into(),
+                sig_exp(i.plastic_adhesion_index, 4),
+                "≤ 0.125: adhesion matters".into(),
+            ],
+            vec![
+                "plasticity index ψ".into(),
+                sig_exp(i.plasticity_index, 4),
+                ev.regime.deformation.into(),
+            ],
+            vec![
+                "Tabor parameter φ0".into(),
+                sig_exp(i.tabor_parameter, 4),
+                format!("adhesion model: {}", ev.regime.adhesion_model),
+            ],
+            vec![
+                "critical interference Δc·σ".into(),
+                q(ev.critical_interference, "m"),
+                "an asperity turns plastic beyond it".into(),
+            ],
+        ],
+        &[2],
+    );
+    p.list(&super::words::notes(ev), "note");
+    p.heading("Contact");
+    let mut rows = vec![
+        vec![
+            "separation d".into(),
+            ev.separation.map_or("— (apart)".into(), |d| q(d, "m")),
+        ],
+        vec!["real area A_r".into(), q(ev.real_area, "m²")],
+        vec![
+            "real area fraction A_r/A_n".into(),
+            sig_exp(ev.real_area_fraction, 3),
+        ],
+        vec![
+            "elastic contacts / plastic junctions".into(),
+            format!(
+                "{} / {}",
+                q(ev.elastic_real_area, "m²"),
+                q(ev.plastic_real_area, "m²")
+            ),
+        ],
+        vec!["contacts".into(), sig_exp(ev.contact_count, 4)],
+        vec![
+            "mean real pressure W/A_r".into(),
+            ev.mean_real_pressure.map_or("—".into(), |x| q(x, "Pa")),
+        ],
+        vec![
+            "pull-off force".into(),
+            ev.pull_off_force.map_or("—".into(), |x| q(x, "N")),
+        ],
+        vec!["wear rate V/L".into(), q(ev.wear_rate, "m³/m")],
+        vec!["wear volume V".into(), q(ev.wear_volume, "m³")],
+        vec![
+            "wear depth rate V/(A_n L)".into(),
+            format!("{} per m slid", q(ev.wear_depth_rate, "m")),
+        ],
+    ];
+    if let Some(l) = ev.life_sliding_distance {
+        rows.push(vec![
+            "life: sliding distance to the allowed depth".into(),
+            q(l, "m"),
+        ]);
+    }
+    if let Some(n) = ev.life_cycles {
+        rows.push(vec![
+            "life: cycles to the allowed depth".into(),
+            sig_exp(n, 3),
+        ]);
+    }
+    if let Some(st) = &ev.stiction {
+        rows.push(vec![
+            "stiction (JKR law)".into(),
+            format!(
+                "margin {} → {}",
+                sig_exp(st.margin, 3),
+                match st.verdict {
+                    crate::model::StictionVerdict::Sticks => "sticks",
+                    crate::model::StictionVerdict::Releases => "releases",
+                }
+            ),
+        ]);
+    }
+    if let Some(f) = ev.friction_force {
+        rows.push(vec!["friction force τ A_r".into(), q(f, "N")]);
+    }
+    if let Some(mu) = ev.friction_coefficient {
+        rows.push(vec!["friction coefficient F/W".into(), sig_exp(mu, 3)]);
+    }
+    p.table(&["result", "value"], &rows, &[]);
+    p.figure(
+        "load-separation",
+        &load_curve_svg(&format!("Load against separation — {}", r.name), curve),
+        "The model's load W against the mean-plane separation d, with the operating point and the pull-off (the most tensile load the contact holds).",
+    );
+    if !r.sensitivities.is_empty() {
+        p.heading("Sensitivity of the wear rate");
+        let rows: Vec<Vec<String>> = r
+            .sensitivities
+            .iter()
+            .map(|s| {
+                vec![
+                    s.parameter.as_str().to_string(),
+                    s.elasticity.map_or("—".into(), |e| format!("{e:+.6}")),
+                    s.error
+                        .map_or(s.note.clone().unwrap_or_default(), |e| sig_exp(e, 2)),
+                ]
+            })
+            .collect();
+        p.table(
+            &["parameter x", "d ln(wear rate) / d ln x", "error estimate"],
+            &rows,
+            &[],
+        );
+        let bars: Vec<(String, f64)> = r
+            .sensitivities
+            .iter()
+            .map(|s| {
+                (
+                    s.parameter.as_str().to_string(),
+                    s.elasticity.unwrap_or(f64::NAN),
+                )
+            })
+            .collect();
+        p.figure(
+            "sensitivities",
+            &super::svg::bar_chart(
+                "Elasticities of the wear rate",
+                "d ln(wear rate) / d ln x (Richardson-extrapolated central differences)",
+                &bars,
+            ),
+            "A bar of +1 means the wear rate grows in proportion to the parameter.",
+        );
+    }
+    p.finish()
+}
+
 /// A report for people.
 pub fn text(r: &EvalReport) -> String {
     let ev = r.evaluation;

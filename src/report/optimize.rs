@@ -295,3 +295,160 @@ pub fn text(name: &str, o: &Optimum) -> String {
     ));
     out
 }
+
+/// The convergence of every start: KKT residual against iteration (log scale).
+pub fn convergence_svg(name: &str, o: &Optimum) -> String {
+    use super::svg::{Axis, LinePlot, Series};
+    let mut plot = LinePlot::new(
+        format!("Convergence — {name}"),
+        Axis::linear("iteration"),
+        Axis::log("KKT residual"),
+    );
+    for s in &o.start_outcomes {
+        let pts: Vec<(f64, f64)> = s
+            .trace
+            .iter()
+            .map(|r| (r.iteration as f64, r.kkt_residual.max(1e-17)))
+            .collect();
+        if !pts.is_empty() {
+            plot = plot.with_series(Series::new(format!("start {}", s.index), pts));
+        }
+    }
+    plot.to_svg()
+}
+
+/// A self-contained HTML page: status, design, objective, constraints, warnings, the
+/// convergence of every start and the optimum's load–separation curve.
+pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String {
+    let mut p = super::html::Page::new(&format!("wearopt optimize — {name}"));
+    p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status"));
+    let broken = baseline_violations(o);
+    let mut warnings: Vec<String> = broken
+        .iter()
+        .map(|b| {
+            format!(
+                "the baseline is infeasible: {} = {} breaks its {} of {}",
+                b.quantity,
+                b.value
+                    .map_or("(undefined)".to_string(), |v| constraint_quantity(
+                        b.quantity, v
+                    )),
+                b.side,
+                constraint_quantity(b.quantity, b.limit)
+            )
+        })
+        .collect();
+    warnings.extend(
+        super::words::warnings(&o.evaluation)
+            .into_iter()
+            .map(|w| format!("at the optimum: {w}")),
+    );
+    p.list(&warnings, "warn");
+    p.heading("Design");
+    let rows: Vec<Vec<String>> = o
+        .names
+        .iter()
+        .zip(&o.design)
+        .zip(&o.baseline_design)
+        .map(|((n, v), b)| {
+            let d = super::design_dimension(n);
+            vec![
+                n.to_string(),
+                format_quantity(*v, d),
+                format_quantity(*b, d),
+            ]
+        })
+        .collect();
+    p.table(&["variable", "optimum", "baseline"], &rows, &[]);
+    let bounds: Vec<String> = o
+        .active_bounds
+        .iter()
+        .map(|b| {
+            format!(
+                "bound active: {} at its {} ({})",
+                b.variable,
+                b.side,
+                format_quantity(b.value, super::design_dimension(b.variable))
+            )
+        })
+        .collect();
+    p.list(&bounds, "note");
+    let unit = super::objective_unit(o.objective_name);
+    p.heading("Objective");
+    p.table(
+        &["quantity", "optimum", "baseline"],
+        &[
+            vec![
+                o.objective_name.to_string(),
+                si(o.objective, unit, 4),
+                si(o.baseline_objective, unit, 4),
+            ],
+            vec![
+                "wear_rate".into(),
+                si(o.evaluation.wear_rate, "m³/m", 4),
+                o.baseline_evaluation
+                    .as_ref()
+                    .map_or("—".into(), |e| si(e.wear_rate, "m³/m", 4)),
+            ],
+        ],
+        &[],
+    );
+    if !o.constraints.is_empty() {
+        p.heading("Constraints");
+        let f =
+            |q: &str, x: Option<f64>| x.map_or("—".to_string(), |v| constraint_quantity(q, v));
+        let rows: Vec<Vec<String>> = o
+            .constraints
+            .iter()
+            .map(|c| {
+                vec![
+                    c.quantity.to_string(),
+                    f(c.quantity, c.value),
+                    f(c.quantity, c.min),
+                    f(c.quantity, c.max),
+                    if c.active { "yes" } else { "no" }.into(),
+                    sig_exp(c.multiplier, 3),
+                    sig_exp(c.shadow_price, 3),
+                ]
+            })
+            .collect();
+        p.table(
+            &[
+                "constraint",
+                "value",
+                "min",
+                "max",
+                "active",
+                "multiplier",
+                "shadow price",
+            ],
+            &rows,
+            &[4],
+        );
+    }
+    p.paragraph(
+        &format!(
+            "KKT residual {} (finite-difference gradient error ≈ {}); {} model evaluations; {} s; starts: {} run, {} converged, {} reached the best (start {} reported).",
+            sig_exp(o.kkt_residual, 3),
+            sig_exp(o.gradient_error, 2),
+            o.evaluations,
+            sig(o.time_seconds, 3),
+            o.starts.total,
+            o.starts.converged,
+            o.starts.reached_best,
+            o.best_start
+        ),
+        None,
+    );
+    p.figure(
+        "convergence",
+        &convergence_svg(name, o),
+        "The KKT residual of every start against its iteration.",
+    );
+    p.figure(
+        "load-separation",
+        &super::eval::load_curve_svg(&format!("The optimum's load against separation — {name}"), curve),
+        "The optimum design's load W against the mean-plane separation d, with the operating point and the pull-off.",
+    );
+    p.finish()
+}

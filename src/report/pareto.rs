@@ -409,6 +409,7 @@ pub fn svg(name: &str, front: &Front) -> String {
     let dominated = pick(&|p| p.dominated, &mut x_of);
     let infeasible = pick(&|p| !p.feasible, &mut x_of);
     let knee = pick(&|p| front.knee == Some(p.index), &mut x_of);
+    let baseline_feasible = front.baseline.as_ref().is_none_or(|b| b.feasible);
     let baseline: Vec<(f64, f64)> = front
         .baseline
         .iter()
@@ -428,7 +429,9 @@ pub fn svg(name: &str, front: &Front) -> String {
         let pos: Vec<f64> = v.iter().copied().filter(|x| *x > 0.0).collect();
         let lo = pos.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = pos.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        pos.len() == v.len() && hi / lo >= 10.0
+        // Every front plot uses log axes for positive quantities, so that plots of
+        // different studies compare at a glance.
+        pos.len() == v.len() && hi >= lo
     };
     let axis = |label: String, unit: &str, log: bool| {
         let a = if log {
@@ -515,12 +518,83 @@ pub fn svg(name: &str, front: &Front) -> String {
         );
     }
     if !baseline.is_empty() {
-        plot = plot.with_series(
+        // An infeasible baseline breaks a constraint: it is no rival of the front,
+        // however low its wear, and is drawn so.
+        plot = plot.with_series(if baseline_feasible {
             Series::new("baseline design", baseline)
                 .without_line()
                 .with_marker(Marker::Square)
-                .with_color("#000000"),
-        );
+                .with_color("#000000")
+        } else {
+            Series::new(
+                "baseline design (infeasible: breaks a constraint)",
+                baseline,
+            )
+            .without_line()
+            .with_marker(Marker::Cross)
+            .with_color("#CC0000")
+        });
     }
     plot.to_svg()
+}
+
+/// A self-contained HTML page: the text report and the front (with knee and baseline)
+/// as inline SVG.
+pub fn html(name: &str, front: &Front, constraints: &[Constraint]) -> String {
+    let mut p = super::html::Page::new(&format!("wearopt pareto — {name}"));
+    p.paragraph(
+        &format!(
+            "Status: {}",
+            match front.status {
+                FrontStatus::Ok => "trade-off",
+                FrontStatus::NoTradeOff => "no trade-off",
+                FrontStatus::Infeasible => "infeasible",
+            }
+        ),
+        Some("status"),
+    );
+    p.figure(
+        "front",
+        &svg(name, front),
+        "Least wear at each adhesion (ε-constraint curve), the Pareto front, its knee and the baseline design.",
+    );
+    p.heading("Points");
+    let ounit = super::objective_unit(front.objective_name);
+    let rows: Vec<Vec<String>> = front
+        .points
+        .iter()
+        .map(|pt| {
+            vec![
+                pt.index.to_string(),
+                measure_text(front.measure, pt.adhesion, pt.log10_adhesion),
+                si(pt.objective, ounit, 4),
+                pt.status.as_str().to_string(),
+                if front.knee == Some(pt.index) {
+                    "knee".to_string()
+                } else if pt.on_front {
+                    "on the front".to_string()
+                } else if pt.dominated {
+                    "dominated".to_string()
+                } else {
+                    "—".to_string()
+                },
+            ]
+        })
+        .collect();
+    let adhesion_header = front.measure.as_str().replace('_', " ");
+    let objective_header = front.objective_name.replace('_', " ");
+    p.table(
+        &[
+            "point",
+            &adhesion_header,
+            &objective_header,
+            "status",
+            "front",
+        ],
+        &rows,
+        &[3, 4],
+    );
+    p.heading("Report");
+    p.pre(&text(name, front, constraints));
+    p.finish()
 }

@@ -403,6 +403,39 @@ fn marker_svg(out: &mut String, marker: Marker, x: f64, y: f64, color: &str) {
     };
 }
 
+/// The average advance of a glyph of the plots' sans-serif font, in em (an upper
+/// estimate for DejaVu Sans, the widest of the fonts named; bold is about 10 % wider).
+pub const TEXT_EM: f64 = 0.62;
+
+/// The title's lines: (text, baseline y, font size). One line at 16 px when it fits
+/// the width less 24 px; else two lines split at the space nearest the middle, at the
+/// size that fits (at most 16 px).
+fn title_lines(title: &str, w: f64, top: f64) -> Vec<(String, f64, f64)> {
+    let room = w - 24.0;
+    let width = |t: &str, size: f64| 1.1 * TEXT_EM * size * t.chars().count() as f64;
+    if width(title, 16.0) <= room {
+        return vec![(title.to_string(), top - 18.0, 16.0)];
+    }
+    let chars: Vec<char> = title.chars().collect();
+    let mid = chars.len() / 2;
+    let split = (0..chars.len())
+        .filter(|&i| chars[i] == ' ')
+        .min_by_key(|&i| i.abs_diff(mid));
+    let (a, b) = match split {
+        Some(i) => (
+            chars[..i].iter().collect::<String>(),
+            chars[i + 1..].iter().collect::<String>(),
+        ),
+        None => (title.to_string(), String::new()),
+    };
+    let longest = a.chars().count().max(b.chars().count()).max(1);
+    let size = (room / (1.1 * TEXT_EM * longest as f64)).min(16.0);
+    if b.is_empty() {
+        return vec![(a, top - 18.0, size)];
+    }
+    vec![(a, top - 14.0 - 1.15 * size, size), (b, top - 14.0, size)]
+}
+
 impl LinePlot {
     /// An empty 760 × 480 plot.
     pub fn new(title: impl Into<String>, x: Axis, y: Axis) -> Self {
@@ -435,7 +468,7 @@ impl LinePlot {
         let legend_w = if self.series.is_empty() {
             20.0
         } else {
-            (62.0 + 8.0 * longest as f64).clamp(100.0, 0.4 * w)
+            (62.0 + TEXT_EM * 13.0 * longest as f64).clamp(100.0, 0.42 * w)
         };
         let (left, top) = (MARGIN_LEFT, MARGIN_TOP);
         let right = w - legend_w;
@@ -472,13 +505,16 @@ impl LinePlot {
             right - left,
             bottom - top
         );
-        let _ = writeln!(
-            o,
-            "<text class=\"title\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">{}</text>",
-            (left + right) / 2.0,
-            top - 18.0,
-            escape(&self.title)
-        );
+        // The title is centred on the whole width; a long one is broken into two lines
+        // and, if still too wide, set smaller, so that it never leaves the view box.
+        for (line, y, size) in title_lines(&self.title, w, top) {
+            let _ = writeln!(
+                o,
+                "<text class=\"title\" x=\"{:.2}\" y=\"{y:.2}\" text-anchor=\"middle\" font-size=\"{size:.1}\" font-weight=\"bold\">{}</text>",
+                w / 2.0,
+                escape(&line)
+            );
+        }
 
         // Grid, ticks and tick labels.
         let _ = writeln!(o, "<g class=\"x-axis\">");
@@ -586,10 +622,17 @@ impl LinePlot {
                     );
                 }
             }
+            let _ = writeln!(o, "</g>");
+            // Markers are not clipped (a marker on an axis is drawn whole); those
+            // outside the plot area are left out.
+            let _ = writeln!(o, "<g class=\"markers\" data-name=\"{}\">", escape(&s.name));
+            let inside = |x: f64, y: f64| {
+                x >= left - 0.01 && x <= right + 0.01 && y >= top - 0.01 && y <= bottom + 0.01
+            };
             let last = pts.len().saturating_sub(1);
             for (k, p) in pts.iter().enumerate() {
                 if let Some((x, y)) = p {
-                    if k % s.marker_every == 0 || k == last {
+                    if (k % s.marker_every == 0 || k == last) && inside(*x, *y) {
                         marker_svg(&mut o, marker, *x, *y, &color);
                     }
                 }
@@ -608,9 +651,12 @@ impl LinePlot {
                 );
             }
             marker_svg(&mut legend, marker, ex + 13.0, ey, &color);
+            // A name too long for the legend column is set smaller.
+            let room = w - (ex + 34.0) - 6.0;
+            let size = (room / (TEXT_EM * s.name.chars().count().max(1) as f64)).min(13.0);
             let _ = writeln!(
                 legend,
-                "<text x=\"{:.2}\" y=\"{:.2}\">{}</text>\n</g>",
+                "<text x=\"{:.2}\" y=\"{:.2}\" font-size=\"{size:.1}\">{}</text>\n</g>",
                 ex + 34.0,
                 ey + 4.5,
                 escape(&s.name)
@@ -622,6 +668,88 @@ impl LinePlot {
         let _ = writeln!(o, "</svg>");
         o
     }
+}
+
+/// A horizontal bar chart of signed values (e.g. elasticities): one bar per label
+/// from a zero line, the value printed beside each bar. 760 px wide.
+pub fn bar_chart(title: &str, value_label: &str, bars: &[(String, f64)]) -> String {
+    let w = 760.0;
+    let row = 30.0;
+    let top = 56.0;
+    let h = top + row * bars.len().max(1) as f64 + 56.0;
+    let (left, right) = (190.0, w - 120.0);
+    let finite: Vec<f64> = bars.iter().map(|b| b.1).filter(|v| v.is_finite()).collect();
+    let lo = finite.iter().copied().fold(0.0f64, f64::min);
+    let hi = finite.iter().copied().fold(0.0f64, f64::max);
+    let span = if hi - lo > 0.0 { hi - lo } else { 1.0 };
+    let px = |v: f64| left + (v - lo) / span * (right - left);
+    let mut o = String::new();
+    let _ = writeln!(
+        o,
+        "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" {FONT} font-size=\"13\">"
+    );
+    let _ = writeln!(o, "<title>{}</title>", escape(title));
+    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>");
+    let _ = writeln!(
+        o,
+        "<text class=\"title\" x=\"{:.2}\" y=\"28\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">{}</text>",
+        w / 2.0,
+        escape(title)
+    );
+    let zero = px(0.0);
+    for (i, (label, v)) in bars.iter().enumerate() {
+        let y = top + row * i as f64;
+        let _ = writeln!(
+            o,
+            "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"end\">{}</text>",
+            left - 10.0,
+            y + row / 2.0 + 4.5,
+            escape(label)
+        );
+        if v.is_finite() {
+            let (x0, x1) = if *v >= 0.0 {
+                (zero, px(*v))
+            } else {
+                (px(*v), zero)
+            };
+            let _ = writeln!(
+                o,
+                "<rect class=\"bar\" x=\"{x0:.2}\" y=\"{:.2}\" width=\"{:.2}\" height=\"{:.2}\" fill=\"{}\"/>",
+                y + 5.0,
+                (x1 - x0).max(0.5),
+                row - 10.0,
+                if *v >= 0.0 { PALETTE[0] } else { PALETTE[1] }
+            );
+        }
+        // Values in their own column at the right, clear of bars and names.
+        let text = if v.is_finite() {
+            format!("{v:+.4}")
+        } else {
+            "—".to_string()
+        };
+        let _ = writeln!(
+            o,
+            "<text class=\"value\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"end\">{}</text>",
+            w - 14.0,
+            y + row / 2.0 + 4.5,
+            escape(&text)
+        );
+    }
+    let bottom = top + row * bars.len().max(1) as f64;
+    let _ = writeln!(
+        o,
+        "<line x1=\"{zero:.2}\" y1=\"{:.2}\" x2=\"{zero:.2}\" y2=\"{bottom:.2}\" stroke=\"black\"/>",
+        top - 4.0
+    );
+    let _ = writeln!(
+        o,
+        "<text class=\"x-label\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
+        (left + right) / 2.0,
+        h - 18.0,
+        escape(value_label)
+    );
+    let _ = writeln!(o, "</svg>");
+    o
 }
 
 #[cfg(test)]

@@ -125,6 +125,16 @@ pub fn si(x: f64, unit: &str, prec: usize) -> String {
     }
 }
 
+/// The prefixed unit for an axis whose values reach `max_abs` (a first-power unit such
+/// as "N" or "m"): values are divided by the returned factor. `(1e-6, "µN")` for 8e-4.
+pub fn axis_unit(max_abs: f64, unit: &str) -> (f64, String) {
+    let s = shape(unit);
+    match choose_prefix(max_abs, &s).filter(|_| !s.length_power && max_abs > 0.0) {
+        Some((e, p)) => (10f64.powi(e), format!("{p}{unit}")),
+        None => (1.0, unit.to_string()),
+    }
+}
+
 /// [`si`] for a dimension (a plain number for [`Dimension::Dimensionless`]).
 pub fn quantity(x: f64, dimension: Dimension, prec: usize) -> String {
     match dimension {

@@ -1,0 +1,210 @@
+//! Every text and marker of every plot lies inside the SVG's view box: titles are not
+//! cut off, markers on the axes are drawn whole, legends fit. Text extents are
+//! estimated with the plots' own glyph advance (`svg::TEXT_EM`, bold 10 % wider), so the
+//! check is as strict as the layout's own assumption.
+
+use std::collections::HashMap;
+
+use assert_cmd::Command;
+use wearopt::report::svg::{bar_chart, Axis, LinePlot, Marker, Series, TEXT_EM};
+
+fn attrs(tag: &str) -> HashMap<String, String> {
+    let mut out = HashMap::new();
+    let mut rest = tag;
+    while let Some(eq) = rest.find("=\"") {
+        let name = rest[..eq].rsplit(' ').next().unwrap_or("").to_string();
+        let tail = &rest[eq + 2..];
+        let end = tail.find('"').unwrap();
+        out.insert(name, tail[..end].to_string());
+        rest = &tail[end + 1..];
+    }
+    out
+}
+
+fn num(a: &HashMap<String, String>, k: &str) -> f64 {
+    a.get(k)
+        .unwrap_or_else(|| panic!("no {k} in {a:?}"))
+        .parse()
+        .unwrap()
+}
+
+/// Checks one SVG document; returns how many texts and markers it checked.
+fn check(svg: &str) -> (usize, usize) {
+    let root = &svg[svg.find("<svg").unwrap()..];
+    let root_attrs = attrs(&root[..root.find('>').unwrap()]);
+    let vb: Vec<f64> = root_attrs["viewBox"]
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let (w, h) = (vb[2], vb[3]);
+    let inside = |x: f64, y: f64, what: &str| {
+        assert!(
+            (-0.01..=w + 0.01).contains(&x) && (-0.01..=h + 0.01).contains(&y),
+            "{what}: ({x:.1}, {y:.1}) outside 0 0 {w} {h}"
+        );
+    };
+    let default_size = num(&root_attrs, "font-size");
+    let mut texts = 0;
+    let mut rest = root;
+    while let Some(i) = rest.find("<text ") {
+        let tag_end = rest[i..].find('>').unwrap() + i;
+        let a = attrs(&rest[i..tag_end]);
+        let close = rest[tag_end..].find("</text>").unwrap() + tag_end;
+        let content = rest[tag_end + 1..close]
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&amp;", "&")
+            .replace("&quot;", "\"")
+            .replace("&apos;", "'");
+        let size = a
+            .get("font-size")
+            .map_or(default_size, |s| s.parse().unwrap());
+        let bold = a.get("font-weight").is_some_and(|b| b == "bold");
+        let width = TEXT_EM * size * content.chars().count() as f64 * if bold { 1.1 } else { 1.0 };
+        let (x, y) = (num(&a, "x"), num(&a, "y"));
+        let (x0, x1) = match a.get("text-anchor").map(String::as_str) {
+            Some("middle") => (x - width / 2.0, x + width / 2.0),
+            Some("end") => (x - width, x),
+            _ => (x, x + width),
+        };
+        if a.get("transform")
+            .is_some_and(|t| t.starts_with("rotate(-90"))
+        {
+            // Rotated about (x, y): the text runs vertically, centred on y.
+            inside(x - 0.8 * size, y - width / 2.0, &content);
+            inside(x + 0.25 * size, y + width / 2.0, &content);
+        } else {
+            inside(x0, y - 0.8 * size, &content);
+            inside(x1, y + 0.25 * size, &content);
+        }
+        texts += 1;
+        rest = &rest[close..];
+    }
+    let mut markers = 0;
+    for (open, kind) in [
+        ("<circle ", "circle"),
+        ("<polygon ", "polygon"),
+        ("<rect ", "rect"),
+        ("<path ", "path"),
+    ] {
+        let mut rest = root;
+        while let Some(i) = rest.find(open) {
+            let end = rest[i..].find('>').unwrap() + i;
+            let tag = &rest[i..end];
+            let a = attrs(tag);
+            match kind {
+                "circle" => {
+                    let (cx, cy, r) = (num(&a, "cx"), num(&a, "cy"), num(&a, "r"));
+                    inside(cx - r, cy - r, tag);
+                    inside(cx + r, cy + r, tag);
+                }
+                // The white background (width="100%") has no position.
+                "rect" if !a.contains_key("x") => {}
+                "rect" => {
+                    let (x, y) = (num(&a, "x"), num(&a, "y"));
+                    inside(x, y, tag);
+                    inside(x + num(&a, "width"), y + num(&a, "height"), tag);
+                }
+                _ => {
+                    let coords = a.get("points").or_else(|| a.get("d")).unwrap();
+                    let flat: Vec<f64> = coords
+                        .split([' ', ',', 'M', 'L'])
+                        .filter(|s| !s.is_empty())
+                        .map(|s| s.parse().unwrap())
+                        .collect();
+                    for p in flat.chunks(2) {
+                        inside(p[0], p[1], tag);
+                    }
+                }
+            }
+            markers += 1;
+            rest = &rest[end..];
+        }
+    }
+    (texts, markers)
+}
+
+#[test]
+fn line_plot_with_long_title_and_markers_on_the_axes() {
+    let svg = LinePlot::new(
+        "A long title that a Pareto study gives its plot: wear rate against pull-off force (trade-off) of a latching gold micro-relay",
+        Axis::log("pull-off force").with_unit("N"),
+        Axis::linear("wear rate").with_unit("µm³/m"),
+    )
+    // Points on all four edges of the plot area (the data range is fitted to them).
+    .with_series(Series::new("Pareto front (pull-off ≤ 1 fN drawn at it, a long name)", vec![(1e-15, 0.0), (1e-5, 10.0)]).with_marker(Marker::Circle))
+    .with_series(Series::new("knee", vec![(1e-15, 10.0), (1e-5, 0.0)]).without_line().with_marker(Marker::Diamond))
+    .with_series(Series::new("baseline", vec![(1e-10, 0.0)]).without_line().with_marker(Marker::Square))
+    .with_series(Series::new("infeasible", vec![(1e-10, 10.0)]).without_line().with_marker(Marker::Triangle))
+    .with_series(Series::new("dominated", vec![(1e-15, 5.0)]).without_line().with_marker(Marker::Cross))
+    .to_svg();
+    let (texts, markers) = check(&svg);
+    assert!(texts >= 10 && markers >= 12, "{texts} {markers}");
+}
+
+#[test]
+fn bar_chart_fits() {
+    let bars: Vec<(String, f64)> = [
+        ("youngs_modulus", -1.014),
+        ("hardness", 0.0),
+        ("work_of_adhesion", 0.07),
+        ("asperity_radius", 0.56),
+        ("sigma", f64::NAN),
+    ]
+    .iter()
+    .map(|(n, v)| (n.to_string(), *v))
+    .collect();
+    let (texts, markers) = check(&bar_chart(
+        "Elasticities of the wear rate",
+        "d ln(wear rate) / d ln x",
+        &bars,
+    ));
+    assert_eq!(texts, 2 + 2 * bars.len());
+    assert!(markers >= 4);
+}
+
+/// The plots the commands write: the Pareto front of the shipped latch study, and the
+/// plots inside the HTML pages of eval and optimize.
+#[test]
+fn shipped_plots_fit() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let front = dir.join("bounds-front.svg");
+    Command::cargo_bin("wearopt")
+        .unwrap()
+        .args([
+            "pareto",
+            "problems/latch-pareto.toml",
+            "--points",
+            "6",
+            "--plot",
+        ])
+        .arg(&front)
+        .assert()
+        .success();
+    check(&std::fs::read_to_string(&front).unwrap());
+    for args in [
+        vec!["eval", "problems/micro-gear.toml", "--format", "html"],
+        vec![
+            "optimize",
+            "problems/micro-gear-study.toml",
+            "--format",
+            "html",
+        ],
+    ] {
+        let out = Command::cargo_bin("wearopt")
+            .unwrap()
+            .args(&args)
+            .output()
+            .unwrap();
+        let html = String::from_utf8(out.stdout).unwrap();
+        let mut n = 0;
+        let mut rest = html.as_str();
+        while let Some(i) = rest.find("<svg ") {
+            let end = rest[i..].find("</svg>").unwrap() + i + 6;
+            check(&rest[i..end]);
+            n += 1;
+            rest = &rest[end..];
+        }
+        assert_eq!(n, 2, "{args:?}");
+    }
+}
