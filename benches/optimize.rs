@@ -1,5 +1,5 @@
 //! Speed of whole design studies (issue: the five-variable micro-gear study,
-//! median ≤ 50 ms on one thread).
+//! median ≤ 10 ms on one thread).
 //!
 //! Run: `cargo bench --bench optimize`
 

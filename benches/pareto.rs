@@ -1,5 +1,7 @@
-//! A 15-point wear–adhesion front of the micro-gear study (`problems/micro-gear.toml`).
-//! Run with `cargo bench --bench pareto`; target median ≤ 0.5 s on two cores.
+//! Wear–adhesion fronts: 15 points of the micro-gear study
+//! (`problems/micro-gear.toml`), and 30 points of the five-variable latch study
+//! (`tests/data/study_wide_latch.toml`, issue 10: ≤ 1 s on two cores).
+//! Run with `cargo bench --bench pareto`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
@@ -28,5 +30,29 @@ fn micro_gear_front(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, micro_gear_front);
+fn five_variable_front(c: &mut Criterion) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/study_wide_latch.toml");
+    let problem = wearopt::problem::load(&path).expect("study_wide_latch.toml loads");
+    let mut spec = problem.study.pareto.expect("the study has [pareto]");
+    spec.points = 30;
+    let study = Study {
+        scene: &problem.scene,
+        design: &problem.study.design,
+        objective: problem.study.objective,
+        constraints: &problem.study.constraints,
+        settings: &problem.study.optimizer,
+    };
+    let two = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap();
+    let mut group = c.benchmark_group("pareto");
+    group.sample_size(10);
+    group.bench_function("five-variable latch front, 30 points, two threads", |b| {
+        b.iter(|| two.install(|| black_box(pareto(&study, &spec, &Silent).expect("front"))))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, micro_gear_front, five_variable_front);
 criterion_main!(benches);
