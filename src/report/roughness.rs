@@ -393,7 +393,14 @@ pub fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
         si(p.mean_summit_height, "m", 4),
     )];
     for w in &g.warnings {
-        lines.push(format!("  scan: {}", warning_text(w)));
+        let text = match w {
+            // No PSD is taken for a scene.
+            Warning::MissingPoints { missing, total } => format!(
+                "{missing} of {total} points are missing: left out of the moments and summit count"
+            ),
+            _ => warning_text(w),
+        };
+        lines.push(format!("  scan: {text}"));
     }
     lines
 }
