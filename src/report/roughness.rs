@@ -159,19 +159,28 @@ pub fn text(r: &RoughnessReport) -> String {
     line(format!("wearopt roughness — {}", r.file));
     line(String::new());
     line("Scan".into());
-    let kind = if g.ny == 1 { "profile" } else { "map" };
-    line(format!(
-        "  {} ({}), {} × {} points, pixel {} × {} ({} × {}), {} of the points valid",
-        kind,
-        r.format.name(),
-        g.nx,
-        g.ny,
-        si(g.pixel_size_x, "m", 4),
-        si(g.pixel_size_y, "m", 4),
-        si(g.pixel_size_x * g.nx as f64, "m", 4),
-        si(g.pixel_size_y * g.ny as f64, "m", 4),
-        percent(g.valid_fraction),
-    ));
+    if g.ny == 1 {
+        line(format!(
+            "  profile ({}), {} points, pixel {} ({} long), {} of the points valid",
+            r.format.name(),
+            g.nx,
+            si(g.pixel_size_x, "m", 4),
+            si(g.pixel_size_x * g.nx as f64, "m", 4),
+            percent(g.valid_fraction),
+        ));
+    } else {
+        line(format!(
+            "  map ({}), {} × {} points, pixel {} × {} ({} × {}), {} of the points valid",
+            r.format.name(),
+            g.nx,
+            g.ny,
+            si(g.pixel_size_x, "m", 4),
+            si(g.pixel_size_y, "m", 4),
+            si(g.pixel_size_x * g.nx as f64, "m", 4),
+            si(g.pixel_size_y * g.ny as f64, "m", 4),
+            percent(g.valid_fraction),
+        ));
+    }
     line(format!("  levelling: {}", g.settings.level.as_str()));
     match g.settings.cutoff {
         Some(c) => line(format!(
@@ -294,7 +303,11 @@ pub fn text(r: &RoughnessReport) -> String {
         ));
         let integral = psd.integral();
         line(format!(
-            "  its integral ∫ C d²q = {} m² (rms {}): the mean square of the levelled map before any cut-off",
+            "  its integral {} = {} m² (rms {}): the mean square of the levelled map before any cut-off",
+            match psd.kind {
+                PsdKind::Areal => "∫ C d²q",
+                PsdKind::Profile => "∫ C dq",
+            },
             sig_exp(integral, 4),
             si(integral.sqrt(), "m", 3)
         ));
@@ -380,7 +393,14 @@ pub fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
         si(p.mean_summit_height, "m", 4),
     )];
     for w in &g.warnings {
-        lines.push(format!("  scan: {}", warning_text(w)));
+        let text = match w {
+            // No PSD is taken for a scene.
+            Warning::MissingPoints { missing, total } => format!(
+                "{missing} of {total} points are missing: left out of the moments and summit count"
+            ),
+            _ => warning_text(w),
+        };
+        lines.push(format!("  scan: {text}"));
     }
     lines
 }

@@ -119,20 +119,20 @@ pub fn level(map: &HeightMap, level: Levelling) -> Result<HeightMap, SurfaceErro
         .solve(&b, 1e-12 * a.amax())
         .unwrap_or_else(|_| DVector::zeros(k));
     let coef: Vec<f64> = coef.iter().copied().collect();
+    // The fit on row j is a polynomial in u alone: Σ_a row[a] u^a with
+    // row[a] = Σ over terms (a, b) of c · v_j^b.
+    let us: Vec<f64> = (0..nx).map(|i| scaled(i, nx)).collect();
     let mut out = vec![f64::NAN; nx * ny];
     out.par_chunks_mut(nx).enumerate().for_each(|(j, row)| {
         let v = scaled(j, ny);
-        for (i, cell) in row.iter_mut().enumerate() {
-            let h = map.at(i, j);
-            if h.is_nan() {
-                continue;
+        let mut poly = [0.0f64; 3];
+        for (c, &(ap, bp)) in coef.iter().zip(terms) {
+            poly[ap as usize] += c * v.powi(bp as i32);
+        }
+        for ((cell, &h), &u) in row.iter_mut().zip(map.row(j)).zip(&us) {
+            if !h.is_nan() {
+                *cell = h - (poly[0] + u * (poly[1] + u * poly[2]));
             }
-            let u = scaled(i, nx);
-            let mut fit = 0.0;
-            for (c, &(ap, bp)) in coef.iter().zip(terms) {
-                fit += c * u.powi(ap as i32) * v.powi(bp as i32);
-            }
-            *cell = h - fit;
         }
     });
     Ok(map.with_heights(out))

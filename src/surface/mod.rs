@@ -223,8 +223,11 @@ impl HeightMap {
     pub(crate) fn with_heights(&self, heights: Vec<f64>) -> HeightMap {
         debug_assert_eq!(heights.len(), self.heights.len());
         HeightMap {
+            nx: self.nx,
+            ny: self.ny,
+            pixel_size_x: self.pixel_size_x,
+            pixel_size_y: self.pixel_size_y,
             heights,
-            ..self.clone()
         }
     }
     /// The grid size checks every analysis needs.
