@@ -104,12 +104,12 @@ fn optimize_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<Stri
                     })
                 })
                 .collect::<Result<Vec<_>, _>>()?;
-            let ranking = rank_materials(&study(&problem), &materials, false)
+            let ranking = rank_materials(&study(&problem), &materials, None)
                 .map_err(|e| format!("{origin}: {e}"))?;
             return Ok(report::materials::json(&problem.name, &ranking));
         }
-        let optimum = wearopt::optimize::optimize(&study(&problem), false)
-            .map_err(|e| format!("{origin}: {e}"))?;
+        let optimum =
+            wearopt::optimize::optimize(&study(&problem)).map_err(|e| format!("{origin}: {e}"))?;
         Ok(report::optimize::json(&problem.name, &optimum))
     })
     .map_err(|e: String| value_error(e))
@@ -381,6 +381,78 @@ fn merge_text(py: Python<'_>, parts: Vec<String>, samples: Option<u64>) -> PyRes
     .map_err(value_error)
 }
 
+/// `wearopt roughness FILE [--cutoff L] [--level K] [--pixel-size L] [--height-unit U] --format json`.
+#[pyfunction]
+#[pyo3(signature = (path, cutoff=None, level="plane".to_string(), pixel_size=None, height_unit=None))]
+fn roughness_json(
+    py: Python<'_>,
+    path: String,
+    cutoff: Option<String>,
+    level: String,
+    pixel_size: Option<String>,
+    height_unit: Option<String>,
+) -> PyResult<String> {
+    use wearopt::problem::units::{parse_quantity, Dimension};
+    use wearopt::surface::psd::Psd;
+    use wearopt::surface::read::{self, parse_height_unit, Format, Overrides};
+    use wearopt::surface::{analyse, level as level_map, Levelling, Settings};
+    py.detach(|| {
+        let length = |flag: &str, text: &str| -> Result<f64, String> {
+            let x = parse_quantity(text, Dimension::Length)
+                .map_err(|e| format!("{flag} {text:?}: {e}"))?;
+            if !(x.is_finite() && x > 0.0) {
+                return Err(format!("{flag} {text:?}: must be a positive finite length"));
+            }
+            Ok(x)
+        };
+        let overrides = Overrides {
+            pixel_size: pixel_size
+                .as_deref()
+                .map(|t| length("--pixel-size", t))
+                .transpose()?,
+            height_unit: height_unit
+                .as_deref()
+                .map(|t| {
+                    parse_height_unit(t).ok_or_else(|| {
+                        format!("--height-unit {t:?}: not a length unit; expected e.g. \"nm\", \"um\", \"m\" or \"1e-9\"")
+                    })
+                })
+                .transpose()?,
+        };
+        let cutoff = cutoff
+            .as_deref()
+            .map(|t| length("--cutoff", t))
+            .transpose()?;
+        let level_kind = match level.as_str() {
+            "none" => Levelling::None,
+            "plane" => Levelling::Plane,
+            "quadratic" => Levelling::Quadratic,
+            other => {
+                return Err(format!(
+                    "level {other:?}: expected \"none\", \"plane\" or \"quadratic\""
+                ))
+            }
+        };
+        let file = std::path::Path::new(&path);
+        let format = Format::from_path(file).unwrap_or(Format::Ascii);
+        let map = read::load(file, &overrides).map_err(|e| e.to_string())?;
+        let settings = Settings {
+            level: level_kind,
+            cutoff,
+        };
+        let roughness = analyse(&map, &settings).map_err(|e| format!("{path}: {e}"))?;
+        let levelled = level_map(&map, level_kind).map_err(|e| format!("{path}: {e}"))?;
+        let psd = Psd::of(&levelled);
+        Ok(report::roughness::json(&report::roughness::RoughnessReport {
+            file: &path,
+            format,
+            roughness: &roughness,
+            psd: Some(&psd),
+        }))
+    })
+    .map_err(|e: String| value_error(e))
+}
+
 /// The compiled functions of the `wearopt` package.
 #[pymodule]
 fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -390,5 +462,6 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(curve_arrays, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_text, m)?)?;
     m.add_function(wrap_pyfunction!(merge_text, m)?)?;
+    m.add_function(wrap_pyfunction!(roughness_json, m)?)?;
     Ok(())
 }

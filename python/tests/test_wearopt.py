@@ -313,3 +313,30 @@ def test_slurm_example_runs_as_a_job_array(tmp_path):
     assert merged.returncode == 0, merged.stderr
     expected = cli("sweep", "problems/micro-gear-study.toml", "--samples", "50").stdout
     assert (tmp_path / "sweep.csv").read_text() == expected
+
+
+SCANS = sorted((ROOT / "problems" / "scans").glob("*.*"))
+SCAN_OPTIONS = {".npy": ["--pixel-size", "20 nm", "--height-unit", "nm"]}
+
+
+@pytest.mark.parametrize("path", SCANS, ids=lambda p: p.name)
+def test_roughness_equals_cli_json(path):
+    extra = SCAN_OPTIONS.get(path.suffix, [])
+    for more in ([], ["--cutoff", "100 nm", "--level", "quadratic"]):
+        expected = json.loads(cli("roughness", rel(path), *extra, *more, "--format", "json").stdout)
+        kwargs = {k.lstrip("-").replace("-", "_"): v for k, v in zip((extra + more)[::2], (extra + more)[1::2])}
+        assert wearopt.roughness(rel(path), **kwargs) == expected
+
+
+def test_roughness_bad_input_has_the_cli_message():
+    scan = "problems/scans/self-affine.gsf"
+    r = cli("roughness", scan, "--cutoff", "-5 nm", ok=(2,))
+    with pytest.raises(ValueError) as e:
+        wearopt.roughness(scan, cutoff="-5 nm")
+    assert str(e.value) == r.stderr.strip().removeprefix("Error: ")
+    r = cli("roughness", "problems/scans/self-affine-nm.npy", ok=(2,))
+    with pytest.raises(ValueError) as e:
+        wearopt.roughness("problems/scans/self-affine-nm.npy")
+    assert str(e.value) == r.stderr.strip().removeprefix("Error: ")
+    with pytest.raises(ValueError, match="level"):
+        wearopt.roughness(scan, level="cubic")

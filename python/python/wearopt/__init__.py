@@ -36,7 +36,7 @@ import numpy as np
 
 from . import _wearopt
 
-__all__ = ["evaluate", "optimize", "pareto", "curve", "sweep", "merge"]
+__all__ = ["evaluate", "optimize", "pareto", "roughness", "curve", "sweep", "merge"]
 __version__ = "0.1.0"
 
 Problem = Union[str, "os.PathLike[str]", Dict[str, Any]]
@@ -95,6 +95,42 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
     if points is not None and points < 0:
         raise ValueError(f"--points {points}: must lie in 2..=200")
     return json.loads(_wearopt.pareto_json(*_source(problem), points))
+
+
+def _length(value: Any) -> Optional[str]:
+    """A length as the command line reads it: a string with a unit, or metres."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return repr(float(value))
+    raise TypeError(f"a length must be a string with a unit or a number in metres, not {type(value).__name__}")
+
+
+def roughness(
+    path: Union[str, "os.PathLike[str]"],
+    cutoff: Any = None,
+    level: str = "plane",
+    pixel_size: Any = None,
+    height_unit: Any = None,
+) -> Dict[str, Any]:
+    """σ, R and N of a measured surface (Gwyddion .gsf, ISO 25178-72 .x3p,
+    NumPy .npy, ASCII matrix): the JSON of ``wearopt roughness FILE
+    [--cutoff L] [--level none|plane|quadratic] [--pixel-size L]
+    [--height-unit U] --format json``. Lengths are strings with units
+    ("100 nm") or numbers in metres; ``height_unit`` is a unit ("nm") or a
+    scale ("1e-9").
+
+    >>> r = wearopt.roughness("problems/scans/self-affine.gsf", cutoff="100 nm")
+    >>> r["summit_sigma"] > 0 and r["summit_radius"] > 0 and r["summit_density"] > 0
+    True
+    """
+    if height_unit is not None and not isinstance(height_unit, str):
+        height_unit = repr(float(height_unit))
+    return json.loads(
+        _wearopt.roughness_json(
+            os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit
+        )
+    )
 
 
 def _float_array(name: str, value: Any) -> np.ndarray:

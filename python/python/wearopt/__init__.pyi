@@ -31,6 +31,19 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
     5
     """
 
+def roughness(
+    path: Union[str, os.PathLike[str]],
+    cutoff: Union[str, float, None] = None,
+    level: str = "plane",
+    pixel_size: Union[str, float, None] = None,
+    height_unit: Union[str, float, None] = None,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt roughness FILE … --format json` as a dict.
+
+    >>> wearopt.roughness("problems/scans/self-affine.gsf")["summit_sigma"] > 0
+    True
+    """
+
 def curve(
     theta: ArrayLike,
     lam: ArrayLike,

@@ -21,3 +21,10 @@ def sweep_text(
     format: str,
 ) -> str: ...
 def merge_text(parts: List[str], samples: Optional[int] = None) -> str: ...
+def roughness_json(
+    path: str,
+    cutoff: Optional[str] = None,
+    level: str = "plane",
+    pixel_size: Optional[str] = None,
+    height_unit: Optional[str] = None,
+) -> str: ...
