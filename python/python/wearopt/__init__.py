@@ -1,0 +1,225 @@
+"""Adhesive wear of rough micro-contacts (MEMS gears and hinges, NEMS switches,
+storage heads): the rough-surface adhesion model, design optimisation, Pareto
+fronts of wear against adhesion, and design-space sweeps.
+
+Every function returns what the ``wearopt`` command line prints with
+``--format json`` (same keys, same values, SI units), as plain Python objects:
+
+>>> import wearopt
+>>> r = wearopt.evaluate("problems/micro-gear.toml")
+>>> r["status"], r["wear_rate"] > 0
+('ok', True)
+
+A ``problem`` is a path to a problem file (TOML) or a dict in the same schema::
+
+    wearopt.evaluate({
+        "contact": {"load": "10 uN", "nominal_area": "100 um^2",
+                    "sliding_distance": "1 m", "wear_coefficient": 1e-4},
+        "bodies": {"a": {"material": "polysilicon"}, "b": {"material": "polysilicon"}},
+        "interface": {"work_of_adhesion": "0.1 J/m^2"},
+        "roughness": {"sigma": "5 nm", "asperity_radius": "1 um",
+                      "asperity_density": "10 um^-2"},
+    })
+
+Bad input raises ``ValueError`` with the message the command line prints;
+outcomes (``separated``, ``infeasible``, …) are statuses in the result. The
+computations release the GIL, so calls from several threads run in parallel.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any, Dict, Iterable, Optional, Tuple, Union
+
+import numpy as np
+
+from . import _wearopt
+
+__all__ = ["evaluate", "optimize", "pareto", "roughness", "curve", "sweep", "merge"]
+__version__ = "0.1.0"
+
+Problem = Union[str, "os.PathLike[str]", Dict[str, Any]]
+
+
+def _source(problem: Problem) -> Tuple[str, bool]:
+    """(text, is_path): a path as given, or a dict as JSON text."""
+    if isinstance(problem, dict):
+        try:
+            return json.dumps(problem, allow_nan=False), False
+        except (TypeError, ValueError) as e:
+            raise ValueError(
+                f"<problem dict>: not a problem-file dict ({e}); values must be "
+                "strings, finite numbers, booleans, lists or dicts"
+            ) from None
+    if isinstance(problem, (str, os.PathLike)):
+        return os.fspath(problem), True
+    raise TypeError(
+        f"problem must be a path (str or os.PathLike) or a dict, not {type(problem).__name__}"
+    )
+
+
+def evaluate(problem: Problem) -> Dict[str, Any]:
+    """Evaluates one scene: separation, real area, contacts, pull-off, wear,
+    sensitivities (the JSON of ``wearopt eval FILE --format json``).
+
+    >>> r = wearopt.evaluate("problems/gold-switch.toml")
+    >>> sorted(k for k in r if k.endswith("_index"))[:2]
+    ['elastic_adhesion_index', 'plastic_adhesion_index']
+    """
+    return json.loads(_wearopt.evaluate_json(*_source(problem)))
+
+
+def optimize(problem: Problem) -> Dict[str, Any]:
+    """Searches the study's ``[design]`` for the least wear under its
+    constraints (the JSON of ``wearopt optimize FILE --format json``; a ranking
+    of the materials when ``[design]`` lists ``materials``).
+
+    >>> r = wearopt.optimize("problems/micro-gear-study.toml")
+    >>> r["status"]
+    'optimal'
+    """
+    return json.loads(_wearopt.optimize_json(*_source(problem)))
+
+
+def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
+    """The wear–adhesion trade-off of a study with a ``[pareto]`` section
+    (the JSON of ``wearopt pareto FILE [--points N] --format json``).
+
+    >>> front = wearopt.pareto("problems/micro-gear.toml", points=5)
+    >>> len(front["points"])
+    5
+    """
+    if points is not None and (isinstance(points, bool) or not isinstance(points, int)):
+        raise TypeError(f"points must be an int or None, not {type(points).__name__}")
+    if points is not None and points < 0:
+        raise ValueError(f"--points {points}: must lie in 2..=200")
+    return json.loads(_wearopt.pareto_json(*_source(problem), points))
+
+
+def _length(value: Any) -> Optional[str]:
+    """A length as the command line reads it: a string with a unit, or metres."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return repr(float(value))
+    raise TypeError(f"a length must be a string with a unit or a number in metres, not {type(value).__name__}")
+
+
+def roughness(
+    path: Union[str, "os.PathLike[str]"],
+    cutoff: Any = None,
+    level: str = "plane",
+    pixel_size: Any = None,
+    height_unit: Any = None,
+) -> Dict[str, Any]:
+    """σ, R and N of a measured surface (Gwyddion .gsf, ISO 25178-72 .x3p,
+    NumPy .npy, ASCII matrix): the JSON of ``wearopt roughness FILE
+    [--cutoff L] [--level none|plane|quadratic] [--pixel-size L]
+    [--height-unit U] --format json``. Lengths are strings with units
+    ("100 nm") or numbers in metres; ``height_unit`` is a unit ("nm") or a
+    scale ("1e-9").
+
+    >>> r = wearopt.roughness("problems/scans/self-affine.gsf", cutoff="100 nm")
+    >>> r["summit_sigma"] > 0 and r["summit_radius"] > 0 and r["summit_density"] > 0
+    True
+    """
+    if height_unit is not None and not isinstance(height_unit, str):
+        height_unit = repr(float(height_unit))
+    return json.loads(
+        _wearopt.roughness_json(
+            os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit
+        )
+    )
+
+
+def _float_array(name: str, value: Any) -> np.ndarray:
+    a = np.asarray(value)
+    if a.dtype.kind not in "iuf":
+        raise TypeError(
+            f"{name} must hold real numbers (integer or float dtype), not dtype {a.dtype}"
+        )
+    return a.astype(np.float64, copy=False)
+
+
+def curve(
+    theta: Any,
+    lam: Any,
+    h: Any,
+    adhesion_model: str = "jkr",
+    attraction: Any = None,
+    attraction_range: Any = None,
+    hardness_coefficient: Any = np.inf,
+) -> Dict[str, np.ndarray]:
+    """The non-dimensional model (the columns of ``wearopt curve``) at every
+    (θ, λ, h) of the broadcast arrays: ``h``, ``load`` (P̄), ``area`` (Ā),
+    ``plastic_area``, ``critical_interference`` (Δc) and ``dload_dh``, each an
+    array of the broadcast shape. ``theta`` or ``lam`` may be ``inf`` (no
+    adhesion, no plasticity); with ``theta = inf`` plasticity comes from
+    ``hardness_coefficient`` c_h. Runs in parallel without the GIL.
+
+    >>> import numpy as np
+    >>> c = wearopt.curve(10.0, 0.125, np.linspace(-2, 4, 61))
+    >>> c["load"].shape
+    (61,)
+    >>> wearopt.curve([[1.0], [10.0]], 1.0, [0.0, 1.0, 2.0])["area"].shape
+    (2, 3)
+    """
+    if adhesion_model != "jkr":
+        raise ValueError(
+            f"adhesion_model {adhesion_model!r}: this build has the JKR asperity law only; expected \"jkr\""
+        )
+    if attraction is not None or attraction_range is not None:
+        raise ValueError(
+            "attraction and attraction_range belong to other asperity laws: leave them None with adhesion_model=\"jkr\""
+        )
+    arrays = np.broadcast_arrays(
+        _float_array("theta", theta),
+        _float_array("lam", lam),
+        _float_array("hardness_coefficient", hardness_coefficient),
+        _float_array("h", h),
+    )
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
+    out = _wearopt.curve_arrays(*flat)
+    return {k: v.reshape(shape) for k, v in out.items()}
+
+
+def sweep(
+    problem: Problem,
+    samples: int,
+    method: str = "sobol",
+    seed: int = 0,
+    shard: Optional[Tuple[int, int]] = None,
+    format: str = "csv",
+) -> str:
+    """The output of ``wearopt sweep FILE --samples N --method M --seed S
+    [--shard I/N] --format F`` as text: the study's scene at ``samples``
+    designs of its ``[design]`` box. ``shard=(i, n)`` computes the i-th of n
+    equal parts; :func:`merge` joins parts into the unsharded text.
+
+    >>> import io, csv
+    >>> text = wearopt.sweep("problems/micro-gear-study.toml", 16)
+    >>> rows = list(csv.DictReader(io.StringIO(text)))
+    >>> len(rows), rows[0]["status"]
+    (16, 'ok')
+    """
+    i, n = shard if shard is not None else (0, 1)
+    for name, v in (("samples", samples), ("seed", seed), ("shard index", i), ("shard count", n)):
+        if isinstance(v, bool) or not isinstance(v, int):
+            raise TypeError(f"{name} must be an int, not {type(v).__name__}")
+        if v < 0:
+            raise ValueError(f"{name} {v}: must be >= 0")
+    return _wearopt.sweep_text(*_source(problem), samples, method, seed, i, n, format)
+
+
+def merge(parts: Iterable[str], samples: Optional[int] = None) -> str:
+    """Joins the texts of sweep shards (any order) into the text of the
+    unsharded sweep, byte for byte (``wearopt merge``); ``samples`` checks that
+    no row is missing.
+
+    >>> parts = [wearopt.sweep("problems/micro-gear-study.toml", 8, shard=(i, 3)) for i in range(3)]
+    >>> wearopt.merge(parts) == wearopt.sweep("problems/micro-gear-study.toml", 8)
+    True
+    """
+    return _wearopt.merge_text(list(parts), samples)

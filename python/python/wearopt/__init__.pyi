@@ -1,0 +1,83 @@
+"""Type stubs of the `wearopt` package (see the docstrings in __init__.py)."""
+
+import os
+from typing import Any, Dict, Iterable, Optional, Tuple, Union
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+__version__: str
+
+Problem = Union[str, os.PathLike[str], Dict[str, Any]]
+
+def evaluate(problem: Problem) -> Dict[str, Any]:
+    """The JSON of `wearopt eval FILE --format json` as a dict.
+
+    >>> wearopt.evaluate("problems/micro-gear.toml")["status"]
+    'ok'
+    """
+
+def optimize(problem: Problem) -> Dict[str, Any]:
+    """The JSON of `wearopt optimize FILE --format json` as a dict.
+
+    >>> wearopt.optimize("problems/micro-gear-study.toml")["status"]
+    'optimal'
+    """
+
+def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
+    """The JSON of `wearopt pareto FILE [--points N] --format json` as a dict.
+
+    >>> len(wearopt.pareto("problems/micro-gear.toml", points=5)["points"])
+    5
+    """
+
+def roughness(
+    path: Union[str, os.PathLike[str]],
+    cutoff: Union[str, float, None] = None,
+    level: str = "plane",
+    pixel_size: Union[str, float, None] = None,
+    height_unit: Union[str, float, None] = None,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt roughness FILE … --format json` as a dict.
+
+    >>> wearopt.roughness("problems/scans/self-affine.gsf")["summit_sigma"] > 0
+    True
+    """
+
+def curve(
+    theta: ArrayLike,
+    lam: ArrayLike,
+    h: ArrayLike,
+    adhesion_model: str = "jkr",
+    attraction: Optional[ArrayLike] = None,
+    attraction_range: Optional[ArrayLike] = None,
+    hardness_coefficient: ArrayLike = ...,
+) -> Dict[str, np.ndarray]:
+    """The columns of `wearopt curve` (h, load, area, plastic_area,
+    critical_interference, dload_dh) at the broadcast (θ, λ, h).
+
+    >>> wearopt.curve([[1.0], [10.0]], 1.0, [0.0, 1.0, 2.0])["load"].shape
+    (2, 3)
+    """
+
+def sweep(
+    problem: Problem,
+    samples: int,
+    method: str = "sobol",
+    seed: int = 0,
+    shard: Optional[Tuple[int, int]] = None,
+    format: str = "csv",
+) -> str:
+    """The text of `wearopt sweep FILE --samples N …` (CSV or JSON).
+
+    >>> wearopt.sweep("problems/micro-gear-study.toml", 4).count("\\n")
+    5
+    """
+
+def merge(parts: Iterable[str], samples: Optional[int] = None) -> str:
+    """The text of `wearopt merge PARTS…`: the shards joined into the unsharded sweep.
+
+    >>> parts = [wearopt.sweep("problems/micro-gear-study.toml", 8, shard=(i, 2)) for i in range(2)]
+    >>> wearopt.merge(parts) == wearopt.sweep("problems/micro-gear-study.toml", 8)
+    True
+    """

@@ -1,0 +1,342 @@
+"""The Python package against the command line: identical numbers on the shipped
+problems, numpy broadcasting and dtypes, bad input, concurrent calls, sweeps
+and the Dask and Slurm examples.
+
+The command line is found as $WEAROPT_BIN, else target/debug/wearopt or
+target/release/wearopt of the repository (scripts/test-all builds it first).
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import csv
+import io
+import json
+import os
+import shutil
+import stat
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import wearopt
+
+ROOT = Path(__file__).resolve().parents[2]
+PROBLEMS = sorted((ROOT / "problems").glob("*.toml"))
+
+
+def _binary() -> str:
+    env = os.environ.get("WEAROPT_BIN")
+    if env:
+        return env
+    for profile in ("debug", "release"):
+        p = ROOT / "target" / profile / "wearopt"
+        if p.exists():
+            return str(p)
+    found = shutil.which("wearopt")
+    if found:
+        return found
+    pytest.skip("no wearopt binary: run `cargo build` first (scripts/test-all does)")
+
+
+def cli(*args: str, ok=(0, 1)) -> subprocess.CompletedProcess:
+    env = {k: v for k, v in os.environ.items() if not k.startswith("SLURM_")}
+    r = subprocess.run([_binary(), *args], cwd=ROOT, capture_output=True, text=True, env=env)
+    assert r.returncode in ok, (args, r.returncode, r.stderr)
+    return r
+
+
+@pytest.fixture(autouse=True)
+def _in_root(monkeypatch):
+    # Problem paths as the command line sees them (relative to the repository).
+    monkeypatch.chdir(ROOT)
+
+
+def rel(p: Path) -> str:
+    return str(p.relative_to(ROOT))
+
+
+def without_timing(v):
+    """Drops wall-clock keys, the only values that differ between two runs."""
+    if isinstance(v, dict):
+        return {k: without_timing(x) for k, x in v.items() if "time" not in k or "limit" in k}
+    if isinstance(v, list):
+        return [without_timing(x) for x in v]
+    return v
+
+
+def test_shipped_problems_are_there():
+    assert len(PROBLEMS) >= 5
+
+
+@pytest.mark.parametrize("path", PROBLEMS, ids=lambda p: p.stem)
+def test_evaluate_equals_cli_json(path):
+    expected = json.loads(cli("eval", rel(path), "--format", "json").stdout)
+    assert wearopt.evaluate(rel(path)) == expected
+    assert wearopt.evaluate(path) == expected  # a pathlib.Path works too
+
+
+def has_section(path: Path, name: str) -> bool:
+    return any(line.strip().startswith(f"[{name}]") for line in path.read_text().splitlines())
+
+
+STUDIES = [p for p in PROBLEMS if has_section(p, "design") and has_section(p, "objective")]
+
+
+@pytest.mark.parametrize("path", STUDIES, ids=lambda p: p.stem)
+def test_optimize_equals_cli_json(path):
+    expected = json.loads(cli("optimize", rel(path), "--format", "json").stdout)
+    got = wearopt.optimize(rel(path))
+    assert got.get("status") != "time_limit"
+    assert without_timing(got) == without_timing(expected)
+
+
+FRONTS = [p for p in PROBLEMS if has_section(p, "pareto")]
+
+
+@pytest.mark.parametrize("path", FRONTS, ids=lambda p: p.stem)
+def test_pareto_equals_cli_json(path):
+    expected = json.loads(cli("pareto", rel(path), "--points", "4", "--format", "json").stdout)
+    assert without_timing(wearopt.pareto(rel(path), points=4)) == without_timing(expected)
+
+
+def test_dict_problem_equals_its_file():
+    tomllib = pytest.importorskip("tomllib")
+    path = ROOT / "problems" / "micro-gear.toml"
+    d = tomllib.loads(path.read_text())
+    d.setdefault("name", "micro-gear")
+    from_dict, from_file = wearopt.evaluate(d), wearopt.evaluate(rel(path))
+    for key in ("status", "wear_rate", "real_area", "pull_off_force", "separation", "sensitivities"):
+        assert from_dict[key] == from_file[key], key
+
+
+def _cli_curve(theta: str, lam: str, lo: float, hi: float, n: int, extra=()):
+    out = cli("curve", "--theta", theta, "--lambda", lam, "--from", repr(lo), "--to", repr(hi),
+              "--points", str(n), *extra).stdout
+    rows = list(csv.DictReader(io.StringIO(out)))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+@pytest.mark.parametrize("theta,lam", [("10", "0.125"), ("0.5", "0.01"), ("inf", "inf"), ("1000", "inf")])
+def test_curve_equals_cli_columns(theta, lam):
+    lo, hi, n = -2.0, 4.0, 61
+    expected = _cli_curve(theta, lam, lo, hi, n)
+    h = lo + (hi - lo) * np.arange(n) / (n - 1)  # the command line's spacing, bit for bit
+    got = wearopt.curve(float(theta), float(lam), h)
+    assert set(got) == set(expected)
+    for k in expected:
+        np.testing.assert_array_equal(got[k], expected[k], err_msg=k)
+
+
+def test_curve_hardness_coefficient_equals_cli():
+    expected = _cli_curve("inf", "inf", 0.0, 3.0, 4, ("--hardness-coefficient", "2.5"))
+    got = wearopt.curve(np.inf, np.inf, np.arange(4.0), hardness_coefficient=2.5)
+    for k in expected:
+        np.testing.assert_array_equal(got[k], expected[k], err_msg=k)
+
+
+def test_curve_broadcasts_like_numpy():
+    theta = np.array([[1.0], [10.0], [100.0]])  # (3, 1)
+    h = np.array([-1.0, 0.0, 1.0, 2.0])  # (4,)
+    got = wearopt.curve(theta, 0.5, h)
+    for k, v in got.items():
+        assert v.shape == (3, 4), k
+        assert v.dtype == np.float64
+    for i in range(3):
+        for j in range(4):
+            one = wearopt.curve(theta[i, 0], 0.5, h[j])
+            assert one["load"].shape == ()
+            assert got["load"][i, j] == one["load"]
+            assert got["area"][i, j] == one["area"]
+    np.testing.assert_array_equal(got["h"], np.broadcast_to(h, (3, 4)))
+    # Empty input, empty output of the broadcast shape.
+    assert wearopt.curve(1.0, 1.0, np.empty((0, 2)))["load"].shape == (0, 2)
+    # Non-contiguous and Fortran-ordered input.
+    hf = np.asfortranarray(np.linspace(0, 1, 6).reshape(2, 3))
+    np.testing.assert_array_equal(wearopt.curve(1.0, 1.0, hf)["load"],
+                                  wearopt.curve(1.0, 1.0, np.ascontiguousarray(hf))["load"])
+    with pytest.raises(ValueError):
+        wearopt.curve(np.ones(2), 1.0, np.ones(3))
+
+
+def test_curve_dtypes():
+    ref = wearopt.curve(10.0, 1.0, np.array([0.0, 1.0, 2.0]))["load"]
+    np.testing.assert_array_equal(wearopt.curve(10, 1, np.array([0, 1, 2]))["load"], ref)
+    np.testing.assert_array_equal(
+        wearopt.curve(np.float32(10), 1, np.array([0, 1, 2], dtype=np.int16))["load"], ref)
+    np.testing.assert_array_equal(wearopt.curve(10.0, 1.0, [0, 1, 2])["load"], ref)
+    for bad in (np.array([1 + 2j]), np.array(["1"]), np.array([object()]), np.array([True])):
+        with pytest.raises(TypeError):
+            wearopt.curve(10.0, 1.0, bad)
+
+
+@pytest.mark.parametrize(
+    "args,cli_args",
+    [
+        ((-1.0, 1.0, 0.0), ["--theta", "-1", "--lambda", "1"]),
+        ((1.0, 0.0, 0.0), ["--theta", "1", "--lambda", "0"]),
+        ((np.nan, 1.0, 0.0), ["--theta", "NaN", "--lambda", "1"]),
+    ],
+)
+def test_curve_bad_input_has_the_cli_message(args, cli_args):
+    r = cli("curve", *cli_args, "--from", "0", "--to", "1", "--points", "2", ok=(2,))
+    message = r.stderr.strip().removeprefix("Error: ")
+    with pytest.raises(ValueError) as e:
+        wearopt.curve(*args)
+    assert str(e.value) == message
+    with pytest.raises(ValueError, match=r"\(element 1\)"):
+        wearopt.curve(*(np.array([good, bad]) for good, bad in zip((1.0, 1.0, 0.0), args)))
+
+
+def test_curve_other_laws_are_refused_plainly():
+    with pytest.raises(ValueError, match="adhesion_model"):
+        wearopt.curve(1.0, 1.0, 0.0, adhesion_model="magic")
+
+
+BAD = sorted((ROOT / "tests" / "bad_input").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", BAD, ids=lambda p: p.stem)
+def test_bad_problem_raises_the_cli_message(path):
+    r = cli("eval", rel(path), ok=(2,))
+    message = r.stderr.strip().removeprefix("Error: ")
+    with pytest.raises(ValueError) as e:
+        wearopt.evaluate(rel(path))
+    assert str(e.value) == message
+
+
+def test_bad_arguments():
+    with pytest.raises(TypeError):
+        wearopt.evaluate(42)
+    with pytest.raises(ValueError, match="no such|cannot read"):
+        wearopt.evaluate("problems/does-not-exist.toml")
+    with pytest.raises(ValueError, match="^<problem dict>: "):
+        wearopt.evaluate({"contact": {"load": "10 uQ"}})
+    with pytest.raises(ValueError):
+        wearopt.evaluate({"contact": {"load": None}})
+    with pytest.raises(ValueError, match="--points 1: must lie in 2..=200"):
+        wearopt.pareto("problems/micro-gear.toml", points=1)
+    with pytest.raises(ValueError, match="no \\[pareto\\] section"):
+        wearopt.pareto("problems/gold-switch.toml")
+    with pytest.raises(ValueError, match="no \\[design\\] variables"):
+        wearopt.optimize("problems/gold-switch.toml")
+    with pytest.raises(ValueError, match="must be m\\^5"):
+        wearopt.sweep("problems/micro-gear-study.toml", 10, method="grid")
+    with pytest.raises(ValueError, match="shard 3/3"):
+        wearopt.sweep("problems/micro-gear-study.toml", 10, shard=(3, 3))
+    with pytest.raises(TypeError):
+        wearopt.sweep("problems/micro-gear-study.toml", 10.0)
+
+
+def test_outcomes_are_statuses_not_exceptions():
+    r = wearopt.optimize("problems/infeasible-study.toml")
+    assert r["status"] == "infeasible"
+    d = {"contact": {"load": "-1 N", "nominal_area": "100 um^2", "sliding_distance": "1 m",
+                     "wear_coefficient": 1e-4},
+         "bodies": {"a": {"material": "polysilicon"}, "b": {"material": "polysilicon"}},
+         "interface": {"work_of_adhesion": "0.1 J/m^2"},
+         "roughness": {"sigma": "5 nm", "asperity_radius": "1 um", "asperity_density": "10 um^-2"}}
+    assert wearopt.evaluate(d)["status"] == "separated"
+
+
+def test_concurrent_calls_from_threads_agree_with_serial_ones():
+    h = np.linspace(-2, 4, 20001)
+    jobs = [
+        lambda: wearopt.evaluate("problems/micro-gear.toml"),
+        lambda: wearopt.evaluate("problems/gold-switch.toml"),
+        lambda: wearopt.curve(10.0, 0.125, h)["load"].tolist(),
+        lambda: wearopt.curve(0.5, 0.01, h)["area"].tolist(),
+        lambda: wearopt.sweep("problems/micro-gear-study.toml", 300, method="lhs", seed=4),
+        lambda: without_timing(wearopt.optimize("problems/micro-gear-study.toml")),
+    ]
+    serial = [job() for job in jobs]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=8) as pool:
+        futures = [(i, pool.submit(jobs[i])) for _ in range(3) for i in range(len(jobs))]
+        for i, f in futures:
+            assert f.result() == serial[i], i
+
+
+def test_sweep_equals_cli_and_merges_byte_for_byte():
+    study = "problems/micro-gear-study.toml"
+    for fmt in ("csv", "json"):
+        expected = cli("sweep", study, "--samples", "40", "--method", "lhs", "--seed", "9",
+                       "--format", fmt).stdout
+        assert wearopt.sweep(study, 40, method="lhs", seed=9, format=fmt) == expected
+        parts = [wearopt.sweep(study, 40, "lhs", 9, (i, 6), fmt) for i in range(6)]
+        assert wearopt.merge(reversed(parts), samples=40) == expected
+    with pytest.raises(ValueError, match="missing"):
+        wearopt.merge(parts[:3] + parts[4:])
+
+
+def test_dask_example_on_a_local_cluster_gives_the_serial_result():
+    distributed = pytest.importorskip("dask.distributed")
+    sys.path.insert(0, str(ROOT / "examples"))
+    try:
+        import dask_sweep
+    finally:
+        sys.path.pop(0)
+    study = "problems/micro-gear-study.toml"
+    serial = wearopt.sweep(study, 500)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        assert len(client.scheduler_info()["workers"]) == 2
+        assert dask_sweep.dask_sweep(client, str(ROOT / study), 500, shards=7) == serial
+
+
+def test_slurm_example_runs_as_a_job_array(tmp_path):
+    """examples/slurm/sweep.sbatch run task by task with Slurm's variables, with a
+    stand-in `sbatch` that runs the merge step it is handed."""
+    fake = tmp_path / "bin"
+    fake.mkdir()
+    sbatch = fake / "sbatch"
+    sbatch.write_text('#!/bin/bash\nfor a in "$@"; do last="$a"; done\n'
+                      'echo "$last" > "$FAKE_SBATCH_CMD"\n')
+    sbatch.chmod(sbatch.stat().st_mode | stat.S_IEXEC)
+    out = tmp_path / "parts"
+    env = {k: v for k, v in os.environ.items() if not k.startswith("SLURM_")}
+    env.update(PATH=f"{fake}:{env['PATH']}", PROBLEM=str(ROOT / "problems/micro-gear-study.toml"),
+               SAMPLES="50", OUT=str(out), WEAROPT=_binary(),
+               FAKE_SBATCH_CMD=str(tmp_path / "merge.sh"))
+    for task in (2, 0, 3, 1, 2):  # any order; task 2 twice (a resubmission skips)
+        env.update(SLURM_ARRAY_TASK_ID=str(task), SLURM_ARRAY_TASK_COUNT="4",
+                   SLURM_ARRAY_TASK_MIN="0", SLURM_ARRAY_TASK_MAX="3",
+                   SLURM_ARRAY_JOB_ID="1234")
+        r = subprocess.run(["bash", str(ROOT / "examples/slurm/sweep.sbatch")], cwd=tmp_path,
+                           env=env, capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+    merged = subprocess.run(["bash", "-c", (tmp_path / "merge.sh").read_text()], cwd=tmp_path,
+                            env=env, capture_output=True, text=True)
+    assert merged.returncode == 0, merged.stderr
+    expected = cli("sweep", "problems/micro-gear-study.toml", "--samples", "50").stdout
+    assert (tmp_path / "sweep.csv").read_text() == expected
+
+
+SCANS = sorted((ROOT / "problems" / "scans").glob("*.*"))
+SCAN_OPTIONS = {".npy": ["--pixel-size", "20 nm", "--height-unit", "nm"]}
+
+
+@pytest.mark.parametrize("path", SCANS, ids=lambda p: p.name)
+def test_roughness_equals_cli_json(path):
+    extra = SCAN_OPTIONS.get(path.suffix, [])
+    for more in ([], ["--cutoff", "100 nm", "--level", "quadratic"]):
+        expected = json.loads(cli("roughness", rel(path), *extra, *more, "--format", "json").stdout)
+        kwargs = {k.lstrip("-").replace("-", "_"): v for k, v in zip((extra + more)[::2], (extra + more)[1::2])}
+        assert wearopt.roughness(rel(path), **kwargs) == expected
+
+
+def test_roughness_bad_input_has_the_cli_message():
+    scan = "problems/scans/self-affine.gsf"
+    r = cli("roughness", scan, "--cutoff", "-5 nm", ok=(2,))
+    with pytest.raises(ValueError) as e:
+        wearopt.roughness(scan, cutoff="-5 nm")
+    assert str(e.value) == r.stderr.strip().removeprefix("Error: ")
+    r = cli("roughness", "problems/scans/self-affine-nm.npy", ok=(2,))
+    with pytest.raises(ValueError) as e:
+        wearopt.roughness("problems/scans/self-affine-nm.npy")
+    assert str(e.value) == r.stderr.strip().removeprefix("Error: ")
+    with pytest.raises(ValueError, match="level"):
+        wearopt.roughness(scan, level="cubic")
