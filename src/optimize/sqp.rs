@@ -72,7 +72,7 @@ pub struct SqpSettings {
     /// least-squares multipliers; the estimate with the smallest residual is
     /// kept (default 1e-10, 1e-7, 1e-4).
     pub active_tolerances: Vec<f64>,
-    /// A trial point closer to a bound than this times max(1, |bound|) is put on it (default 1e-10).
+    /// A trial point closer to a bound than this times max(1, |bound|) is put on it (default 1e-8).
     pub bound_snap: f64,
 }
 
@@ -107,7 +107,7 @@ impl Default for SqpSettings {
             step_tolerance: 1e-14,
             merit_noise: 1e-12,
             active_tolerances: vec![1e-10, 1e-7, 1e-4],
-            bound_snap: 1e-10,
+            bound_snap: 1e-8,
         }
     }
 }
