@@ -75,12 +75,13 @@ fn evaluate_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<Stri
     py.detach(|| {
         let (problem, _) = load(&source, is_path)?;
         let options = EvaluationOptions::default();
-        let evaluation = model::evaluate(&problem.scene, &options);
+        let evaluation = model::evaluate_with_other(&problem.scene, &options);
         let sensitivities = model::sensitivities(&problem.scene, options.quadrature);
         Ok(report::eval::json(&report::eval::EvalReport {
             name: &problem.name,
             scene: &problem.scene,
             input_notes: &problem.notes,
+            scan: problem.scan.as_ref(),
             evaluation: &evaluation,
             sensitivities: &sensitivities,
         }))

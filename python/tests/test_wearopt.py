@@ -76,7 +76,7 @@ def test_shipped_problems_are_there():
 def test_evaluate_equals_cli_json(path):
     expected = json.loads(cli("eval", rel(path), "--format", "json").stdout)
     assert wearopt.evaluate(rel(path)) == expected
-    assert wearopt.evaluate(path) == expected  # a pathlib.Path works too
+    assert wearopt.evaluate(Path(rel(path))) == expected  # a pathlib.Path works too
 
 
 def has_section(path: Path, name: str) -> bool:
