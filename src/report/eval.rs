@@ -48,6 +48,20 @@ pub fn json(r: &EvalReport) -> String {
         notes.extend(super::words::notes(ev));
         obj.insert("notes".into(), json!(notes));
         obj.insert("name".into(), json!(r.name));
+        // The stiction verdict under the other law too, where eval computed it.
+        if let (Some(Value::Object(st)), Some(other)) =
+            (obj.get_mut("stiction"), other_stiction(ev))
+        {
+            st.insert(
+                "other_model".into(),
+                json!({
+                    "adhesion_model": other.0.as_str(),
+                    "pull_off_force": other.1.pull_off_force,
+                    "margin": other.1.margin,
+                    "verdict": other.1.verdict,
+                }),
+            );
+        }
         obj.insert(
             "scene".into(),
             serde_json::to_value(r.scene).unwrap_or(Value::Null),
@@ -91,6 +105,26 @@ fn law_words(ev: &Evaluation, sc: &Scene) -> String {
                 sig_exp(sc.interatomic_distance / (1.03 * sc.sigma), 4)
             ),
         },
+    }
+}
+
+/// The stiction verdict under the other asperity law (JKR–DMT transition only).
+fn other_stiction(
+    ev: &Evaluation,
+) -> Option<(crate::model::law::AdhesionModel, crate::model::Stiction)> {
+    let st = ev.stiction.as_ref()?;
+    let other = ev.other_model.as_ref()?;
+    let f = other.pull_off_force?;
+    Some((
+        other.adhesion_model,
+        crate::model::Stiction::new(f, st.restoring_force),
+    ))
+}
+
+fn verdict_words(v: crate::model::StictionVerdict) -> &'static str {
+    match v {
+        crate::model::StictionVerdict::Sticks => "STICKS (margin ≥ 1)",
+        crate::model::StictionVerdict::Releases => "releases (margin < 1)",
     }
 }
 
@@ -278,7 +312,10 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
     }
     if let Some(st) = &ev.stiction {
         rows.push(vec![
-            "stiction (JKR law)".into(),
+            format!(
+                "stiction ({} law)",
+                ev.adhesion_model.as_str().to_uppercase()
+            ),
             format!(
                 "margin {} → {}",
                 sig_exp(st.margin, 3),
@@ -559,22 +596,36 @@ pub fn text(r: &EvalReport) -> String {
             si(st.pull_off_force, "N", 4),
             si(st.restoring_force, "N", 4),
             sig_exp(st.margin, 3),
-            match st.verdict {
-                crate::model::StictionVerdict::Sticks => "STICKS (margin ≥ 1)",
-                crate::model::StictionVerdict::Releases => "releases (margin < 1)",
-            }
+            verdict_words(st.verdict)
         ));
-        line(format!(
-            "  adhesion law: {} (docs/model.md §3)",
-            "JKR asperities, the paper's law"
-        ));
+        line(format!("  adhesion law: {}", law_words(ev, sc)));
         let phi = ev.indices.tabor_parameter;
-        if (0.3..=3.0).contains(&phi) {
+        if let Some((law, o)) = other_stiction(ev) {
             line(format!(
-                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where neither law is exact and the DMT law can give a pull-off many decades larger (docs/model.md §7): judge stiction under both before trusting this verdict",
+                "  under the {} law instead: pull-off force {}, margin {} → {}",
+                law.as_str().to_uppercase(),
+                si(o.pull_off_force, "N", 4),
+                sig_exp(o.margin, 3),
+                verdict_words(o.verdict)
+            ));
+            line(format!(
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the two bracket the answer (docs/model.md §7){}",
+                sig_exp(phi, 3),
+                if o.verdict == st.verdict {
+                    "; both give the same verdict"
+                } else {
+                    "; they DISAGREE: design for the worse case or measure"
+                }
+            ));
+        } else if (0.3..=3.0).contains(&phi) {
+            line(format!(
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where neither law is exact: judge stiction under both (docs/model.md §7)",
                 sig_exp(phi, 3)
             ));
-        } else if phi < 0.3 && phi > 0.0 {
+        } else if phi < 0.3
+            && phi > 0.0
+            && ev.adhesion_model == crate::model::law::AdhesionModel::Jkr
+        {
             line(format!(
                 "  φ0 = {} < 0.3: the DMT law applies, and the JKR verdict above understates adhesion (docs/model.md §7)",
                 sig_exp(phi, 3)
