@@ -219,7 +219,8 @@ fn stiction_text_names_the_law() {
     std::fs::write(&path, text).unwrap();
     let t = stdout_of(&["eval", path.to_str().unwrap()]);
     assert!(t.contains("STICKS (margin ≥ 1)"), "{t}");
-    assert!(t.contains("adhesion law: JKR"), "{t}");
+    assert!(t.contains("verdict under the JKR law"), "{t}");
+    assert!(t.contains("under the DMT law: pull-off force"), "{t}");
     // φ0 = 1.59: the transition, where the other law must be weighed.
     assert!(t.contains("JKR–DMT transition (0.3–3)"), "{t}");
 }

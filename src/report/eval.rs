@@ -564,19 +564,41 @@ pub fn text(r: &EvalReport) -> String {
                 crate::model::StictionVerdict::Releases => "releases (margin < 1)",
             }
         ));
+        let law = ev.adhesion_model.as_str().to_uppercase();
         line(format!(
-            "  adhesion law: {} (docs/model.md §3)",
-            "JKR asperities, the paper's law"
+            "  verdict under the {law} law ({})",
+            match (ev.adhesion_model, sc.attraction) {
+                (AdhesionModel::Jkr, _) => "adhesion inside contacts only",
+                (AdhesionModel::Dmt, AttractionKind::VanDerWaals) =>
+                    "van der Waals attraction of asperities not in contact",
+                (AdhesionModel::Dmt, AttractionKind::Dugdale) =>
+                    "Dugdale attraction of asperities not in contact",
+            }
         ));
         let phi = ev.indices.tabor_parameter;
-        if (0.3..=3.0).contains(&phi) {
+        if let Some(om) = &ev.other_model {
+            let other = om.adhesion_model.as_str().to_uppercase();
+            if let Some(f) = om.pull_off_force {
+                let margin = f / st.restoring_force;
+                line(format!(
+                    "  under the {other} law: pull-off force {}, margin {} → {}",
+                    si(f, "N", 4),
+                    sig_exp(margin, 3),
+                    if margin >= 1.0 { "STICKS" } else { "releases" }
+                ));
+            }
             line(format!(
-                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where neither law is exact and the DMT law can give a pull-off many decades larger (docs/model.md §7): judge stiction under both before trusting this verdict",
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the truth lies between the two verdicts",
                 sig_exp(phi, 3)
             ));
-        } else if phi < 0.3 && phi > 0.0 {
+        } else if ev.adhesion_model == AdhesionModel::Jkr && phi < 0.3 && phi > 0.0 {
             line(format!(
-                "  φ0 = {} < 0.3: the DMT law applies, and the JKR verdict above understates adhesion (docs/model.md §7)",
+                "  φ0 = {} < 0.3: the DMT law applies, and this JKR verdict understates adhesion: set [interface] adhesion_model = \"dmt\"",
+                sig_exp(phi, 3)
+            ));
+        } else if ev.adhesion_model == AdhesionModel::Dmt && phi > 3.0 {
+            line(format!(
+                "  φ0 = {} > 3: the JKR law applies: set [interface] adhesion_model = \"jkr\"",
                 sig_exp(phi, 3)
             ));
         }
