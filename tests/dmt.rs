@@ -304,3 +304,103 @@ fn problem_keys_and_bad_input() {
         .to_string();
     assert!(e.contains("interface.interatomic_distance"), "{e}");
 }
+
+fn wearopt(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_wearopt"))
+        .args(args)
+        .output()
+        .expect("wearopt runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// `curve`: the DMT flags, the `noncontact_load` column, and the clashes (exit 2).
+#[test]
+fn curve_flags() {
+    let (code, out, _) = wearopt(&[
+        "curve",
+        "--theta",
+        "184",
+        "--lambda",
+        "1.309e5",
+        "--from",
+        "0",
+        "--to",
+        "60",
+        "--points",
+        "4",
+        "--adhesion-model",
+        "dmt",
+        "--attraction-range",
+        "0.1",
+    ]);
+    assert_eq!(code, 0);
+    let mut lines = out.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "h,load,area,plastic_area,critical_interference,dload_dh,noncontact_load"
+    );
+    let last: Vec<f64> = lines
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    // h = 60: the van der Waals term is the whole (negative, non-zero) load.
+    assert_eq!(last[0], 60.0);
+    assert!(last[1] < 0.0 && last[1] == last[6], "{last:?}");
+    // γ = 0: DMT equals JKR and the non-contact load is exactly 0.
+    let gw = |law: &[&str]| {
+        let mut a = vec![
+            "curve",
+            "--theta",
+            "inf",
+            "--lambda",
+            "inf",
+            "--hardness-coefficient",
+            "3",
+            "--from",
+            "-1",
+            "--to",
+            "3",
+            "--points",
+            "5",
+            "--format",
+            "json",
+        ];
+        a.extend_from_slice(law);
+        wearopt(&a).1
+    };
+    let jkr = gw(&[]);
+    let dmt = gw(&[
+        "--adhesion-model",
+        "dmt",
+        "--attraction",
+        "dugdale",
+        "--attraction-range",
+        "1e-3",
+    ]);
+    assert_eq!(jkr, dmt);
+    assert!(jkr.contains("\"noncontact_load\": 0.0"));
+    for bad in [
+        vec!["--attraction", "dugdale"],
+        vec!["--attraction-range", "0.1"],
+        vec!["--adhesion-model", "dmt"],
+        vec!["--adhesion-model", "dmt", "--attraction-range", "-1"],
+        vec!["--adhesion-model", "dmx"],
+    ] {
+        let mut a = vec![
+            "curve", "--theta", "1", "--lambda", "1", "--from", "0", "--to", "1", "--points", "2",
+        ];
+        a.extend_from_slice(&bad);
+        let (code, _, err) = wearopt(&a);
+        assert_eq!(code, 2, "{bad:?}: {err}");
+        assert!(
+            err.contains("attraction") || err.contains("jkr, dmt"),
+            "{bad:?}: {err}"
+        );
+    }
+}

@@ -15,7 +15,9 @@ use std::process::ExitCode;
 use anyhow::{bail, Result};
 use clap::{Parser, Subcommand, ValueEnum};
 
-use wearopt::model::{self, Coefficients, EvaluationOptions, Model, Quadrature, Status};
+use wearopt::model::{
+    self, AsperityLaw, Attraction, Coefficients, EvaluationOptions, Model, Quadrature, Status,
+};
 use wearopt::report;
 
 /// Adhesive wear of rough micro-contacts (MEMS gears and hinges, NEMS switches,
@@ -126,7 +128,7 @@ Exit code 2 for an unreadable file or a map that cannot be analysed."
     Roughness(roughness::RoughnessArgs),
     /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
     #[command(
-        after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh.\n\
+        after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh, noncontact_load.\n\
 Example:\n  wearopt curve --theta 10 --lambda 0.125 --from -2 --to 4 --points 61\n  \
 wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json   (Greenwood-Williamson)"
     )]
@@ -153,7 +155,63 @@ wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json 
         /// Output format.
         #[arg(long, value_enum, default_value_t = CurveFormat::Csv)]
         format: CurveFormat,
+        /// The asperity law: jkr (the paper's) or dmt (attraction of asperities not in contact).
+        #[arg(long, value_enum, default_value_t = CurveLaw::Jkr)]
+        adhesion_model: CurveLaw,
+        /// Under dmt: van_der_waals (default) or dugdale.
+        #[arg(long, value_enum)]
+        attraction: Option<CurveAttraction>,
+        /// Under dmt, the attraction's range over σ (required): z0 = Z0/σ for
+        /// van_der_waals, Δ_h = h0/σ for dugdale; > 0.
+        #[arg(long, allow_hyphen_values = true)]
+        attraction_range: Option<f64>,
     },
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum CurveLaw {
+    Jkr,
+    Dmt,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+#[value(rename_all = "snake_case")]
+enum CurveAttraction {
+    VanDerWaals,
+    Dugdale,
+}
+
+/// The asperity law of `curve`'s flags, or a usage error naming the clash.
+fn curve_law(
+    law: CurveLaw,
+    attraction: Option<CurveAttraction>,
+    range: Option<f64>,
+) -> Result<AsperityLaw> {
+    match law {
+        CurveLaw::Jkr => {
+            if attraction.is_some() || range.is_some() {
+                return Err(usage(
+                    "--attraction and --attraction-range apply to --adhesion-model dmt only (the default is jkr)"
+                        .to_string(),
+                ));
+            }
+            Ok(AsperityLaw::Jkr)
+        }
+        CurveLaw::Dmt => {
+            let range = range.ok_or_else(|| {
+                usage("--adhesion-model dmt needs --attraction-range D: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)".to_string())
+            })?;
+            if !(range > 0.0 && range.is_finite()) {
+                return Err(usage(format!(
+                    "--attraction-range {range}: must be finite and > 0"
+                )));
+            }
+            Ok(AsperityLaw::Dmt(match attraction {
+                None | Some(CurveAttraction::VanDerWaals) => Attraction::VanDerWaals { range },
+                Some(CurveAttraction::Dugdale) => Attraction::Dugdale { range },
+            }))
+        }
+    }
 }
 
 /// An error that is the user's input, not ours: exit code 2.
@@ -187,7 +245,11 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             to,
             points,
             format,
+            adhesion_model,
+            attraction,
+            attraction_range,
         } => curve(
+            curve_law(adhesion_model, attraction, attraction_range)?,
             theta,
             lambda,
             hardness_coefficient,
@@ -322,6 +384,7 @@ fn usage(msg: String) -> anyhow::Error {
 
 #[allow(clippy::too_many_arguments)]
 fn curve(
+    law: AsperityLaw,
     theta: f64,
     lambda: f64,
     c_h: f64,
@@ -373,7 +436,7 @@ fn curve(
     if coefficients.c_a.is_nan() || coefficients.c_h.is_nan() {
         bail!("coefficients are undefined for θ = {theta}, λ = {lambda}");
     }
-    let m = Model::with_quadrature(coefficients, Quadrature::default());
+    let m = Model::with_law(coefficients, law, Quadrature::default());
     let dc = m.critical_interference();
     let rows: Vec<report::curve::CurveRow> = (0..points)
         .map(|i| {
@@ -390,6 +453,7 @@ fn curve(
                 plastic_area: at.plastic_area().value(),
                 critical_interference: dc,
                 dload_dh: at.dload_dh().value(),
+                noncontact_load: at.noncontact_load().value(),
             }
         })
         .collect();

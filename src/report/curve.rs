@@ -19,16 +19,19 @@ pub struct CurveRow {
     pub critical_interference: f64,
     /// dP̄/dh.
     pub dload_dh: f64,
+    /// The share of P̄ carried by attracted asperities not in contact (DMT; ≤ 0, 0 under JKR).
+    pub noncontact_load: f64,
 }
 
 /// The column names, in order.
-pub const COLUMNS: [&str; 6] = [
+pub const COLUMNS: [&str; 7] = [
     "h",
     "load",
     "area",
     "plastic_area",
     "critical_interference",
     "dload_dh",
+    "noncontact_load",
 ];
 
 /// CSV with a header row.
@@ -43,6 +46,7 @@ pub fn csv(rows: &[CurveRow]) -> String {
             r.plastic_area,
             r.critical_interference,
             r.dload_dh,
+            r.noncontact_load,
         ];
         out.push_str(&cells.map(number).join(","));
         out.push('\n');
