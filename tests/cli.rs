@@ -93,7 +93,7 @@ fn curve_csv_and_json() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "h,load,area,plastic_area,critical_interference,dload_dh"
+        "h,load,area,plastic_area,critical_interference,dload_dh,noncontact_load"
     );
     let first: Vec<f64> = lines
         .next()
