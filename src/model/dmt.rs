@@ -1,4 +1,4 @@
-//! The DMT asperity law of MODEL.md §7: the load of the asperities that are
+//! The DMT asperity law of docs/model.md §7: the load of the asperities that are
 //! attracted but not in contact.
 //!
 //! With d = -Δ ≥ 0 the gap of an asperity (over σ) and u = h - d the argument of
@@ -25,7 +25,7 @@
 //! integrand is then analytic in a Bernstein ellipse of parameter ≥ 3 (order 20:
 //! error ≲ 3^{-40} ≈ 1e-19 of the panel's size). The nodes are placed in d, so
 //! 1 - d/Δ_h and z0 + d are formed without cancellation for every Δ_h in
-//! [1e-6, 1e3] and z0 in [1e-4, 10]: the closed forms in erfc (MODEL.md §7,
+//! [1e-6, 1e3] and z0 in [1e-4, 10]: the closed forms in erfc (docs/model.md §7,
 //! "checks") cancel for small Δ_h and are not used. The weight is taken relative
 //! to its largest value on the window, e^{-u_n²/2} with u_n the u nearest to 0,
 //! as `(u - u_n)(u + u_n)` with `u - u_n = d_n - d` exact: every result is a
@@ -250,7 +250,7 @@ fn quadrature(attraction: Attraction, c_0: f64, h: f64) -> Noncontact {
 mod tests {
     use super::*;
 
-    /// Dugdale with Δ_h → 0: N → -c_0 (Δ_h/2) e^{-h²/2} (MODEL.md §7). Expanding
+    /// Dugdale with Δ_h → 0: N → -c_0 (Δ_h/2) e^{-h²/2} (docs/model.md §7). Expanding
     /// e^{hd - d²/2} under ∫_0^{Δ_h} (1 - d/Δ_h) … dd gives the next orders,
     /// -c_0 (Δ_h/2)(1 + h Δ_h/3 + (h² - 1) Δ_h²/12 + O(h³Δ_h³)), below 1e-13 at Δ_h = 1e-6, h ≤ 40.
     #[test]

@@ -2,10 +2,10 @@
 //!
 //! The evaluator ([`super::Model`]) is built from one [`AsperityLaw`]:
 //!
-//! * [`AsperityLaw::Jkr`] — MODEL.md §3: JKR elastic asperities on the loading
+//! * [`AsperityLaw::Jkr`] — docs/model.md §3: JKR elastic asperities on the loading
 //!   branch, plastic junctions beyond Δc; surface forces act only inside contacts.
 //!   Its integrals live in `integrals.rs` (elastic quadrature in s = Δ1^{1/4}).
-//! * [`AsperityLaw::Dmt`] — MODEL.md §7: Hertz contact with the DMT adhesive
+//! * [`AsperityLaw::Dmt`] — docs/model.md §7: Hertz contact with the DMT adhesive
 //!   offset `-c_0`, Δc = c_h², and attraction of the asperities that are *not* in
 //!   contact, by a Dugdale stress of range Δ_h or by van der Waals forces with
 //!   equilibrium distance z0. Its non-contact term lives in `dmt.rs`.
@@ -22,10 +22,10 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
 #[serde(rename_all = "lowercase")]
 pub enum AdhesionModel {
-    /// Johnson–Kendall–Roberts asperities (MODEL.md §3), for φ0 > 3.
+    /// Johnson–Kendall–Roberts asperities (docs/model.md §3), for φ0 > 3.
     #[default]
     Jkr,
-    /// Derjaguin–Muller–Toporov asperities with non-contact attraction (MODEL.md §7), for φ0 < 0.3.
+    /// Derjaguin–Muller–Toporov asperities with non-contact attraction (docs/model.md §7), for φ0 < 0.3.
     Dmt,
 }
 
@@ -124,10 +124,10 @@ impl Attraction {
 /// The asperity law a [`super::Model`] is built from.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum AsperityLaw {
-    /// MODEL.md §3 (the paper's law).
+    /// docs/model.md §3 (the paper's law).
     #[default]
     Jkr,
-    /// MODEL.md §7.
+    /// docs/model.md §7.
     Dmt(Attraction),
 }
 

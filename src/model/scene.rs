@@ -58,7 +58,7 @@ pub struct Scene {
     /// What the designer judges the contact by: allowed wear, cycles, the spring that
     /// must free the part, the interface's shear strength (all optional).
     pub requirements: Requirements,
-    /// The asperity law (MODEL.md §3 JKR, §7 DMT). Reported at the top level of
+    /// The asperity law (docs/model.md §3 JKR, §7 DMT). Reported at the top level of
     /// an evaluation, not inside the scene.
     #[serde(skip)]
     pub adhesion_model: AdhesionModel,

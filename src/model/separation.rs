@@ -14,7 +14,7 @@
 //! adhesion) and then rises to 0⁻. Every load then has one root on the falling
 //! branch, and no scan is needed.
 //!
-//! **DMT (MODEL.md §7).** Write P̄'(h) = -∫ p'(Δ) φ̄(Δ) dΔ with p' taken in the sense
+//! **DMT (docs/model.md §7).** Write P̄'(h) = -∫ p'(Δ) φ̄(Δ) dΔ with p' taken in the sense
 //! of distributions (the upward jump J = c_h³ > 0 at Δc is a positive point mass).
 //! The per-asperity load falls on Δ < 0 (p' ≤ 0: the attraction grows as the gap
 //! closes, for van der Waals and Dugdale alike) and rises on Δ ≥ 0 (p' ≥ 0). Then
@@ -28,7 +28,7 @@
 //! fact holds**: P̄ falls from +∞ to one minimum (the pull-off) and rises to 0⁻
 //! (like -c_0 √(2π) z0²/h² under van der Waals, a power law). **So do the
 //! single-root facts**: a compressive load has exactly one root; a tensile load
-//! above the minimum has one root on the falling branch (the one MODEL.md §4
+//! above the minimum has one root on the falling branch (the one docs/model.md §4
 //! chooses) and one on the rising branch; below it, the surfaces separate.
 //! tests/dmt.rs checks both on a grid of h for both attractions. The searches
 //! below are the J ≥ 0 paths, with the non-contact share carried at its own scale. When J < 0 (strong adhesion, soft asperities)
