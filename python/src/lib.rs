@@ -13,7 +13,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 
-use wearopt::model::{self, Coefficients, EvaluationOptions, Model, Quadrature};
+use wearopt::model::{
+    self, AsperityLaw, Attraction, Coefficients, EvaluationOptions, Model, Quadrature,
+};
 use wearopt::optimize::materials::rank_materials;
 use wearopt::optimize::pareto::{self, Silent};
 use wearopt::optimize::Study;
@@ -195,19 +197,62 @@ fn coefficients(theta: f64, lambda: f64, c_h: f64) -> Result<Coefficients, Strin
     Ok(c)
 }
 
+/// The asperity law of `curve`, with the command line's messages.
+fn curve_law(
+    adhesion_model: &str,
+    attraction: Option<&str>,
+    range: Option<f64>,
+) -> Result<AsperityLaw, String> {
+    match adhesion_model {
+        "jkr" => {
+            if attraction.is_some() || range.is_some() {
+                return Err("--attraction and --attraction-range apply to --adhesion-model dmt only (the default is jkr)".to_string());
+            }
+            Ok(AsperityLaw::Jkr)
+        }
+        "dmt" => {
+            let range = range.ok_or_else(|| "--adhesion-model dmt needs --attraction-range D: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)".to_string())?;
+            if !(range > 0.0 && range.is_finite()) {
+                return Err(format!(
+                    "--attraction-range {range}: must be finite and > 0"
+                ));
+            }
+            Ok(AsperityLaw::Dmt(match attraction {
+                None | Some("van_der_waals") => Attraction::VanDerWaals { range },
+                Some("dugdale") => Attraction::Dugdale { range },
+                Some(other) => {
+                    return Err(format!(
+                        "--attraction {other:?}: expected \"van_der_waals\" or \"dugdale\""
+                    ))
+                }
+            }))
+        }
+        other => Err(format!(
+            "--adhesion-model {other:?}: expected \"jkr\" or \"dmt\""
+        )),
+    }
+}
+
 /// Elements computed per parallel task (fixed: results never depend on threads).
 const CURVE_CHUNK: usize = 2048;
 
 /// The columns of `wearopt curve` at each (θ, λ, c_h, h) of four equally long
 /// arrays (the Python side broadcasts them).
 #[pyfunction]
+#[pyo3(signature = (theta, lam, hardness_coefficient, h, adhesion_model="jkr".to_string(), attraction=None, attraction_range=None))]
+#[allow(clippy::too_many_arguments)]
 fn curve_arrays<'py>(
     py: Python<'py>,
     theta: PyReadonlyArray1<'py, f64>,
     lam: PyReadonlyArray1<'py, f64>,
     hardness_coefficient: PyReadonlyArray1<'py, f64>,
     h: PyReadonlyArray1<'py, f64>,
+    adhesion_model: String,
+    attraction: Option<String>,
+    attraction_range: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let law =
+        curve_law(&adhesion_model, attraction.as_deref(), attraction_range).map_err(value_error)?;
     let slice = |a: &PyReadonlyArray1<'py, f64>| -> PyResult<Vec<f64>> {
         Ok(a.as_slice()
             .map_err(|e| value_error(e.to_string()))?
@@ -225,7 +270,7 @@ fn curve_arrays<'py>(
             "theta, lam, hardness_coefficient and h must have one length",
         ));
     }
-    let columns = py.detach(|| -> Result<[Vec<f64>; 5], String> {
+    let columns = py.detach(|| -> Result<[Vec<f64>; 6], String> {
         for i in 0..n {
             check_curve_input(theta[i], lam[i], c_h[i], h[i]).map_err(|e| {
                 if n > 1 {
@@ -235,19 +280,20 @@ fn curve_arrays<'py>(
                 }
             })?;
         }
-        let chunks: Vec<Result<Vec<[f64; 5]>, String>> = (0..n)
+        let chunks: Vec<Result<Vec<[f64; 6]>, String>> = (0..n)
             .collect::<Vec<_>>()
             .par_chunks(CURVE_CHUNK)
-            .map(|idx| {
+            .map(|idx| -> Result<Vec<[f64; 6]>, String> {
                 let mut model: Option<((f64, f64, f64), Model, f64)> = None;
                 idx.iter()
                     .map(|&i| {
                         let key = (theta[i], lam[i], c_h[i]);
                         let fresh = !matches!(&model, Some((k, _, _)) if *k == key);
                         if fresh {
-                            let m = Model::with_quadrature(
+                            let m = Model::with_law(
                                 coefficients(key.0, key.1, key.2)
                                     .map_err(|e| format!("{e} (element {i})"))?,
+                                law,
                                 Quadrature::default(),
                             );
                             let dc = m.critical_interference();
@@ -261,12 +307,13 @@ fn curve_arrays<'py>(
                             at.plastic_area().value(),
                             *dc,
                             at.dload_dh().value(),
+                            at.noncontact_load().value(),
                         ])
                     })
                     .collect()
             })
             .collect();
-        let mut cols: [Vec<f64>; 5] = Default::default();
+        let mut cols: [Vec<f64>; 6] = Default::default();
         for c in &mut cols {
             c.reserve(n);
         }
@@ -279,7 +326,7 @@ fn curve_arrays<'py>(
         }
         Ok(cols)
     });
-    let [load, area, plastic_area, critical_interference, dload_dh] =
+    let [load, area, plastic_area, critical_interference, dload_dh, noncontact_load] =
         columns.map_err(value_error)?;
     let out = PyDict::new(py);
     out.set_item("h", h.into_pyarray(py))?;
@@ -291,6 +338,7 @@ fn curve_arrays<'py>(
         critical_interference.into_pyarray(py),
     )?;
     out.set_item("dload_dh", dload_dh.into_pyarray(py))?;
+    out.set_item("noncontact_load", noncontact_load.into_pyarray(py))?;
     Ok(out)
 }
 

@@ -191,9 +191,21 @@ def test_curve_bad_input_has_the_cli_message(args, cli_args):
         wearopt.curve(*(np.array([good, bad]) for good, bad in zip((1.0, 1.0, 0.0), args)))
 
 
+def test_curve_dmt_equals_cli_columns():
+    expected = _cli_curve("10", "1", -1.0, 3.0, 9, ("--adhesion-model", "dmt", "--attraction",
+                                                   "dugdale", "--attraction-range", "0.1"))
+    h = -1.0 + 4.0 * np.arange(9) / 8
+    got = wearopt.curve(10.0, 1.0, h, adhesion_model="dmt", attraction="dugdale",
+                        attraction_range=0.1)
+    for k in expected:
+        np.testing.assert_array_equal(got[k], expected[k], err_msg=k)
+
+
 def test_curve_other_laws_are_refused_plainly():
-    with pytest.raises(ValueError, match="adhesion_model"):
+    with pytest.raises(ValueError, match="adhesion-model"):
         wearopt.curve(1.0, 1.0, 0.0, adhesion_model="magic")
+    with pytest.raises(ValueError, match="needs --attraction-range"):
+        wearopt.curve(1.0, 1.0, 0.0, adhesion_model="dmt")
 
 
 BAD = sorted((ROOT / "tests" / "bad_input").glob("*.toml"))

@@ -153,8 +153,11 @@ def curve(
 ) -> Dict[str, np.ndarray]:
     """The non-dimensional model (the columns of ``wearopt curve``) at every
     (θ, λ, h) of the broadcast arrays: ``h``, ``load`` (P̄), ``area`` (Ā),
-    ``plastic_area``, ``critical_interference`` (Δc) and ``dload_dh``, each an
-    array of the broadcast shape. ``theta`` or ``lam`` may be ``inf`` (no
+    ``plastic_area``, ``critical_interference`` (Δc), ``dload_dh`` and
+    ``noncontact_load``, each an array of the broadcast shape.
+    ``adhesion_model="dmt"`` with ``attraction`` ("van_der_waals" or
+    "dugdale") and ``attraction_range`` (z0 = Z0/σ or h0/σ) is
+    ``wearopt curve --adhesion-model dmt``. ``theta`` or ``lam`` may be ``inf`` (no
     adhesion, no plasticity); with ``theta = inf`` plasticity comes from
     ``hardness_coefficient`` c_h. Runs in parallel without the GIL.
 
@@ -165,14 +168,8 @@ def curve(
     >>> wearopt.curve([[1.0], [10.0]], 1.0, [0.0, 1.0, 2.0])["area"].shape
     (2, 3)
     """
-    if adhesion_model != "jkr":
-        raise ValueError(
-            f"adhesion_model {adhesion_model!r}: this build has the JKR asperity law only; expected \"jkr\""
-        )
-    if attraction is not None or attraction_range is not None:
-        raise ValueError(
-            "attraction and attraction_range belong to other asperity laws: leave them None with adhesion_model=\"jkr\""
-        )
+    if attraction_range is not None:
+        attraction_range = float(attraction_range)
     arrays = np.broadcast_arrays(
         _float_array("theta", theta),
         _float_array("lam", lam),
@@ -181,7 +178,7 @@ def curve(
     )
     shape = arrays[0].shape
     flat = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
-    out = _wearopt.curve_arrays(*flat)
+    out = _wearopt.curve_arrays(*flat, adhesion_model, attraction, attraction_range)
     return {k: v.reshape(shape) for k, v in out.items()}
 
 
