@@ -13,7 +13,7 @@
 
 mod common;
 
-use common::{num, table};
+use common::{num, rel, table};
 use wearopt::model::{AsperityLaw, Attraction, Coefficients, Model, Quadrature};
 
 const TOLERANCE: f64 = 1e-12;
@@ -37,14 +37,6 @@ fn model_of(row: &std::collections::HashMap<String, String>) -> Model {
         other => panic!("attraction {other}"),
     };
     Model::with_law(c, AsperityLaw::Dmt(attraction), Quadrature::default())
-}
-
-fn rel(got: f64, want: f64, scale: f64) -> f64 {
-    if got == want {
-        0.0
-    } else {
-        (got - want).abs() / scale.max(want.abs()).max(f64::MIN_POSITIVE)
-    }
 }
 
 #[test]

@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::{num, table};
+use common::{num, rel, table};
 use wearopt::model::{landscape, solve_separation, Coefficients, Model, SeparationOutcome};
 
 const TOLERANCE: f64 = 1e-12;
@@ -23,14 +23,6 @@ fn model_of(row: &std::collections::HashMap<String, String>) -> Model {
         _ => Coefficients::new(num(&row["c_a"]), num(&row["c_h"])),
     };
     Model::new(c)
-}
-
-fn rel(got: f64, want: f64, scale: f64) -> f64 {
-    if got == want {
-        0.0
-    } else {
-        (got - want).abs() / scale.max(want.abs()).max(f64::MIN_POSITIVE)
-    }
 }
 
 #[test]

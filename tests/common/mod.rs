@@ -37,6 +37,16 @@ pub fn table(name: &str) -> Vec<HashMap<String, String>> {
 }
 
 /// A table cell as f64: "inf" parses, and "1e-26467" underflows to 0, as wanted.
+/// Relative error of `got` against `want`, measured against `max(scale, |want|)`
+/// (exact agreement is 0, whatever the magnitudes).
+pub fn rel(got: f64, want: f64, scale: f64) -> f64 {
+    if got == want {
+        0.0
+    } else {
+        (got - want).abs() / scale.max(want.abs()).max(f64::MIN_POSITIVE)
+    }
+}
+
 pub fn num(s: &str) -> f64 {
     s.parse().unwrap_or_else(|_| panic!("not a number: {s}"))
 }
