@@ -7,7 +7,8 @@ use wearopt::optimize::materials::{
     rank_materials, MaterialOutcome, MaterialRanking, MaterialStatus,
 };
 use wearopt::optimize::{optimize, OptimizationStatus, Study};
-use wearopt::problem::{catalogue, DesignQuantity, DesignVariable, Problem};
+use wearopt::optimize::{DesignQuantity, DesignVariable};
+use wearopt::problem::{catalogue, Problem};
 
 const FILE: &str = "problems/materials-study.toml";
 

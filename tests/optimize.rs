@@ -8,12 +8,10 @@ use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 use wearopt::model::Scene;
 use wearopt::optimize::{
-    optimize, DesignSpace, OptimizationStatus, Optimum, Point, Study, StudyFunctions,
+    optimize, Constraint, ConstraintQuantity, DesignQuantity, DesignSpace, DesignVariable,
+    Objective, OptimizationStatus, OptimizerSettings, Optimum, Point, Study, StudyFunctions,
 };
-use wearopt::problem::{
-    self, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective,
-    OptimizerSettings, Problem,
-};
+use wearopt::problem::{self, Problem};
 
 fn load(name: &str) -> Problem {
     problem::load(Path::new(&format!("problems/{name}.toml"))).expect("shipped problem loads")

@@ -6,7 +6,8 @@ use std::path::Path;
 use assert_cmd::Command;
 use wearopt::model::{evaluate, EvaluationOptions, Status};
 use wearopt::optimize::{optimize, OptimizationStatus, Optimum, Study};
-use wearopt::problem::{ConstraintQuantity, OptimizerSettings, Problem};
+use wearopt::optimize::{ConstraintQuantity, OptimizerSettings};
+use wearopt::problem::Problem;
 
 fn load(name: &str) -> Problem {
     wearopt::problem::load(Path::new(&format!(

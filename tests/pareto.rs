@@ -12,11 +12,11 @@ use assert_cmd::Command;
 use common::parse_xml;
 use wearopt::model::{evaluate, EvaluationOptions, Scene, Status};
 use wearopt::optimize::pareto::{pareto, Front, FrontStatus, Silent, PULL_OFF_FLOOR};
-use wearopt::optimize::{optimize, OptimizationStatus, Study};
-use wearopt::problem::{
-    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, ParetoDirection, ParetoSpec,
-    Problem,
+use wearopt::optimize::{
+    optimize, AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, OptimizationStatus,
+    ParetoDirection, ParetoSpec, Study,
 };
+use wearopt::problem::Problem;
 use wearopt::report::pareto as report;
 
 fn wearopt() -> Command {
@@ -159,7 +159,7 @@ fn micro_gear_low_has_no_trade_off_and_ends_at_the_least_wear_design() {
     );
     // ... and the least pull-off the study can reach is below the floor too.
     let least_adhesion = optimize(&Study {
-        objective: Some(wearopt::problem::Objective::PullOffForce),
+        objective: Some(wearopt::optimize::Objective::PullOffForce),
         ..s.clone()
     })
     .unwrap();

@@ -6,7 +6,8 @@ use std::path::Path;
 
 use wearopt::optimize::pareto::{pareto, Silent};
 use wearopt::optimize::{optimize, OptimizationStatus, Study};
-use wearopt::problem::{Constraint, ConstraintQuantity, OptimizerSettings, Problem};
+use wearopt::optimize::{Constraint, ConstraintQuantity, OptimizerSettings};
+use wearopt::problem::Problem;
 
 fn load(name: &str) -> Problem {
     wearopt::problem::load(Path::new(&format!(

@@ -5,10 +5,11 @@
 use std::path::{Path, PathBuf};
 
 use wearopt::model::WearArea;
-use wearopt::problem::{
-    self, AdhesionMeasure, ConstraintQuantity, DesignQuantity, Objective, OptimizerSettings,
-    ParetoDirection, ProblemError,
+use wearopt::optimize::{
+    AdhesionMeasure, ConstraintQuantity, DesignQuantity, Objective, OptimizerSettings,
+    ParetoDirection,
 };
+use wearopt::problem::{self, ProblemError};
 
 fn crate_path(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join(rel)

@@ -18,8 +18,9 @@ use wearopt::model::{
 };
 use wearopt::optimize::materials::rank_materials;
 use wearopt::optimize::pareto::{self, Silent};
+use wearopt::optimize::ParetoSpec;
 use wearopt::optimize::Study;
-use wearopt::problem::{catalogue, ParetoSpec, Problem};
+use wearopt::problem::{catalogue, Problem};
 use wearopt::report;
 use wearopt::sweep::{Method, Shard, Sweep, SweepError};
 

@@ -12,8 +12,8 @@ use anyhow::{Context, Result};
 use clap::ValueEnum;
 
 use wearopt::optimize::pareto::{self, FrontPoint, FrontStatus, Observer};
+use wearopt::optimize::ParetoSpec;
 use wearopt::optimize::Study;
-use wearopt::problem::ParetoSpec;
 use wearopt::report::pareto as out;
 
 use super::usage;

@@ -9,7 +9,7 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 
-use wearopt::problem::ParetoDirection;
+use wearopt::optimize::ParetoDirection;
 use wearopt::report::sweep::{self as out, Format, MergeError};
 use wearopt::sweep::{pareto_optimal, Method, Shard, Sweep, SweepRow};
 

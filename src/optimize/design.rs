@@ -1,8 +1,8 @@
 //! The design space: the variables a study may move, searched in [0, 1]^n with
 //! logarithmic scaling, so that 1e-9 m and 1e11 Pa look alike to the solver.
 
+use super::study::{DesignQuantity, DesignVariable};
 use crate::model::Scene;
-use crate::problem::{DesignQuantity, DesignVariable};
 
 /// One design variable and its map from the unit interval.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,8 +1,8 @@
 //! The study as functions of a unit design point: the objective (in ln) and
 //! the constraint rows `g_j(x) ≤ 0`, scaled so that all are O(1).
 
+use super::study::{Constraint, ConstraintQuantity, Objective};
 use crate::model::{evaluate_from, Evaluation, EvaluationOptions, Quadrature, SearchHints, Status};
-use crate::problem::{Constraint, ConstraintQuantity, Objective};
 
 use super::design::DesignSpace;
 use super::program::{NonlinearProgram, Values};

@@ -31,11 +31,12 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::functions::{objective_value, quantity_value};
+use super::study::{Constraint, DesignQuantity, DesignVariable};
 use super::{OptimizationStatus, OptimizeError, Optimum, Study};
 use crate::model::{evaluate, Evaluation, EvaluationOptions, Scene, Status};
 use crate::problem::catalogue::Material;
 use crate::problem::units::{format_quantity, Dimension};
-use crate::problem::{Constraint, DesignQuantity, DesignVariable};
+use crate::problem::Dimensioned;
 
 /// Relative slack when checking a constraint at a fixed design.
 const CONSTRAINT_SLACK: f64 = 1e-9;

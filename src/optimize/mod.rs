@@ -2,6 +2,8 @@
 //! the predicted wear rate (or another objective) under engineering limits, with
 //! the wear model as its inner evaluator.
 //!
+//! * [`study`]: a design study's vocabulary (variables, objective, constraints,
+//!   settings), which the problem-file stage builds.
 //! * [`program`]: the solver's vocabulary, [`NonlinearProgram`].
 //! * [`sqp`]: [`minimize`], a trust-region SQP for any such program (argmin `Solver`).
 //! * [`qp`]: its clarabel subproblem; [`multipliers`]: KKT residual and multipliers.
@@ -20,6 +22,7 @@ pub mod pareto;
 pub mod program;
 pub mod qp;
 pub mod sqp;
+pub mod study;
 
 use std::time::{Duration, Instant};
 
@@ -29,12 +32,16 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::{Evaluation, Scene};
-use crate::problem::{Constraint, DesignVariable, Objective, OptimizerSettings};
 
 pub use design::DesignSpace;
 pub use functions::{Point, Row, Side, StudyFunctions};
 pub use program::{NonlinearProgram, Values};
 pub use sqp::{minimize, minimize_observed, SqpResult, SqpSettings, SqpState, SqpStatus, TraceRow};
+pub use study::{
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
+    Objective, OptimizerSettings, ParetoDirection, ParetoSpec, SettingsError,
+    DEFAULT_RELEASE_MARGIN,
+};
 
 /// Rows at or below this (in their scaled units: ln rows are relative) count
 /// as met in a study.

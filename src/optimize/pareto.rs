@@ -49,12 +49,12 @@ use std::time::Instant;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use super::{optimize, OptimizationStatus, OptimizeError, Study};
-use crate::model::{self, Evaluation, EvaluationOptions, Quadrature, Scene, Status};
-use crate::problem::{
+use super::study::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective,
     OptimizerSettings, ParetoDirection, ParetoSpec,
 };
+use super::{optimize, OptimizationStatus, OptimizeError, Study};
+use crate::model::{self, Evaluation, EvaluationOptions, Quadrature, Scene, Status};
 
 /// A pull-off force below this (N) counts as none: a femtonewton is three
 /// decades under the thermal-noise force of an AFM cantilever, and far under

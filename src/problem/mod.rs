@@ -60,16 +60,18 @@ use serde::Serialize;
 use toml::Spanned;
 
 pub use error::{edit_distance, suggest, Location, ProblemError};
-pub use study::{
-    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
-    Objective, OptimizerSettings, ParetoDirection, ParetoSpec, SettingsError, Study,
-};
+pub use study::{Dimensioned, Study};
 pub use topography::ScanSource;
 
 use crate::model::{AdhesionModel, AttractionKind, Scene, WearArea};
+use crate::optimize::{
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
+    Objective, OptimizerSettings, ParetoDirection, ParetoSpec, DEFAULT_RELEASE_MARGIN,
+};
 use catalogue::Material;
 use error::line_of;
 use raw::{RawBody, RawBound, RawInteger, RawProblem, RawQuantity};
+use study::DesignKeys;
 use units::{format_number, format_quantity, parse_quantity, Dimension};
 
 /// Z0 when the file does not give `interface.interatomic_distance`: 0.3 nm.
@@ -1053,7 +1055,7 @@ impl Reader<'_> {
         {
             study.constraints.push(Constraint {
                 quantity: ConstraintQuantity::ReleaseMargin,
-                min: Some(study::DEFAULT_RELEASE_MARGIN),
+                min: Some(DEFAULT_RELEASE_MARGIN),
                 max: None,
             });
         }

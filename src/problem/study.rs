@@ -1,86 +1,25 @@
-//! What a problem asks beyond evaluating its scene: design variables, an objective,
-//! constraints, a Pareto front and the optimiser's settings.
-
-use std::time::Duration;
+//! What a problem asks beyond evaluating its scene: the file stage's side of the
+//! study vocabulary. The types themselves ([`DesignVariable`], [`Objective`],
+//! [`Constraint`], [`ParetoSpec`], [`OptimizerSettings`]) belong to
+//! [`crate::optimize`]; this stage gathers them into a [`Study`] and knows how
+//! files write them (units, scene keys, example bounds).
 
 use serde::Serialize;
 
 use super::units::Dimension;
-use crate::model::Scene;
+use crate::optimize::{
+    Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective, OptimizerSettings,
+    ParetoSpec,
+};
 
-/// A closed set of names as written in problem files.
-pub trait Named: Copy + Sized + 'static {
-    /// Every value, in documentation order.
-    const ALL: &'static [Self];
-    /// The name as written in a problem file.
-    fn as_str(self) -> &'static str;
-    /// The value written as `name` (exact match).
-    fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.iter().copied().find(|v| v.as_str() == name)
-    }
-    /// Every name, for messages.
-    fn names() -> Vec<&'static str> {
-        Self::ALL.iter().map(|v| v.as_str()).collect()
-    }
-}
-
-macro_rules! named_enum {
-    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident => $text:literal,)+ }) => {
-        $(#[$meta])*
-        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
-        #[serde(rename_all = "snake_case")]
-        pub enum $name {
-            $($(#[$vmeta])* $variant,)+
-        }
-        impl Named for $name {
-            const ALL: &'static [Self] = &[$($name::$variant,)+];
-            fn as_str(self) -> &'static str {
-                match self {
-                    $($name::$variant => $text,)+
-                }
-            }
-        }
-        impl $name {
-            /// The name as written in a problem file.
-            pub fn as_str(self) -> &'static str {
-                <Self as Named>::as_str(self)
-            }
-        }
-        impl std::fmt::Display for $name {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(self.as_str())
-            }
-        }
-    };
-}
-
-named_enum! {
-    /// A scene quantity the optimiser may move (a key of `[design]`).
-    DesignQuantity {
-        /// Young's modulus (Pa) of body a, and of body b too when both share it.
-        YoungsModulus => "youngs_modulus",
-        /// E1, Young's modulus of body a alone (Pa).
-        YoungsModulusA => "youngs_modulus_a",
-        /// E2, Young's modulus of the counterface b alone (Pa).
-        YoungsModulusB => "youngs_modulus_b",
-        /// ν1, Poisson ratio of body a.
-        PoissonRatio => "poisson_ratio",
-        /// H, hardness of the softer body (Pa).
-        Hardness => "hardness",
-        /// γ, work of adhesion (J/m²).
-        WorkOfAdhesion => "work_of_adhesion",
-        /// σ, standard deviation of asperity heights (m).
-        Sigma => "sigma",
-        /// R, asperity tip radius (m).
-        AsperityRadius => "asperity_radius",
-        /// N, asperities per unit area (1/m²).
-        AsperityDensity => "asperity_density",
-    }
-}
-
-impl DesignQuantity {
+/// The dimension a quantity's values and bounds are written in.
+pub trait Dimensioned {
     /// The dimension of its values and bounds.
-    pub fn dimension(self) -> Dimension {
+    fn dimension(self) -> Dimension;
+}
+
+impl Dimensioned for DesignQuantity {
+    fn dimension(self) -> Dimension {
         match self {
             DesignQuantity::YoungsModulus
             | DesignQuantity::YoungsModulusA
@@ -92,9 +31,32 @@ impl DesignQuantity {
             DesignQuantity::AsperityDensity => Dimension::InverseArea,
         }
     }
+}
 
+impl Dimensioned for ConstraintQuantity {
+    fn dimension(self) -> Dimension {
+        match self {
+            ConstraintQuantity::PullOffForce | ConstraintQuantity::FrictionForce => {
+                Dimension::Force
+            }
+            ConstraintQuantity::MeanRealPressure => Dimension::Pressure,
+            ConstraintQuantity::Separation => Dimension::Length,
+            ConstraintQuantity::WearRate => Dimension::WearRate,
+            _ => Dimension::Dimensionless,
+        }
+    }
+}
+
+/// How a problem file and its messages name a design variable's scene value.
+pub(crate) trait DesignKeys {
     /// The dotted key of the scene value it moves: `roughness.sigma`.
-    pub fn scene_key(self) -> &'static str {
+    fn scene_key(self) -> &'static str;
+    /// Example bounds as written in a file, for messages.
+    fn example_bounds(self) -> &'static str;
+}
+
+impl DesignKeys for DesignQuantity {
+    fn scene_key(self) -> &'static str {
         match self {
             DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
                 "bodies.a.youngs_modulus"
@@ -109,8 +71,7 @@ impl DesignQuantity {
         }
     }
 
-    /// Example bounds as written in a file, for messages.
-    pub fn example_bounds(self) -> &'static str {
+    fn example_bounds(self) -> &'static str {
         match self {
             DesignQuantity::YoungsModulus
             | DesignQuantity::YoungsModulusA
@@ -122,286 +83,6 @@ impl DesignQuantity {
             DesignQuantity::AsperityRadius => "{ min = \"0.2 um\", max = \"10 um\" }",
             DesignQuantity::AsperityDensity => "{ min = \"1 um^-2\", max = \"100 um^-2\" }",
         }
-    }
-
-    /// Its current value in `scene` (SI).
-    pub fn get(self, scene: &Scene) -> f64 {
-        match self {
-            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
-                scene.youngs_modulus_a
-            }
-            DesignQuantity::YoungsModulusB => scene.youngs_modulus_b,
-            DesignQuantity::PoissonRatio => scene.poisson_ratio_a,
-            DesignQuantity::Hardness => scene.hardness,
-            DesignQuantity::WorkOfAdhesion => scene.work_of_adhesion,
-            DesignQuantity::Sigma => scene.sigma,
-            DesignQuantity::AsperityRadius => scene.asperity_radius,
-            DesignQuantity::AsperityDensity => scene.asperity_density,
-        }
-    }
-
-    /// Sets its value in `scene` (SI). The caller keeps it within the variable's bounds.
-    pub fn set(self, scene: &mut Scene, value: f64) {
-        let field = match self {
-            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
-                &mut scene.youngs_modulus_a
-            }
-            DesignQuantity::YoungsModulusB => &mut scene.youngs_modulus_b,
-            DesignQuantity::PoissonRatio => &mut scene.poisson_ratio_a,
-            DesignQuantity::Hardness => &mut scene.hardness,
-            DesignQuantity::WorkOfAdhesion => &mut scene.work_of_adhesion,
-            DesignQuantity::Sigma => &mut scene.sigma,
-            DesignQuantity::AsperityRadius => &mut scene.asperity_radius,
-            DesignQuantity::AsperityDensity => &mut scene.asperity_density,
-        };
-        *field = value;
-    }
-}
-
-/// One variable the optimiser may move, within `[min, max]` (SI units).
-///
-/// `min < max`, both finite and in the quantity's valid range, and the scene's value
-/// lies inside. Not every range is positive: `poisson_ratio` may go below 0 and
-/// `work_of_adhesion` may start at 0, so an optimiser that scales variables
-/// logarithmically must check `min > 0` itself.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct DesignVariable {
-    /// Which scene quantity.
-    pub name: DesignQuantity,
-    /// Lower bound (SI).
-    pub min: f64,
-    /// Upper bound (SI).
-    pub max: f64,
-}
-
-named_enum! {
-    /// What `[objective] minimize = …` asks to make small.
-    Objective {
-        /// Wear volume per sliding distance, k·A_r (m³/m = m²).
-        WearRate => "wear_rate",
-        /// Wear volume k·A_r·L (m³).
-        WearVolume => "wear_volume",
-        /// Real contact area A_r (m²).
-        RealArea => "real_area",
-        /// Pull-off force of the rough surface (N).
-        PullOffForce => "pull_off_force",
-        /// Bowden–Tabor friction τ·A_r (N); needs `interface.shear_strength`.
-        FrictionForce => "friction_force",
-        /// Friction force over load; needs `interface.shear_strength`.
-        FrictionCoefficient => "friction_coefficient",
-    }
-}
-
-named_enum! {
-    /// A quantity a `[[constraint]]` bounds.
-    ConstraintQuantity {
-        /// Pull-off force of the rough surface (N).
-        PullOffForce => "pull_off_force",
-        /// ψ = (E/H)(σ/R)^{1/2}.
-        PlasticityIndex => "plasticity_index",
-        /// θ = K σ^{3/2} R^{1/2} / (γ R).
-        ElasticAdhesionIndex => "elastic_adhesion_index",
-        /// λ = π² R H⁴ σ / (18 K² γ²).
-        PlasticAdhesionIndex => "plastic_adhesion_index",
-        /// φ0 = (R γ² / (E² Z0³))^{1/3}.
-        TaborParameter => "tabor_parameter",
-        /// H/E.
-        HardnessToModulus => "hardness_to_modulus",
-        /// A_r / A_n.
-        RealAreaFraction => "real_area_fraction",
-        /// A_rp / A_n.
-        PlasticAreaFraction => "plastic_area_fraction",
-        /// W / A_r (Pa).
-        MeanRealPressure => "mean_real_pressure",
-        /// Number of asperities in contact.
-        ContactCount => "contact_count",
-        /// d, mean-plane separation (m).
-        Separation => "separation",
-        /// k·A_r (m³/m = m²).
-        WearRate => "wear_rate",
-        /// Pull-off force over `contact.restoring_force`: ≥ 1 sticks.
-        StictionMargin => "stiction_margin",
-        /// Bowden–Tabor friction τ·A_r (N); needs `interface.shear_strength`.
-        FrictionForce => "friction_force",
-        /// Friction force over load; needs `interface.shear_strength`.
-        FrictionCoefficient => "friction_coefficient",
-        /// Pull-off force over |load|, for a tensile load only: how far the
-        /// contact is from snapping apart (1 = at the pull-off).
-        ReleaseMargin => "release_margin",
-    }
-}
-
-/// The `release_margin` minimum added to every study under a tensile load that
-/// does not bound it itself: a design holding with less than 20 % to spare is one
-/// small disturbance (a shock, a drift of the load) from releasing.
-pub const DEFAULT_RELEASE_MARGIN: f64 = 1.2;
-
-impl ConstraintQuantity {
-    /// The dimension of its bounds.
-    pub fn dimension(self) -> Dimension {
-        match self {
-            ConstraintQuantity::PullOffForce | ConstraintQuantity::FrictionForce => {
-                Dimension::Force
-            }
-            ConstraintQuantity::MeanRealPressure => Dimension::Pressure,
-            ConstraintQuantity::Separation => Dimension::Length,
-            ConstraintQuantity::WearRate => Dimension::WearRate,
-            _ => Dimension::Dimensionless,
-        }
-    }
-
-    /// The values the quantity can take, `(lowest, highest)`; bounds outside can never
-    /// be met and are refused.
-    pub fn natural_range(self) -> (f64, f64) {
-        match self {
-            ConstraintQuantity::PullOffForce | ConstraintQuantity::Separation => {
-                (f64::NEG_INFINITY, f64::INFINITY)
-            }
-            ConstraintQuantity::RealAreaFraction | ConstraintQuantity::PlasticAreaFraction => {
-                (0.0, 1.0)
-            }
-            _ => (0.0, f64::INFINITY),
-        }
-    }
-}
-
-/// One `[[constraint]]`: `min <= quantity <= max` (SI); at least one bound is present
-/// and `min < max` when both are.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Constraint {
-    /// What is bounded.
-    pub quantity: ConstraintQuantity,
-    /// Lower bound (SI), if any.
-    pub min: Option<f64>,
-    /// Upper bound (SI), if any.
-    pub max: Option<f64>,
-}
-
-named_enum! {
-    /// The adhesion measure on the second axis of a Pareto front.
-    AdhesionMeasure {
-        /// Pull-off force of the rough surface (N).
-        PullOffForce => "pull_off_force",
-        /// γ (J/m²); needs `work_of_adhesion` among the design variables.
-        WorkOfAdhesion => "work_of_adhesion",
-        /// θ, the elastic adhesion index.
-        ElasticAdhesionIndex => "elastic_adhesion_index",
-    }
-}
-
-named_enum! {
-    /// Which end of the adhesion measure the front is to favour.
-    ParetoDirection {
-        /// Small adhesion is good (the usual MEMS goal: no stiction).
-        Low => "low",
-        /// Large adhesion is good (e.g. a switch that must hold closed).
-        High => "high",
-    }
-}
-
-/// `[pareto]`: trade the objective against an adhesion measure.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct ParetoSpec {
-    /// The adhesion measure.
-    pub adhesion: AdhesionMeasure,
-    /// Number of points on the front, 2..=200.
-    pub points: usize,
-    /// Which end of the adhesion measure is preferred.
-    pub direction: ParetoDirection,
-}
-
-impl ParetoSpec {
-    /// Fewest points a front may have.
-    pub const MIN_POINTS: usize = 2;
-    /// Most points a front may have (a sweep refuses nonsense up front).
-    pub const MAX_POINTS: usize = 200;
-    /// Points when the file does not say.
-    pub const DEFAULT_POINTS: usize = 15;
-}
-
-/// `[optimizer]`: how hard the optimiser tries. Every field has a default
-/// ([`OptimizerSettings::default`]); [`OptimizerSettings::validate`] names the field and
-/// the accepted range of anything out of bounds.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct OptimizerSettings {
-    /// Number of starting points of the multistart (1..=1000; default 8).
-    pub starts: usize,
-    /// Seed of the random starting points (default 1): the same seed gives the same run.
-    pub seed: u64,
-    /// Relative tolerance on the KKT conditions and steps, in (0, 1) (default 1e-8).
-    pub tolerance: f64,
-    /// Iteration cap per start (1..=10000; default 200).
-    pub max_iterations: usize,
-    /// Wall-clock limit of the whole study, > 0 (default 60 s).
-    #[serde(serialize_with = "seconds")]
-    pub time_limit: Duration,
-}
-
-fn seconds<S: serde::Serializer>(d: &Duration, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_f64(d.as_secs_f64())
-}
-
-impl Default for OptimizerSettings {
-    fn default() -> Self {
-        OptimizerSettings {
-            starts: 8,
-            seed: 1,
-            tolerance: 1e-8,
-            max_iterations: 200,
-            time_limit: Duration::from_secs(60),
-        }
-    }
-}
-
-/// A setting out of its accepted range.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("optimizer.{field} = {value}: {expected}")]
-pub struct SettingsError {
-    /// The key in `[optimizer]`.
-    pub field: &'static str,
-    /// The value given.
-    pub value: String,
-    /// The accepted range.
-    pub expected: String,
-}
-
-impl OptimizerSettings {
-    /// Accepted range of `starts`.
-    pub const STARTS: (usize, usize) = (1, 1000);
-    /// Accepted range of `max_iterations`.
-    pub const MAX_ITERATIONS: (usize, usize) = (1, 10_000);
-
-    /// Checks every field against its accepted range.
-    pub fn validate(&self) -> Result<(), SettingsError> {
-        let err = |field, value: String, expected: &str| SettingsError {
-            field,
-            value,
-            expected: expected.to_string(),
-        };
-        if !(Self::STARTS.0..=Self::STARTS.1).contains(&self.starts) {
-            return Err(err(
-                "starts",
-                self.starts.to_string(),
-                "must be an integer in 1..=1000 (number of starting points)",
-            ));
-        }
-        if !(self.tolerance > 0.0 && self.tolerance < 1.0) {
-            return Err(err(
-                "tolerance",
-                self.tolerance.to_string(),
-                "must be in (0, 1), e.g. 1e-8",
-            ));
-        }
-        if !(Self::MAX_ITERATIONS.0..=Self::MAX_ITERATIONS.1).contains(&self.max_iterations) {
-            return Err(err(
-                "max_iterations",
-                self.max_iterations.to_string(),
-                "must be an integer in 1..=10000 (iterations per start)",
-            ));
-        }
-        // A zero time limit is accepted: the study then stops after evaluating
-        // its starts, with status time_limit.
-        Ok(())
     }
 }
 
@@ -426,32 +107,5 @@ impl Study {
     /// Whether the study moves anything (variables or materials).
     pub fn has_design(&self) -> bool {
         !self.design.is_empty() || !self.materials.is_empty()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn names_round_trip() {
-        for q in DesignQuantity::ALL {
-            assert_eq!(DesignQuantity::from_name(q.as_str()), Some(*q));
-        }
-        for q in ConstraintQuantity::ALL {
-            assert_eq!(ConstraintQuantity::from_name(q.as_str()), Some(*q));
-        }
-        assert_eq!(Objective::from_name("wear_rate"), Some(Objective::WearRate));
-        assert_eq!(Objective::from_name("Wear_Rate"), None);
-    }
-
-    #[test]
-    fn default_settings_are_valid() {
-        assert_eq!(OptimizerSettings::default().validate(), Ok(()));
-        let bad = OptimizerSettings {
-            starts: 0,
-            ..Default::default()
-        };
-        assert_eq!(bad.validate().unwrap_err().field, "starts");
     }
 }

@@ -29,7 +29,8 @@ pub fn objective_unit(name: &str) -> &'static str {
 
 /// The dimension of a design variable (by its problem-file name).
 pub fn design_dimension(name: &str) -> crate::problem::units::Dimension {
-    use crate::problem::{DesignQuantity, Named};
+    use crate::optimize::{DesignQuantity, Named};
+    use crate::problem::Dimensioned;
     DesignQuantity::from_name(name).map_or(crate::problem::units::Dimension::Dimensionless, |q| {
         q.dimension()
     })

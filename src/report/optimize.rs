@@ -22,7 +22,7 @@ pub struct BaselineViolation {
 
 /// The constraints the baseline (the problem file's scene) breaks.
 pub fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
-    use crate::problem::{ConstraintQuantity, DesignQuantity, Named};
+    use crate::optimize::{ConstraintQuantity, DesignQuantity, Named};
     let Some(ev) = &o.baseline_evaluation else {
         return Vec::new();
     };
@@ -66,7 +66,8 @@ pub fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
 
 /// A constraint's value or limit with its unit.
 fn constraint_quantity(name: &str, x: f64) -> String {
-    use crate::problem::{ConstraintQuantity, Named};
+    use crate::optimize::{ConstraintQuantity, Named};
+    use crate::problem::Dimensioned;
     let d = ConstraintQuantity::from_name(name)
         .map_or(crate::problem::units::Dimension::Dimensionless, |q| {
             q.dimension()

@@ -10,8 +10,9 @@ use serde_json::{json, Map, Value};
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, si, sig, sig_exp};
 use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
+use crate::optimize::{AdhesionMeasure, Constraint, ParetoDirection};
 use crate::problem::units::format_quantity;
-use crate::problem::{AdhesionMeasure, Constraint, ParetoDirection};
+use crate::problem::Dimensioned;
 
 /// What the head of a streamed report needs (known before the sweep runs).
 #[derive(Debug, Clone, Copy)]

@@ -17,7 +17,7 @@ use serde_json::{json, Value};
 
 use super::number;
 use super::svg::{Axis, LinePlot, Marker, Series};
-use crate::problem::{Named, ParetoDirection};
+use crate::optimize::{Named, ParetoDirection};
 use crate::sweep::{Sweep, SweepRow};
 
 /// Output formats of a sweep.

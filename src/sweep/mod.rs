@@ -16,9 +16,9 @@ use rayon::prelude::*;
 
 use crate::model::{self, EvaluationOptions, Scene, Status};
 use crate::optimize::functions::quantity_value;
-use crate::optimize::{DesignSpace, StudyFunctions, FEASIBILITY_TOLERANCE};
-use crate::problem::{
-    Constraint, ConstraintQuantity, DesignVariable, Named, Objective, ParetoDirection,
+use crate::optimize::{
+    Constraint, ConstraintQuantity, DesignSpace, DesignVariable, Named, Objective, ParetoDirection,
+    StudyFunctions, FEASIBILITY_TOLERANCE,
 };
 
 /// The most samples one sweep may have: 2^32 (the period of the 32-bit Sobol′ points).
