@@ -47,7 +47,8 @@ HOW / PRECISION
 
 USAGE
     python3 scripts/reference_dmt.py --out tests/data        # both tables
-    options: --dps D (default 40), --quick (a few rows, smoke test)
+    options: --dps D (default 40), --quick (a few rows, smoke test),
+             --only points|extrema (write just that table)
 """
 
 import argparse
@@ -457,6 +458,7 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--dps", type=int, default=40)
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--only", choices=["points", "extrema"], help="write just one of the two tables")
     args = ap.parse_args()
     mp.mp.dps = max(40, args.dps)
     os.makedirs(args.out, exist_ok=True)
@@ -467,14 +469,20 @@ def main():
         "# contact columns scaled by exp(kappa), kappa = h^2/2 for h > 0 else 0; noncontact columns by exp(noncontact_exponent)",
         "# methods: (1) closed forms + s = D^(1/2) (Hertz) + t = z0/(z0-D) (van der Waals); (2) mpmath.quad over D for every part",
     ]
-    rows, worst = points(args.quick)
-    with open(os.path.join(args.out, "reference_dmt_points.csv"), "w") as f:
-        for line in head:
-            f.write(line + "\n")
-        f.write(f"# agreement: worst over all rows and columns {mp.nstr(worst, 3)} significant digits between (1) and (2) (required >= {AGREE_DIGITS})\n")
-        f.write("case,theta,lambda,c_0,c_h,attraction,range,h,critical_interference,load_elastic,load_plastic,dload_dh_contact,area,plastic_area,noncontact_load,dnoncontact_dh,noncontact_exponent\n")
-        for r in rows:
-            f.write(",".join(r) + "\n")
+    if args.only == "extrema":
+        rows, worst = [], None
+    else:
+        rows, worst = points(args.quick)
+        with open(os.path.join(args.out, "reference_dmt_points.csv"), "w") as f:
+            for line in head:
+                f.write(line + "\n")
+            f.write(f"# agreement: worst over all rows and columns {mp.nstr(worst, 3)} significant digits between (1) and (2) (required >= {AGREE_DIGITS})\n")
+            f.write("case,theta,lambda,c_0,c_h,attraction,range,h,critical_interference,load_elastic,load_plastic,dload_dh_contact,area,plastic_area,noncontact_load,dnoncontact_dh,noncontact_exponent\n")
+            for r in rows:
+                f.write(",".join(r) + "\n")
+    if args.only == "points":
+        print(f"{len(rows)} point rows; worst agreement {mp.nstr(worst, 3)} digits")
+        return
     ex = extrema(args.quick)
     with open(os.path.join(args.out, "reference_dmt_extrema.csv"), "w") as f:
         for line in head:
@@ -483,7 +491,10 @@ def main():
         f.write("theta,c_h,attraction,range,h_min,log10_abs_load_min,load_min\n")
         for r in ex:
             f.write(",".join(r) + "\n")
-    print(f"{len(rows)} point rows, {len(ex)} extrema; worst agreement {mp.nstr(worst, 3)} digits")
+    if worst is None:
+        print(f"{len(ex)} extrema")
+    else:
+        print(f"{len(rows)} point rows, {len(ex)} extrema; worst agreement {mp.nstr(worst, 3)} digits")
 
 
 if __name__ == "__main__":

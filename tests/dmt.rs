@@ -404,3 +404,73 @@ fn curve_flags() {
         );
     }
 }
+
+/// Every shipped problem uses the law its Tabor parameter calls for: DMT below 0.3
+/// (the DLC contact, φ0 = 0.257; the materials study, 0.164), JKR in the transition
+/// 0.3–3 (with the other law beside it in `eval`), and none above 3.
+#[test]
+fn shipped_scenes_use_the_law_their_tabor_parameter_calls_for() {
+    let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/problems"));
+    let mut seen = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().and_then(|e| e.to_str()) != Some("toml") {
+            continue;
+        }
+        let p = wearopt::problem::load(&path).expect("shipped problem loads");
+        let ev = evaluate_with_other(&p.scene, &EvaluationOptions::default());
+        let phi = ev.indices.tabor_parameter;
+        let want = if phi < 0.3 {
+            AdhesionModel::Dmt
+        } else {
+            AdhesionModel::Jkr
+        };
+        assert!(phi <= 3.0, "{}: φ0 = {phi}", path.display());
+        assert_eq!(
+            p.scene.adhesion_model,
+            want,
+            "{}: φ0 = {phi}",
+            path.display()
+        );
+        assert_eq!(ev.other_model.is_some(), phi >= 0.3, "{}", path.display());
+        seen += 1;
+    }
+    assert!(seen >= 9);
+}
+
+/// The DLC contact under DMT with van der Waals (Z0 = 0.3 nm, z0 = 0.3), 50 µN.
+/// Checked independently with scripts/reference_dmt.py's `total_load` (mpmath, 40
+/// digits, both of its methods) at the evaluator's θ = 62.112999374994, λ =
+/// 3638330.96641759: P̄(1.4113802900901362) = 0.0403559367580650620 (the file's
+/// non-dimensional load 0.04035593675806507); the minimum of P̄ by findroot on
+/// P̄'/|P̄| at h = 2.6121740529175257, giving 4.3226131583860236e-6 N through the
+/// load scale 1.238975080661647e-3 N. Under JKR the same scene gave 3.2e-20 N.
+#[test]
+fn dlc_contact_is_dmt_and_matches_the_reference() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/dlc-contact.toml"
+    ));
+    let p = wearopt::problem::load(path).unwrap();
+    assert_eq!(p.scene.adhesion_model, AdhesionModel::Dmt);
+    assert_eq!(p.scene.attraction, AttractionKind::VanDerWaals);
+    let ev = evaluate_with_other(&p.scene, &EvaluationOptions::default());
+    assert_eq!(ev.status, Status::Ok);
+    assert!(
+        ev.other_model.is_none(),
+        "φ0 = 0.257 is below the transition"
+    );
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    assert!(rel(ev.nondimensional_load, 0.040_355_936_758_065_062) < 1e-14);
+    let h = ev.nondimensional_separation.unwrap();
+    assert!((h - 1.411_380_290_090_136_2).abs() < 1e-12, "{h}");
+    let po = ev.pull_off_force.unwrap();
+    assert!(rel(po, 4.322_613_158_386_024e-6) < 1e-12, "{po}");
+    let hp = ev.nondimensional_pull_off_separation.unwrap();
+    assert!((hp - 2.612_174_052_917_526).abs() < 1e-9, "{hp}");
+    // The attracted asperities pull; the shares add up to the load.
+    let nc = ev.noncontact_load.unwrap();
+    assert!(nc < 0.0);
+    let sum = ev.elastic_load + ev.plastic_load + nc;
+    assert!(rel(sum, 50e-6) < 1e-12, "{sum}");
+}

@@ -14,7 +14,7 @@
 mod common;
 
 use common::{num, rel, table};
-use wearopt::model::{AsperityLaw, Attraction, Coefficients, Model, Quadrature};
+use wearopt::model::{find_pull_off, AsperityLaw, Attraction, Coefficients, Model, Quadrature};
 
 const TOLERANCE: f64 = 1e-12;
 
@@ -117,4 +117,53 @@ fn dmt_points_match_the_high_precision_table() {
         worst.1
     );
     assert!(worst.0 <= TOLERANCE, "worst {:e}: {}", worst.0, worst.1);
+}
+
+/// The pull-off minimum of P̄ (docs/model.md §4 under §7) against
+/// `reference_dmt_extrema.csv`: mpmath's findroot on P̄'/|P̄| at 40 digits, P̄ there by
+/// both of the script's methods (≥ 25 digits apart at worst). Rows give θ (c_0 = 2π/θ)
+/// and c_h directly (the hub's c_h = 5.12; `inf` is H = ∞).
+///
+/// The location of a minimum is fixed only to ~√ε relative by the flat load there;
+/// its value to full precision: h_min to 1e-7, P̄_min and log10|P̄_min| to 1e-12.
+#[test]
+fn dmt_pull_off_minima_match_the_high_precision_table() {
+    let rows = table("reference_dmt_extrema.csv");
+    assert!(rows.len() >= 7, "table too small: {}", rows.len());
+    for row in &rows {
+        let theta = num(&row["theta"]);
+        let mut c = Coefficients::new(
+            (6.0 * std::f64::consts::PI / theta).sqrt(),
+            num(&row["c_h"]),
+        );
+        c.c_0 = 2.0 * std::f64::consts::PI / theta;
+        let range = num(&row["range"]);
+        let attraction = match row["attraction"].as_str() {
+            "van_der_waals" => Attraction::VanDerWaals { range },
+            "dugdale" => Attraction::Dugdale { range },
+            other => panic!("attraction {other}"),
+        };
+        let m = Model::with_law(c, AsperityLaw::Dmt(attraction), Quadrature::default());
+        let p = find_pull_off(&m).unwrap_or_else(|| panic!("no pull-off for {row:?}"));
+        assert_eq!(p.local_minima, 1, "{row:?}");
+        let h_ref = num(&row["h_min"]);
+        assert!(
+            (p.separation - h_ref).abs() < 1e-7 * h_ref.abs().max(1.0),
+            "{row:?}: h = {}",
+            p.separation
+        );
+        let log10 = num(&row["log10_abs_load_min"]);
+        assert!(
+            (p.load.log10_abs() - log10).abs() < TOLERANCE * log10.abs().max(1.0),
+            "{row:?}: log10 = {}",
+            p.load.log10_abs()
+        );
+        let want = num(&row["load_min"]);
+        let err = rel(p.load.value(), want, 0.0);
+        assert!(
+            err < TOLERANCE,
+            "{row:?}: P = {:e}, rel {err:e}",
+            p.load.value()
+        );
+    }
 }
