@@ -6,6 +6,7 @@ pub mod accuracy;
 pub mod calibrate;
 pub mod curve;
 pub mod eval;
+pub mod figures;
 pub mod html;
 pub mod materials;
 pub mod optimize;
