@@ -118,6 +118,42 @@ fn optimize_page() {
     renders_in_chromium(&html, "optimize");
 }
 
+/// The header cells of every table of a page, in order, one Vec per table.
+fn table_headers(html: &str) -> Vec<Vec<String>> {
+    html.split("<table>")
+        .skip(1)
+        .map(|t| {
+            let head = &t[..t.find("</tr>").unwrap()];
+            head.split("<th>")
+                .skip(1)
+                .map(|c| c[..c.find("</th>").unwrap()].to_string())
+                .collect()
+        })
+        .collect()
+}
+
+/// The rows (cell texts) of the table whose first header cell is `first`.
+fn table_rows(html: &str, first: &str) -> Vec<Vec<String>> {
+    let t = html
+        .split("<table>")
+        .skip(1)
+        .find(|t| t.starts_with(&format!("\n<tr><th>{first}</th>")))
+        .unwrap_or_else(|| panic!("no table starting with {first}"));
+    let t = &t[..t.find("</table>").unwrap()];
+    t.split("<tr>")
+        .skip(2)
+        .map(|r| {
+            r.split("<td")
+                .skip(1)
+                .map(|c| {
+                    let c = &c[c.find('>').unwrap() + 1..];
+                    c[..c.find("</td>").unwrap()].to_string()
+                })
+                .collect()
+        })
+        .collect()
+}
+
 #[test]
 fn pareto_page() {
     let html = page(&[
@@ -129,8 +165,121 @@ fn pareto_page() {
         "html",
     ]);
     check_page(&html, &["front"]);
-    assert!(html.contains("knee"));
+    // Real tables, not the text report in <pre>.
+    assert!(!html.contains("<pre>"));
+    let headers = table_headers(&html);
+    assert_eq!(headers.len(), 3, "{headers:?}");
+    // End points, knee and baseline.
+    let ends = table_rows(&html, "design");
+    let labels: Vec<&str> = ends.iter().map(|r| r[0].as_str()).collect();
+    assert!(
+        labels[0].starts_with("point 0: the preferred adhesion end"),
+        "{labels:?}"
+    );
+    assert!(labels[1].starts_with("point 5: the far end"), "{labels:?}");
+    assert!(labels.iter().any(|l| l.ends_with("the knee")), "{labels:?}");
+    assert!(labels.contains(&"least-wear design of the study"));
+    assert!(labels.iter().any(|l| l.starts_with("baseline design")));
+    // Every point, its design and both constraints of the study at it.
+    assert_eq!(
+        headers[1],
+        [
+            "point",
+            "pull off force",
+            "wear rate",
+            "status",
+            "front",
+            "hardness",
+            "sigma",
+            "asperity_radius",
+            "real_area_fraction",
+            "pull_off_force"
+        ]
+    );
+    let points = table_rows(&html, "point");
+    assert_eq!(points.len(), 6);
+    for r in &points {
+        assert_eq!(r.len(), 10, "{r:?}");
+        // The pull-off constraint at a point is the point's own adhesion measure
+        // (the sweep computed it; the page re-evaluates the design): same value.
+        let measure = common::num(r[1].split(' ').next().unwrap());
+        let constraint = common::num(r[9].split(' ').next().unwrap());
+        assert_eq!(
+            r[1].split(' ').nth(1),
+            r[9].split(' ').nth(1),
+            "units of {r:?}"
+        );
+        assert!(
+            common::rel(constraint, measure, measure) < 1e-3,
+            "{r:?}: the constraint column disagrees with the measure"
+        );
+        assert!(!r[8].contains("breaks"), "{r:?}");
+    }
+    assert_eq!(points.iter().filter(|r| r[4] == "knee").count(), 1);
+    // The constraints with their limits.
+    let cons = table_rows(&html, "constraint");
+    assert_eq!(cons.len(), 2);
+    assert_eq!(cons[0][0], "real_area_fraction");
+    assert_eq!(cons[0][1], "0.0004");
+    assert_eq!(cons[1][2], "10 µN");
     renders_in_chromium(&html, "pareto");
+}
+
+#[test]
+fn materials_page() {
+    let html = page(&[
+        "optimize",
+        "problems/materials-study.toml",
+        "--format",
+        "html",
+    ]);
+    check_page(&html, &["ranking"]);
+    let ranking = table_rows(&html, "rank");
+    // Every material of [design] materials has a row; ranks 1, 2, … first.
+    assert_eq!(ranking.len(), 5);
+    for (i, r) in ranking.iter().enumerate() {
+        assert_eq!(r[0], (i + 1).to_string(), "{r:?}");
+    }
+    // The page ranks as the JSON report does.
+    let json: serde_json::Value = serde_json::from_str(&page(&[
+        "optimize",
+        "problems/materials-study.toml",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let names: Vec<&str> = json["ranking"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["material"].as_str().unwrap())
+        .collect();
+    let page_names: Vec<&str> = ranking.iter().map(|r| r[1].as_str()).collect();
+    assert_eq!(page_names, names);
+    // One bar per material, in the same order.
+    let bars = html.matches("<rect class=\"bar\"").count();
+    assert_eq!(bars, 5);
+    assert!(html.contains(&format!("1. {}", names[0])));
+    renders_in_chromium(&html, "materials");
+}
+
+#[test]
+fn materials_page_to_a_file() {
+    let file = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("out-materials.html");
+    let out = Command::cargo_bin("wearopt")
+        .unwrap()
+        .args([
+            "optimize",
+            "problems/materials-study.toml",
+            "--format",
+            "html",
+            "--out",
+        ])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(out.status.success() && out.stdout.is_empty(), "{out:?}");
+    check_page(&std::fs::read_to_string(&file).unwrap(), &["ranking"]);
 }
 
 #[test]

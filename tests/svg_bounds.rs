@@ -6,7 +6,7 @@
 use std::collections::HashMap;
 
 use assert_cmd::Command;
-use wearopt::report::svg::{bar_chart, Axis, LinePlot, Marker, Series, TEXT_EM};
+use wearopt::report::svg::{bar_chart, log_bar_chart, Axis, LinePlot, Marker, Series, TEXT_EM};
 
 fn attrs(tag: &str) -> HashMap<String, String> {
     let mut out = HashMap::new();
@@ -161,6 +161,46 @@ fn bar_chart_fits() {
     ));
     assert_eq!(texts, 2 + 2 * bars.len());
     assert!(markers >= 4);
+}
+
+#[test]
+fn log_bar_chart_fits() {
+    let bars: Vec<(String, f64, String)> = [
+        ("1. silicon carbide", 8.6e-18),
+        ("2. a material with a long name", 1.2e-17),
+        ("3. nickel", 7.3e-15),
+        ("excluded (no result)", f64::NAN),
+        ("zero", 0.0),
+    ]
+    .iter()
+    .map(|(n, v)| (n.to_string(), *v, format!("{v:e} m³/m")))
+    .collect();
+    let svg = log_bar_chart(
+        "Wear rate of each material",
+        "wear rate (m³/m), log scale",
+        &bars,
+    );
+    let (texts, markers) = check(&svg);
+    // Title, axis label, a name and a value per bar, and decade labels 1e-18 … 1e-14.
+    assert_eq!(texts, 2 + 2 * bars.len() + 5, "{svg}");
+    assert_eq!(svg.matches("<rect class=\"bar\"").count(), 3);
+    assert!(markers >= 3);
+    for d in ["1e-18", "1e-14"] {
+        assert!(svg.contains(&format!(">{d}</text>")), "{d}: {svg}");
+    }
+    // Bars grow with the value: the nickel bar is the longest.
+    let widths: Vec<f64> = svg
+        .lines()
+        .filter(|l| l.starts_with("<rect class=\"bar\""))
+        .map(|l| num(&attrs(l), "width"))
+        .collect();
+    assert!(widths[0] < widths[1] && widths[1] < widths[2], "{widths:?}");
+    // No drawable value: still a well-formed chart.
+    check(&log_bar_chart(
+        "t",
+        "x",
+        &[("a".into(), f64::NAN, "—".into())],
+    ));
 }
 
 /// The plots the commands write: the Pareto front of the shipped latch study, and the

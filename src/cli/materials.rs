@@ -10,12 +10,24 @@ use wearopt::optimize::materials::{rank_materials, MaterialOutcome};
 use wearopt::problem::{catalogue, Problem};
 use wearopt::report;
 
+/// How the ranking is rendered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rendering {
+    /// The ranking table for people.
+    Text,
+    /// One JSON object.
+    Json,
+    /// One self-contained HTML page.
+    Html,
+}
+
 /// Runs the material study of `problem` (read from `file`) and prints the ranking.
 /// Exit code 1 when no material meets every constraint.
 pub fn run(
     file: &Path,
     problem: &Problem,
-    json: bool,
+    format: Rendering,
+    out: Option<&Path>,
     verbose: bool,
     trace: Option<PathBuf>,
 ) -> Result<ExitCode> {
@@ -64,12 +76,12 @@ pub fn run(
         }
         super::write_output(&path, &csv, "the trace")?;
     }
-    let out = if json {
-        report::materials::json(&problem.name, &ranking)
-    } else {
-        report::materials::text(&problem.name, &ranking)
+    let text = match format {
+        Rendering::Text => report::materials::text(&problem.name, &ranking),
+        Rendering::Json => report::materials::json(&problem.name, &ranking),
+        Rendering::Html => report::materials::html(&problem.name, &ranking),
     };
-    print!("{out}");
+    super::write_output(out.unwrap_or(Path::new("-")), &text, "the report")?;
     Ok(if ranking.best().is_some() {
         ExitCode::SUCCESS
     } else {

@@ -310,17 +310,16 @@ fn optimize(
         ));
     }
     let problem = wearopt::problem::load(&file)?;
-    if !problem.study.materials.is_empty() && (matches!(format, EvalFormat::Html) || !to_stdout) {
-        return Err(usage(format!(
-            "{}: a material ranking is written as text or JSON to stdout (--format html and --out are for a single study)",
-            file.display()
-        )));
-    }
     if !problem.study.materials.is_empty() {
         return materials::run(
             &file,
             &problem,
-            matches!(format, EvalFormat::Json),
+            match format {
+                EvalFormat::Text => materials::Rendering::Text,
+                EvalFormat::Json => materials::Rendering::Json,
+                EvalFormat::Html => materials::Rendering::Html,
+            },
+            out.as_deref(),
             verbose,
             trace,
         );

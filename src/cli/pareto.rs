@@ -121,6 +121,49 @@ impl Observer for Stream<'_> {
     }
 }
 
+/// The study's constraint quantities at every design of the front, the least-wear
+/// design and the baseline: one model evaluation each, of the scene the optimiser's
+/// own design space builds from the design.
+fn constraint_values(study: &Study, front: &pareto::Front) -> out::ConstraintValues {
+    let space = wearopt::optimize::DesignSpace::new(study.scene, study.design);
+    let options = wearopt::model::EvaluationOptions::default();
+    let at = |design: &[f64]| -> Vec<Option<f64>> {
+        // The design space's unit coordinates of the SI design (its own map inverted).
+        let x: Vec<f64> = space
+            .variables
+            .iter()
+            .zip(design)
+            .map(|(v, &d)| {
+                let u = if v.logarithmic {
+                    (d / v.min).ln() / (v.max / v.min).ln()
+                } else {
+                    (d - v.min) / (v.max - v.min)
+                };
+                if u.is_finite() {
+                    u.clamp(0.0, 1.0)
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        let scene = space.scene_at(&x);
+        let ev = wearopt::model::evaluate(&scene, &options);
+        study
+            .constraints
+            .iter()
+            .map(|c| {
+                wearopt::optimize::functions::quantity_value(c.quantity, &ev, &scene)
+                    .filter(|v| v.is_finite())
+            })
+            .collect()
+    };
+    out::ConstraintValues {
+        points: front.points.iter().map(|p| at(&p.design)).collect(),
+        least_wear: at(&front.least_wear.design),
+        baseline: front.baseline.as_ref().map(|b| at(&b.design)),
+    }
+}
+
 /// Runs `wearopt pareto`.
 pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     if args.out.is_some() && args.format != ParetoFormat::Html {
@@ -201,7 +244,8 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
             &problem.study.constraints,
         )),
         ParetoFormat::Html => {
-            let page = out::html(&problem.name, &front, &problem.study.constraints);
+            let values = constraint_values(&study, &front);
+            let page = out::html(&problem.name, &front, &problem.study.constraints, &values);
             super::write_output(
                 args.out.as_deref().unwrap_or(std::path::Path::new("-")),
                 &page,

@@ -12,9 +12,9 @@ pub struct Page {
     body: String,
 }
 
-const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,Helvetica,sans-serif;max-width:1000px;margin:1.5em auto;padding:0 1em;color:#111;line-height:1.4}\
+const STYLE: &str = "body{font-family:'DejaVu Sans',Arial,Helvetica,sans-serif;max-width:1100px;margin:1.5em auto;padding:0 1em;color:#111;line-height:1.4}\
 h1{font-size:1.5em;margin-bottom:0.2em}h2{font-size:1.15em;margin-top:1.6em;border-bottom:1px solid #ccc}\
-table{border-collapse:collapse;margin:0.5em 0}td,th{padding:0.2em 0.8em;border-bottom:1px solid #e4e4e4;text-align:left;vertical-align:top}\
+table{border-collapse:collapse;margin:0.5em 0;display:block;max-width:100%;overflow-x:auto}td,th{padding:0.2em 0.8em;border-bottom:1px solid #e4e4e4;text-align:left;vertical-align:top}\
 th{background:#f3f3f3}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\
 .status{font-weight:bold}.warn{color:#8a3b00}.warn li{margin:0.2em 0}.note{color:#444}\
 figure{margin:1em 0}figcaption{font-size:0.9em;color:#444}svg{max-width:100%;height:auto}pre{background:#f7f7f7;padding:0.6em;overflow-x:auto}";

@@ -88,6 +88,48 @@ pub fn json(name: &str, ranking: &MaterialRanking) -> String {
     s
 }
 
+/// "Least wear rate: polysilicon (…); next … with ×3.2 the wear rate", or that none
+/// meets every constraint.
+fn best_sentence(ranking: &MaterialRanking) -> String {
+    let unit = super::objective_unit(ranking.objective_name);
+    match ranking.best() {
+        Some(best) => {
+            let wr = |r: &MaterialResult| r.wear_rate().unwrap_or(f64::NAN);
+            let runner = ranking.results.get(1).filter(|r| r.rank.is_some());
+            format!(
+                "Least {}: {} ({}){}",
+                ranking.objective_name.replace('_', " "),
+                best.name(),
+                super::si(best.objective().unwrap_or(f64::NAN), unit, 4),
+                runner.map_or(String::new(), |r| format!(
+                    "; next {} with ×{} the wear rate",
+                    r.name(),
+                    sig(wr(r) / wr(best), 3)
+                ))
+            )
+        }
+        None => "No material meets every constraint.".into(),
+    }
+}
+
+/// Why a material was excluded or had no contact, and the notes of its case, each
+/// prefixed with the material's name.
+fn notes(ranking: &MaterialRanking) -> Vec<String> {
+    let mut out = Vec::new();
+    for r in &ranking.results {
+        if let Some(why) = &r.case.excluded {
+            out.push(format!("{}: excluded: {why}", r.name()));
+        }
+        if let MaterialOutcome::NoContact(why) = &r.outcome {
+            out.push(format!("{}: {why}", r.name()));
+        }
+        for n in &r.case.notes {
+            out.push(format!("{}: {n}", r.name()));
+        }
+    }
+    out
+}
+
 /// The ranking table for people.
 pub fn text(name: &str, ranking: &MaterialRanking) -> String {
     let mut out = String::new();
@@ -149,42 +191,14 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
         ));
         line(row);
     }
-    if let Some(best) = ranking.best() {
-        let wr = |r: &MaterialResult| r.wear_rate().unwrap_or(f64::NAN);
-        let runner = ranking.results.get(1).filter(|r| r.rank.is_some());
-        line(String::new());
-        line(format!(
-            "Least {}: {} ({}){}",
-            ranking.objective_name.replace('_', " "),
-            best.name(),
-            super::si(best.objective().unwrap_or(f64::NAN), unit, 4),
-            runner.map_or(String::new(), |r| format!(
-                "; next {} with ×{} the wear rate",
-                r.name(),
-                sig(wr(r) / wr(best), 3)
-            ))
-        ));
-    } else {
-        line(String::new());
-        line("No material meets every constraint.".into());
-    }
-    let any_notes = ranking
-        .results
-        .iter()
-        .any(|r| !r.case.notes.is_empty() || r.case.excluded.is_some());
-    if any_notes {
+    line(String::new());
+    line(best_sentence(ranking));
+    let notes = notes(ranking);
+    if !notes.is_empty() {
         line(String::new());
         line("Notes:".into());
-        for r in &ranking.results {
-            if let Some(why) = &r.case.excluded {
-                line(format!("  {}: excluded: {why}", r.name()));
-            }
-            if let MaterialOutcome::NoContact(why) = &r.outcome {
-                line(format!("  {}: {why}", r.name()));
-            }
-            for n in &r.case.notes {
-                line(format!("  {}: {n}", r.name()));
-            }
+        for n in notes {
+            line(format!("  {n}"));
         }
     }
     line(String::new());
@@ -198,4 +212,134 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
         sig(ranking.time_seconds, 3)
     ));
     out
+}
+
+/// The pull-off force; one that underflows to 0 N is given by its decade.
+fn pull_off_text(e: &crate::model::Evaluation) -> String {
+    match (e.pull_off_force, e.log10_pull_off_force) {
+        (Some(f), Some(l)) if f == 0.0 && l.is_finite() => format!("1e{} N", sig(l, 4)),
+        (Some(f), _) => super::si(f, "N", 4),
+        (None, _) => "—".into(),
+    }
+}
+
+/// A self-contained HTML page: the verdict, the objective of each material as bars on
+/// a log axis, the ranking table (with each material's E, ν, H and the design found),
+/// the notes and the method.
+pub fn html(name: &str, ranking: &MaterialRanking) -> String {
+    let mut p = super::html::Page::new(&format!("wearopt optimize — {name}: material ranking"));
+    p.paragraph(&best_sentence(ranking), Some("status"));
+    let unit = super::objective_unit(ranking.objective_name);
+    let objective = ranking.objective_name.replace('_', " ");
+    let bars: Vec<(String, f64, String)> = ranking
+        .results
+        .iter()
+        .map(|r| {
+            let v = r.objective().unwrap_or(f64::NAN);
+            let label = match r.rank {
+                Some(k) => format!("{k}. {}", r.name()),
+                None => format!("{} ({})", r.name(), r.status.as_str()),
+            };
+            (label, v, super::si(v, unit, 4))
+        })
+        .collect();
+    let axis = if unit.is_empty() {
+        objective.clone()
+    } else {
+        format!("{objective} ({unit}), log scale")
+    };
+    p.figure(
+        "ranking",
+        &super::svg::log_bar_chart(
+            &format!("{name}: {objective} of each material"),
+            &axis,
+            &bars,
+        ),
+        "The objective at each material's best design; ranked materials meet every constraint, the others are named with their status.",
+    );
+    p.heading("Ranking");
+    let show_objective = ranking.objective_name != "wear_rate";
+    let mut header: Vec<String> = vec![
+        "rank".into(),
+        "material".into(),
+        "status".into(),
+        "wear rate".into(),
+    ];
+    if show_objective {
+        header.push(objective.clone());
+    }
+    for h in ["pull-off force", "σ", "R", "γ", "E", "ν", "H"] {
+        header.push(h.into());
+    }
+    let rows: Vec<Vec<String>> = ranking
+        .results
+        .iter()
+        .map(|r| {
+            let scene = r.scene();
+            let ev = r.evaluation();
+            let q = |x: f64, d| {
+                if ev.is_some() {
+                    format_quantity(x, d)
+                } else {
+                    "—".into()
+                }
+            };
+            let mut row = vec![
+                r.rank.map_or("—".into(), |k| k.to_string()),
+                r.name().to_string(),
+                r.status.as_str().to_string(),
+                r.wear_rate()
+                    .map_or("—".into(), |w| super::si(w, "m³/m", 4)),
+            ];
+            if show_objective {
+                row.push(r.objective().map_or("—".into(), |o| super::si(o, unit, 4)));
+            }
+            row.extend([
+                ev.map_or("—".into(), pull_off_text),
+                q(scene.sigma, Dimension::Length),
+                q(scene.asperity_radius, Dimension::Length),
+                q(scene.work_of_adhesion, Dimension::SurfaceEnergy),
+                format_quantity(scene.youngs_modulus_a, Dimension::Pressure),
+                super::number(scene.poisson_ratio_a),
+                format_quantity(scene.hardness, Dimension::Pressure),
+            ]);
+            row
+        })
+        .collect();
+    let header_refs: Vec<&str> = header.iter().map(String::as_str).collect();
+    p.table(&header_refs, &rows, &[1, 2]);
+    p.heading("Active constraints and bounds");
+    let rows: Vec<Vec<String>> = ranking
+        .results
+        .iter()
+        .filter(|r| r.evaluation().is_some())
+        .map(|r| {
+            let active = r.active();
+            vec![
+                r.name().to_string(),
+                if active.is_empty() {
+                    "none".to_string()
+                } else {
+                    active.join(", ")
+                },
+            ]
+        })
+        .collect();
+    p.table(&["material", "at its limit"], &rows, &[1]);
+    let notes = notes(ranking);
+    if !notes.is_empty() {
+        p.heading("Notes");
+        p.list(&notes, "note");
+    }
+    p.heading("Method");
+    p.list(&METHOD.map(String::from), "note");
+    p.paragraph(
+        &format!(
+            "{} materials in {} s.",
+            ranking.results.len(),
+            sig(ranking.time_seconds, 3)
+        ),
+        Some("note"),
+    );
+    p.finish()
 }

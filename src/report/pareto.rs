@@ -221,30 +221,26 @@ fn constraint_text(c: &Constraint) -> String {
     }
 }
 
-/// A report for people; only the sections the study has.
-pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
-    let mut out = String::new();
-    let mut line = |s: String| {
-        out.push_str(&s);
-        out.push('\n');
-    };
+/// "wear_rate against pull_off_force, direction low: the good end is low adhesion".
+fn trade_off_line(front: &Front) -> String {
     let m = front.measure;
-    let ounit = super::objective_unit(front.objective_name);
-    line(format!("wearopt pareto — {name}"));
-    line(String::new());
     let good_end = match (front.direction, m) {
         (ParetoDirection::Low, AdhesionMeasure::ElasticAdhesionIndex) => "high θ (little adhesion)",
         (ParetoDirection::High, AdhesionMeasure::ElasticAdhesionIndex) => "low θ (strong adhesion)",
         (ParetoDirection::Low, _) => "low adhesion",
         (ParetoDirection::High, _) => "high adhesion",
     };
-    line(format!(
+    format!(
         "{} against {}, direction {}: the good end is {good_end}",
         front.objective_name,
         m.as_str(),
         front.direction.as_str()
-    ));
-    let status = match front.status {
+    )
+}
+
+/// The status in a sentence.
+fn status_sentence(front: &Front) -> String {
+    match front.status {
         FrontStatus::Ok => format!(
             "ok: {} designs on the front, wear and adhesion pull against each other",
             front.front_indices().len()
@@ -253,8 +249,12 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
         FrontStatus::Infeasible => {
             "infeasible: no point of the sweep meets every constraint of the study".to_string()
         }
-    };
-    line(format!("Status: {status}"));
+    }
+}
+
+/// The reachable range of the measure.
+fn reachable_line(front: &Front) -> String {
+    let m = front.measure;
     let (lo, hi) = front.strength_range;
     let (vlo, vhi) = (
         crate::optimize::pareto::value_at(m, lo),
@@ -265,7 +265,7 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
     } else {
         (vlo, vhi)
     };
-    line(format!(
+    format!(
         "reachable {}: {} to {}{}",
         m.as_str(),
         measure_text(m, a, a.log10()),
@@ -278,7 +278,23 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
         } else {
             String::new()
         }
-    ));
+    )
+}
+
+/// A report for people; only the sections the study has.
+pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
+    let mut out = String::new();
+    let mut line = |s: String| {
+        out.push_str(&s);
+        out.push('\n');
+    };
+    let m = front.measure;
+    let ounit = super::objective_unit(front.objective_name);
+    line(format!("wearopt pareto — {name}"));
+    line(String::new());
+    line(trade_off_line(front));
+    line(format!("Status: {}", status_sentence(front)));
+    line(reachable_line(front));
     if !constraints.is_empty() {
         let list: Vec<String> = constraints.iter().map(constraint_text).collect();
         line(format!("every point also meets: {}", list.join(", ")));
@@ -539,63 +555,265 @@ pub fn svg(name: &str, front: &Front) -> String {
     plot.to_svg()
 }
 
-/// A self-contained HTML page: the text report and the front (with knee and baseline)
-/// as inline SVG.
-pub fn html(name: &str, front: &Front, constraints: &[Constraint]) -> String {
+/// The study's constraint quantities at the designs of a front (SI, in the order of
+/// the study's constraints; None where a quantity does not exist at a design).
+/// The caller evaluates them; the report only words them.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ConstraintValues {
+    /// At each point of [`Front::points`], in order.
+    pub points: Vec<Vec<Option<f64>>>,
+    /// At the least-wear design of the study.
+    pub least_wear: Vec<Option<f64>>,
+    /// At the baseline design, when the front has one.
+    pub baseline: Option<Vec<Option<f64>>>,
+}
+
+/// Whether `v` lies outside the constraint's limits by more than a relative 1e-6
+/// (the optimiser's own tolerance is tighter; this flags what a reader must see).
+fn breaks(c: &Constraint, v: Option<f64>) -> bool {
+    let Some(v) = v else { return false };
+    let tol = |limit: f64| 1e-6 * limit.abs().max(f64::MIN_POSITIVE);
+    c.min.is_some_and(|a| v < a - tol(a)) || c.max.is_some_and(|b| v > b + tol(b))
+}
+
+/// A constraint's value in its unit, with "(breaks)" where it lies outside its limits.
+fn constraint_cell(c: &Constraint, v: Option<f64>) -> String {
+    match v {
+        None => "—".to_string(),
+        Some(x) if !x.is_finite() => "—".to_string(),
+        Some(x) => {
+            let q = format_quantity(x, c.quantity.dimension());
+            if breaks(c, v) {
+                format!("{q} (breaks)")
+            } else {
+                q
+            }
+        }
+    }
+}
+
+/// The role of a point on the front, in words.
+fn point_role(front: &Front, p: &FrontPoint) -> &'static str {
+    if front.knee == Some(p.index) {
+        "knee"
+    } else if p.on_front {
+        "on the front"
+    } else if p.dominated {
+        "dominated"
+    } else if !p.feasible {
+        "infeasible"
+    } else {
+        "—"
+    }
+}
+
+/// A self-contained HTML page: the status, the front (with knee and baseline) as
+/// inline SVG, a table of the end points, the knee, the least-wear and the baseline
+/// designs, a table of every point with its design and the study's constraints at it,
+/// and the constraints with their limits.
+pub fn html(
+    name: &str,
+    front: &Front,
+    constraints: &[Constraint],
+    values: &ConstraintValues,
+) -> String {
+    let m = front.measure;
+    let ounit = super::objective_unit(front.objective_name);
+    let show_wear = front.objective_name != "wear_rate";
     let mut p = super::html::Page::new(&format!("wearopt pareto — {name}"));
     p.paragraph(
-        &format!(
-            "Status: {}",
-            match front.status {
-                FrontStatus::Ok => "trade-off",
-                FrontStatus::NoTradeOff => "no trade-off",
-                FrontStatus::Infeasible => "infeasible",
-            }
-        ),
+        &format!("Status: {}", status_sentence(front)),
         Some("status"),
     );
+    p.paragraph(&trade_off_line(front), None);
+    p.paragraph(&reachable_line(front), None);
+    if let Some(b) = front.baseline.as_ref().filter(|b| !b.feasible) {
+        let broken: Vec<String> = constraints
+            .iter()
+            .zip(values.baseline.iter().flatten())
+            .filter(|(c, v)| breaks(c, **v))
+            .map(|(c, v)| format!("{} = {}", c.quantity, constraint_cell(c, *v)))
+            .collect();
+        p.list(
+            &[format!(
+                "the baseline design breaks a constraint of the study{} ({} = {}): it is no rival of the front, however low its wear",
+                if broken.is_empty() {
+                    String::new()
+                } else {
+                    format!(": {}", broken.join(", "))
+                },
+                front.objective_name,
+                si(b.objective, ounit, 4)
+            )],
+            "warn",
+        );
+    }
     p.figure(
         "front",
         &svg(name, front),
         "Least wear at each adhesion (ε-constraint curve), the Pareto front, its knee and the baseline design.",
     );
-    p.heading("Points");
-    let ounit = super::objective_unit(front.objective_name);
-    let rows: Vec<Vec<String>> = front
-        .points
-        .iter()
-        .map(|pt| {
-            vec![
-                pt.index.to_string(),
-                measure_text(front.measure, pt.adhesion, pt.log10_adhesion),
-                si(pt.objective, ounit, 4),
-                pt.status.as_str().to_string(),
-                if front.knee == Some(pt.index) {
-                    "knee".to_string()
-                } else if pt.on_front {
-                    "on the front".to_string()
-                } else if pt.dominated {
-                    "dominated".to_string()
-                } else {
-                    "—".to_string()
-                },
-            ]
-        })
-        .collect();
-    let adhesion_header = front.measure.as_str().replace('_', " ");
+
+    let adhesion_header = m.as_str().replace('_', " ");
     let objective_header = front.objective_name.replace('_', " ");
-    p.table(
-        &[
-            "point",
-            &adhesion_header,
-            &objective_header,
-            "status",
-            "front",
-        ],
-        &rows,
-        &[3, 4],
+    let design_cells = |design: &[f64]| -> Vec<String> {
+        front
+            .names
+            .iter()
+            .zip(design)
+            .map(|(n, v)| format_quantity(*v, super::design_dimension(n)))
+            .collect()
+    };
+    let mut header: Vec<&str> = vec!["design", &adhesion_header, &objective_header];
+    if show_wear {
+        header.push("wear rate");
+    }
+    header.push("meets the constraints");
+    header.extend(front.names.iter().copied());
+
+    p.heading("End points, knee and baseline");
+    let mut rows: Vec<Vec<String>> = Vec::new();
+    let mut point_row = |label: String, pt: &FrontPoint| {
+        let mut r = vec![
+            label,
+            measure_text(m, pt.adhesion, pt.log10_adhesion),
+            si(pt.objective, ounit, 4),
+        ];
+        if show_wear {
+            r.push(si(pt.wear_rate, "m³/m", 4));
+        }
+        r.push(if pt.feasible { "yes" } else { "no" }.into());
+        r.extend(design_cells(&pt.design));
+        rows.push(r);
+    };
+    let (first, last) = (front.points.first(), front.points.last());
+    if let Some(pt) = first {
+        point_row(
+            format!("point {}: the preferred adhesion end", pt.index),
+            pt,
+        );
+    }
+    if let Some(pt) = last.filter(|l| front.points.len() > 1 && l.index != 0) {
+        point_row(format!("point {}: the far end", pt.index), pt);
+    }
+    if let Some(k) = front
+        .knee
+        .and_then(|k| front.points.iter().find(|p| p.index == k))
+    {
+        point_row(format!("point {}: the knee", k.index), k);
+    }
+    let mut reference_row = |label: &str, r: &crate::optimize::pareto::Reference| {
+        let mut row = vec![
+            label.to_string(),
+            measure_text(m, r.adhesion, r.log10_adhesion),
+            si(r.objective, ounit, 4),
+        ];
+        if show_wear {
+            row.push(si(r.wear_rate, "m³/m", 4));
+        }
+        row.push(if r.feasible { "yes" } else { "no" }.into());
+        row.extend(design_cells(&r.design));
+        rows.push(row);
+    };
+    reference_row("least-wear design of the study", &front.least_wear);
+    if let Some(b) = &front.baseline {
+        reference_row("baseline design (the problem file's)", b);
+    }
+    let text_cols = [header.len() - front.names.len() - 1];
+    p.table(&header, &rows, &text_cols);
+
+    p.heading("Points");
+    let mut header: Vec<String> = vec![
+        "point".into(),
+        adhesion_header.clone(),
+        objective_header.clone(),
+    ];
+    if show_wear {
+        header.push("wear rate".into());
+    }
+    header.push("status".into());
+    header.push("front".into());
+    header.extend(front.names.iter().map(|n| n.to_string()));
+    header.extend(constraints.iter().map(|c| c.quantity.to_string()));
+    let status_col = if show_wear { 4 } else { 3 };
+    let rows: Vec<Vec<String>> =
+        front
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, pt)| {
+                let mut r = vec![
+                    pt.index.to_string(),
+                    measure_text(m, pt.adhesion, pt.log10_adhesion),
+                    si(pt.objective, ounit, 4),
+                ];
+                if show_wear {
+                    r.push(si(pt.wear_rate, "m³/m", 4));
+                }
+                r.push(pt.status.as_str().to_string());
+                r.push(point_role(front, pt).to_string());
+                r.extend(design_cells(&pt.design));
+                let at = values.points.get(i);
+                r.extend(constraints.iter().enumerate().map(|(j, c)| {
+                    constraint_cell(c, at.and_then(|a| a.get(j).copied().flatten()))
+                }));
+                r
+            })
+            .collect();
+    let header_refs: Vec<&str> = header.iter().map(String::as_str).collect();
+    p.table(&header_refs, &rows, &[status_col, status_col + 1]);
+    p.paragraph(
+        "on the front: feasible and not dominated; dominated: an earlier point has as good an adhesion and no more wear; knee: the front's point farthest from its chord in normalised log coordinates; (breaks): outside the constraint's limits.",
+        Some("note"),
     );
-    p.heading("Report");
-    p.pre(&text(name, front, constraints));
+
+    if !constraints.is_empty() {
+        p.heading("Constraints");
+        let knee_at = front
+            .knee
+            .and_then(|k| front.points.iter().position(|p| p.index == k))
+            .and_then(|i| values.points.get(i));
+        let rows: Vec<Vec<String>> = constraints
+            .iter()
+            .enumerate()
+            .map(|(j, c)| {
+                let d = c.quantity.dimension();
+                let limit = |x: Option<f64>| x.map_or("—".to_string(), |v| format_quantity(v, d));
+                let at = |v: Option<&Vec<Option<f64>>>| {
+                    constraint_cell(c, v.and_then(|a| a.get(j).copied().flatten()))
+                };
+                vec![
+                    c.quantity.to_string(),
+                    limit(c.min),
+                    limit(c.max),
+                    at(knee_at),
+                    at(Some(&values.least_wear)),
+                    at(values.baseline.as_ref()),
+                ]
+            })
+            .collect();
+        p.table(
+            &[
+                "constraint",
+                "min",
+                "max",
+                "at the knee",
+                "least-wear design",
+                "baseline",
+            ],
+            &rows,
+            &[],
+        );
+    }
+    p.paragraph(
+        &format!(
+            "{} points, {} range probes, {} model evaluations, {} s.",
+            front.points.len(),
+            front.probes,
+            front.evaluations,
+            sig(front.time_seconds, 3)
+        ),
+        Some("note"),
+    );
     p.finish()
 }

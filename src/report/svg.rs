@@ -752,6 +752,130 @@ pub fn bar_chart(title: &str, value_label: &str, bars: &[(String, f64)]) -> Stri
     o
 }
 
+/// A horizontal bar chart of positive values on a log10 axis (e.g. the wear rate of
+/// each candidate material, which differ by decades): one bar per label, drawn from
+/// the axis' lowest decade, with its value (already worded by the caller) beside it.
+/// A bar whose value is not positive and finite is drawn as none, its text "—".
+/// 760 px wide; decades labelled below the bars.
+pub fn log_bar_chart(title: &str, value_label: &str, bars: &[(String, f64, String)]) -> String {
+    let w = 760.0;
+    let row = 30.0;
+    let top = 56.0;
+    let n = bars.len().max(1) as f64;
+    let h = top + row * n + 80.0;
+    // Room for the longest name at the left and the longest value at the right (at
+    // 13 px); a name longer than half the width is cut with an ellipsis.
+    let chars = |t: &str| t.chars().count() as f64;
+    let em = TEXT_EM * 13.0;
+    let longest = bars.iter().map(|b| chars(&b.0)).fold(0.0, f64::max);
+    let left = (24.0 + em * longest).clamp(120.0, w / 2.0);
+    let fits = ((left - 24.0) / em).floor() as usize;
+    let widest_value = bars.iter().map(|b| chars(&b.2)).fold(1.0, f64::max);
+    let right = w - 34.0 - em * widest_value;
+    let logs: Vec<f64> = bars
+        .iter()
+        .map(|b| b.1)
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .map(f64::log10)
+        .collect();
+    let lo = logs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = logs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let (lo, hi) = if lo.is_finite() && hi.is_finite() {
+        // Whole decades, at least one below the smallest bar so that it shows.
+        let a = (lo.floor() - if lo == lo.floor() { 1.0 } else { 0.0 }).max(-330.0);
+        let b = hi.ceil().max(a + 1.0).min(330.0);
+        (a, b)
+    } else {
+        (0.0, 1.0)
+    };
+    let px = |l: f64| left + (l - lo) / (hi - lo) * (right - left);
+    let mut o = String::new();
+    let _ = writeln!(
+        o,
+        "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" {FONT} font-size=\"13\">"
+    );
+    let _ = writeln!(o, "<title>{}</title>", escape(title));
+    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>");
+    let _ = writeln!(
+        o,
+        "<text class=\"title\" x=\"{:.2}\" y=\"28\" text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\">{}</text>",
+        w / 2.0,
+        escape(title)
+    );
+    let bottom = top + row * n;
+    // Decade grid and labels: at most about eight labels.
+    let decades = (hi - lo).round() as i64;
+    let step = (decades as f64 / 8.0).ceil().max(1.0) as i64;
+    let mut d = 0;
+    while d <= decades {
+        let l = lo + d as f64;
+        let x = px(l);
+        let _ = writeln!(
+            o,
+            "<line x1=\"{x:.2}\" y1=\"{:.2}\" x2=\"{x:.2}\" y2=\"{bottom:.2}\" stroke=\"#dddddd\"/>",
+            top - 4.0
+        );
+        let _ = writeln!(
+            o,
+            "<text class=\"tick\" x=\"{x:.2}\" y=\"{:.2}\" text-anchor=\"middle\">{}</text>",
+            bottom + 18.0,
+            escape(&tick_label(
+                format!("1e{}", l as i64).parse().unwrap_or(f64::NAN)
+            ))
+        );
+        d += step;
+    }
+    for (i, (label, v, text)) in bars.iter().enumerate() {
+        let y = top + row * i as f64;
+        let _ = writeln!(
+            o,
+            "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"end\">{}</text>",
+            left - 10.0,
+            y + row / 2.0 + 4.5,
+            escape(&if label.chars().count() > fits {
+                let mut t: String = label.chars().take(fits.saturating_sub(1)).collect();
+                t.push('…');
+                t
+            } else {
+                label.clone()
+            })
+        );
+        let drawn = v.is_finite() && *v > 0.0;
+        if drawn {
+            let x1 = px(v.log10().clamp(lo, hi));
+            let _ = writeln!(
+                o,
+                "<rect class=\"bar\" x=\"{left:.2}\" y=\"{:.2}\" width=\"{:.2}\" height=\"{:.2}\" fill=\"{}\"/>",
+                y + 5.0,
+                (x1 - left).max(0.5),
+                row - 10.0,
+                PALETTE[0]
+            );
+        }
+        let _ = writeln!(
+            o,
+            "<text class=\"value\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"end\">{}</text>",
+            w - 14.0,
+            y + row / 2.0 + 4.5,
+            escape(if drawn { text } else { "—" })
+        );
+    }
+    let _ = writeln!(
+        o,
+        "<line x1=\"{left:.2}\" y1=\"{:.2}\" x2=\"{left:.2}\" y2=\"{bottom:.2}\" stroke=\"black\"/>",
+        top - 4.0
+    );
+    let _ = writeln!(
+        o,
+        "<text class=\"x-label\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"14\">{}</text>",
+        (left + right) / 2.0,
+        h - 18.0,
+        escape(value_label)
+    );
+    let _ = writeln!(o, "</svg>");
+    o
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
