@@ -10,9 +10,13 @@
 //! * [`problem`]: the TOML problem-file schema, units, the material catalogue and
 //!   validation with precise errors.
 //! * [`report`]: rendering results as text, JSON and CSV.
+//! * [`documents`]: the command line's JSON documents (eval, optimize, pareto,
+//!   roughness) computed from a problem or a height map, for the CLI and the
+//!   Python package alike.
 
 pub mod accuracy;
 pub mod calibrate;
+pub mod documents;
 pub mod figures;
 pub mod model;
 pub mod optimize;

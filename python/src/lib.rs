@@ -13,15 +13,11 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 
-use wearopt::model::{
-    self, AsperityLaw, Attraction, Coefficients, EvaluationOptions, Model, Quadrature,
-};
-use wearopt::optimize::materials::rank_materials;
-use wearopt::optimize::pareto::{self, Silent};
-use wearopt::optimize::ParetoSpec;
-use wearopt::optimize::Study;
-use wearopt::problem::{catalogue, Problem};
+use wearopt::documents::{self, RoughnessOptions};
+use wearopt::model::{AsperityLaw, Attraction, Coefficients, Model, Quadrature};
+use wearopt::problem::Problem;
 use wearopt::report;
+use wearopt::surface::Levelling;
 use wearopt::sweep::{Method, Shard, Sweep, SweepError};
 
 fn value_error(message: impl Into<String>) -> PyErr {
@@ -62,14 +58,9 @@ fn load(source: &str, is_path: bool) -> Result<(Problem, String), String> {
     }
 }
 
-fn study(problem: &Problem) -> Study<'_> {
-    Study {
-        scene: &problem.scene,
-        design: &problem.study.design,
-        objective: problem.study.objective,
-        constraints: &problem.study.constraints,
-        settings: &problem.study.optimizer,
-    }
+/// A document as JSON text for the Python half to read.
+fn text(document: serde_json::Value) -> String {
+    document.to_string()
 }
 
 /// `wearopt eval FILE --format json`.
@@ -77,17 +68,7 @@ fn study(problem: &Problem) -> Study<'_> {
 fn evaluate_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<String> {
     py.detach(|| {
         let (problem, _) = load(&source, is_path)?;
-        let options = EvaluationOptions::default();
-        let evaluation = model::evaluate_with_other(&problem.scene, &options);
-        let sensitivities = model::sensitivities(&problem.scene, options.quadrature);
-        Ok(report::eval::json(&report::eval::EvalReport {
-            name: &problem.name,
-            scene: &problem.scene,
-            input_notes: &problem.notes,
-            scan: problem.scan.as_ref(),
-            evaluation: &evaluation,
-            sensitivities: &sensitivities,
-        }))
+        Ok(text(documents::eval_json(&problem)))
     })
     .map_err(|e: String| value_error(e))
 }
@@ -97,24 +78,9 @@ fn evaluate_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<Stri
 fn optimize_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<String> {
     py.detach(|| {
         let (problem, origin) = load(&source, is_path)?;
-        if !problem.study.materials.is_empty() {
-            let materials = problem
-                .study
-                .materials
-                .iter()
-                .map(|n| {
-                    catalogue::lookup(n).ok_or_else(|| {
-                        format!("{origin}: design.materials: {n:?} is not a catalogue material")
-                    })
-                })
-                .collect::<Result<Vec<_>, _>>()?;
-            let ranking = rank_materials(&study(&problem), &materials, None)
-                .map_err(|e| format!("{origin}: {e}"))?;
-            return Ok(report::materials::json(&problem.name, &ranking));
-        }
-        let optimum =
-            wearopt::optimize::optimize(&study(&problem)).map_err(|e| format!("{origin}: {e}"))?;
-        Ok(report::optimize::json(&problem.name, &optimum))
+        documents::optimize_json(&problem, &origin)
+            .map(text)
+            .map_err(|e| e.to_string())
     })
     .map_err(|e: String| value_error(e))
 }
@@ -130,30 +96,9 @@ fn pareto_json(
 ) -> PyResult<String> {
     py.detach(|| {
         let (problem, origin) = load(&source, is_path)?;
-        let Some(mut spec) = problem.study.pareto else {
-            return Err(format!(
-                "{origin}: no [pareto] section: add one to trade wear against adhesion, e.g.\n\n[pareto]\nadhesion = \"pull_off_force\"   # or \"work_of_adhesion\", \"elastic_adhesion_index\"\npoints = {}\ndirection = \"low\"             # \"high\" when more adhesion is wanted (a latch, a switch)",
-                ParetoSpec::DEFAULT_POINTS
-            ));
-        };
-        if problem.study.objective.is_none() {
-            return Err(format!(
-                "{origin}: no [objective]: add [objective] minimize = \"wear_rate\" to say what the front trades against adhesion"
-            ));
-        }
-        if let Some(n) = points {
-            if !(ParetoSpec::MIN_POINTS..=ParetoSpec::MAX_POINTS).contains(&n) {
-                return Err(format!(
-                    "--points {n}: must lie in {}..={}",
-                    ParetoSpec::MIN_POINTS,
-                    ParetoSpec::MAX_POINTS
-                ));
-            }
-            spec.points = n;
-        }
-        let front = pareto::pareto(&study(&problem), &spec, &Silent)
-            .map_err(|e| format!("{origin}: {e}"))?;
-        Ok(report::pareto::json(&problem.name, &front))
+        documents::pareto_json(&problem, &origin, points)
+            .map(text)
+            .map_err(|e| e.to_string())
     })
     .map_err(|e: String| value_error(e))
 }
@@ -442,63 +387,30 @@ fn roughness_json(
     pixel_size: Option<String>,
     height_unit: Option<String>,
 ) -> PyResult<String> {
-    use wearopt::problem::units::{parse_quantity, Dimension};
-    use wearopt::surface::psd::Psd;
-    use wearopt::surface::read::{self, parse_height_unit, Format, Overrides};
-    use wearopt::surface::{analyse, level as level_map, Levelling, Settings};
     py.detach(|| {
-        let length = |flag: &str, text: &str| -> Result<f64, String> {
-            let x = parse_quantity(text, Dimension::Length)
-                .map_err(|e| format!("{flag} {text:?}: {e}"))?;
-            if !(x.is_finite() && x > 0.0) {
-                return Err(format!("{flag} {text:?}: must be a positive finite length"));
-            }
-            Ok(x)
+        let level = match level.as_str() {
+            "none" => Ok(Levelling::None),
+            "plane" => Ok(Levelling::Plane),
+            "quadratic" => Ok(Levelling::Quadratic),
+            other => Err(format!(
+                "level {other:?}: expected \"none\", \"plane\" or \"quadratic\""
+            )),
         };
-        let overrides = Overrides {
-            pixel_size: pixel_size
-                .as_deref()
-                .map(|t| length("--pixel-size", t))
-                .transpose()?,
-            height_unit: height_unit
-                .as_deref()
-                .map(|t| {
-                    parse_height_unit(t).ok_or_else(|| {
-                        format!("--height-unit {t:?}: not a length unit; expected e.g. \"nm\", \"um\", \"m\" or \"1e-9\"")
-                    })
-                })
-                .transpose()?,
+        // The options' own checks come first, as they always have.
+        let options = RoughnessOptions::parse(
+            cutoff.as_deref(),
+            Levelling::Plane,
+            pixel_size.as_deref(),
+            height_unit.as_deref(),
+        )
+        .map_err(|e| e.to_string())?;
+        let options = RoughnessOptions {
+            level: level?,
+            ..options
         };
-        let cutoff = cutoff
-            .as_deref()
-            .map(|t| length("--cutoff", t))
-            .transpose()?;
-        let level_kind = match level.as_str() {
-            "none" => Levelling::None,
-            "plane" => Levelling::Plane,
-            "quadratic" => Levelling::Quadratic,
-            other => {
-                return Err(format!(
-                    "level {other:?}: expected \"none\", \"plane\" or \"quadratic\""
-                ))
-            }
-        };
-        let file = std::path::Path::new(&path);
-        let format = Format::from_path(file).unwrap_or(Format::Ascii);
-        let map = read::load(file, &overrides).map_err(|e| e.to_string())?;
-        let settings = Settings {
-            level: level_kind,
-            cutoff,
-        };
-        let roughness = analyse(&map, &settings).map_err(|e| format!("{path}: {e}"))?;
-        let levelled = level_map(&map, level_kind).map_err(|e| format!("{path}: {e}"))?;
-        let psd = Psd::of(&levelled);
-        Ok(report::roughness::json(&report::roughness::RoughnessReport {
-            file: &path,
-            format,
-            roughness: &roughness,
-            psd: Some(&psd),
-        }))
+        documents::roughness_json(std::path::Path::new(&path), &options)
+            .map(text)
+            .map_err(|e| e.to_string())
     })
     .map_err(|e: String| value_error(e))
 }

@@ -15,6 +15,7 @@ use std::process::ExitCode;
 use anyhow::{bail, Result};
 use clap::{Parser, Subcommand, ValueEnum};
 
+use wearopt::documents::{self, Optimized};
 use wearopt::model::{
     self, AsperityLaw, Attraction, Coefficients, EvaluationOptions, Model, Quadrature, Status,
 };
@@ -263,22 +264,19 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
 
 fn eval(file: PathBuf, format: EvalFormat, out: Option<PathBuf>) -> Result<ExitCode> {
     let problem = wearopt::problem::load(&file)?;
-    let options = EvaluationOptions::default();
-    let evaluation = model::evaluate_with_other(&problem.scene, &options);
-    let sensitivities = model::sensitivities(&problem.scene, options.quadrature);
-    let r = report::eval::EvalReport {
-        name: &problem.name,
-        scene: &problem.scene,
-        input_notes: &problem.notes,
-        scan: problem.scan.as_ref(),
-        evaluation: &evaluation,
-        sensitivities: &sensitivities,
-    };
+    let eval = documents::eval(&problem);
+    let evaluation = &eval.evaluation;
+    let r = eval.report(&problem);
     let text = match format {
         EvalFormat::Text => report::eval::text(&r),
-        EvalFormat::Json => report::eval::json(&r),
+        EvalFormat::Json => report::json_text(&report::eval::json_value(&r)),
         EvalFormat::Html => {
-            let curve = model::load_curve(&problem.scene, &evaluation, &options, 201);
+            let curve = model::load_curve(
+                &problem.scene,
+                evaluation,
+                &EvaluationOptions::default(),
+                201,
+            );
             report::eval::html(&r, &curve)
         }
     };
@@ -310,41 +308,38 @@ fn optimize(
         ));
     }
     let problem = wearopt::problem::load(&file)?;
-    if !problem.study.materials.is_empty() {
-        return materials::run(
-            &file,
-            &problem,
-            match format {
-                EvalFormat::Text => materials::Rendering::Text,
-                EvalFormat::Json => materials::Rendering::Json,
-                EvalFormat::Html => materials::Rendering::Html,
-            },
-            out.as_deref(),
-            verbose,
-            trace,
-        );
-    }
-    let study = wearopt::optimize::Study {
-        scene: &problem.scene,
-        design: &problem.study.design,
-        objective: problem.study.objective,
-        constraints: &problem.study.constraints,
-        settings: &problem.study.optimizer,
-    };
     let tables = verbose::Tables::default();
     let make = |start: usize| tables.observer(start);
-    let optimum = wearopt::optimize::optimize_observed(
-        &study,
+    let optimized = documents::optimize(
+        &problem,
+        &file.display().to_string(),
         verbose.then_some(&make as wearopt::optimize::ObserverFactory),
-    )
-    .map_err(|e| usage(format!("{}: {e}", file.display())))?;
+    )?;
     tables.print();
+    let optimum = match optimized {
+        Optimized::Optimum(o) => o,
+        Optimized::Ranking(ranking) => {
+            return materials::write(
+                &problem,
+                &ranking,
+                match format {
+                    EvalFormat::Text => materials::Rendering::Text,
+                    EvalFormat::Json => materials::Rendering::Json,
+                    EvalFormat::Html => materials::Rendering::Html,
+                },
+                out.as_deref(),
+                trace,
+            )
+        }
+    };
     if let Some(path) = trace {
         write_output(&path, &report::optimize::trace_csv(&optimum), "the trace")?;
     }
     let text = match format {
         EvalFormat::Text => report::optimize::text(&problem.name, &optimum),
-        EvalFormat::Json => report::optimize::json(&problem.name, &optimum),
+        EvalFormat::Json => {
+            report::json_text(&report::optimize::json_value(&problem.name, &optimum))
+        }
         EvalFormat::Html => {
             let curve = model::load_curve(
                 &optimum.scene,
@@ -472,6 +467,9 @@ pub fn exit_code(err: &anyhow::Error) -> u8 {
         || err.downcast_ref::<UsageError>().is_some()
         || err
             .downcast_ref::<wearopt::calibrate::CalibrationError>()
+            .is_some()
+        || err
+            .downcast_ref::<wearopt::documents::DocumentError>()
             .is_some()
     {
         2

@@ -11,8 +11,8 @@ use std::sync::Mutex;
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 
-use wearopt::optimize::pareto::{self, FrontPoint, FrontStatus, Observer};
-use wearopt::optimize::ParetoSpec;
+use wearopt::documents;
+use wearopt::optimize::pareto::{Front, FrontPoint, FrontStatus, Observer};
 use wearopt::optimize::Study;
 use wearopt::report::pareto as out;
 
@@ -124,7 +124,7 @@ impl Observer for Stream<'_> {
 /// The study's constraint quantities at every design of the front, the least-wear
 /// design and the baseline: one model evaluation each, of the scene the optimiser's
 /// own design space builds from the design.
-fn constraint_values(study: &Study, front: &pareto::Front) -> out::ConstraintValues {
+fn constraint_values(study: &Study, front: &Front) -> out::ConstraintValues {
     let space = wearopt::optimize::DesignSpace::new(study.scene, study.design);
     let options = wearopt::model::EvaluationOptions::default();
     let at = |design: &[f64]| -> Vec<Option<f64>> {
@@ -173,36 +173,14 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         ));
     }
     let problem = wearopt::problem::load(&args.file)?;
-    let file = args.file.display();
-    let Some(mut spec) = problem.study.pareto else {
-        return Err(usage(format!(
-            "{file}: no [pareto] section: add one to trade wear against adhesion, e.g.\n\n[pareto]\nadhesion = \"pull_off_force\"   # or \"work_of_adhesion\", \"elastic_adhesion_index\"\npoints = {}\ndirection = \"low\"             # \"high\" when more adhesion is wanted (a latch, a switch)",
-            ParetoSpec::DEFAULT_POINTS
-        )));
-    };
-    if problem.study.objective.is_none() {
-        return Err(usage(format!(
-            "{file}: no [objective]: add [objective] minimize = \"wear_rate\" to say what the front trades against adhesion"
-        )));
-    }
-    if let Some(n) = args.points {
-        if !(ParetoSpec::MIN_POINTS..=ParetoSpec::MAX_POINTS).contains(&n) {
-            return Err(usage(format!(
-                "--points {n}: must lie in {}..={}",
-                ParetoSpec::MIN_POINTS,
-                ParetoSpec::MAX_POINTS
-            )));
-        }
-        spec.points = n;
-    }
-    let study = Study {
-        scene: &problem.scene,
-        design: &problem.study.design,
-        objective: problem.study.objective,
-        constraints: &problem.study.constraints,
-        settings: &problem.study.optimizer,
-    };
-    let names: Vec<&'static str> = study.design.iter().map(|d| d.name.as_str()).collect();
+    let origin = args.file.display().to_string();
+    let spec = documents::pareto_spec(&problem, &origin, args.points)?;
+    let names: Vec<&'static str> = problem
+        .study
+        .design
+        .iter()
+        .map(|d| d.name.as_str())
+        .collect();
     let bar = progress_wanted().then(|| {
         let b = indicatif::ProgressBar::new(spec.points as u64);
         b.set_style(
@@ -230,8 +208,7 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         ParetoFormat::Json => stream.write(&out::json_head(&head)),
         ParetoFormat::Text | ParetoFormat::Html => {}
     }
-    let front =
-        pareto::pareto(&study, &spec, &stream).map_err(|e| usage(format!("{file}: {e}")))?;
+    let front = documents::pareto(&problem, &origin, &spec, &stream)?;
     if let Some(b) = &stream.bar {
         b.finish_and_clear();
     }
@@ -244,7 +221,7 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
             &problem.study.constraints,
         )),
         ParetoFormat::Html => {
-            let values = constraint_values(&study, &front);
+            let values = constraint_values(&documents::study(&problem), &front);
             let page = out::html(&problem.name, &front, &problem.study.constraints, &values);
             super::write_output(
                 args.out.as_deref().unwrap_or(std::path::Path::new("-")),

@@ -27,6 +27,11 @@ fn opt(x: Option<f64>) -> Value {
 
 /// One JSON object, SI units.
 pub fn json(r: &EvalReport) -> String {
+    super::json_text(&json_value(r))
+}
+
+/// The object [`json`] writes, as a value.
+pub fn json_value(r: &EvalReport) -> Value {
     let ev = r.evaluation;
     let mut v = super::words::evaluation_json(ev);
     if let Value::Object(obj) = &mut v {
@@ -83,9 +88,7 @@ pub fn json(r: &EvalReport) -> String {
         }
         obj.insert("sensitivities".into(), Value::Object(sens));
     }
-    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".to_string());
-    s.push('\n');
-    s
+    v
 }
 
 /// The asperity law in words, with the attraction's range under DMT.

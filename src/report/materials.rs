@@ -75,17 +75,19 @@ fn row_json(r: &MaterialResult) -> Value {
 /// (rows with `rank`, `material`, `status`, `objective`, `wear_rate`, `sigma`,
 /// `asperity_radius`, `work_of_adhesion`, `design`, `active_constraints`, …).
 pub fn json(name: &str, ranking: &MaterialRanking) -> String {
-    let v = json!({
+    super::json_text(&json_value(name, ranking))
+}
+
+/// The object [`json`] writes, as a value.
+pub fn json_value(name: &str, ranking: &MaterialRanking) -> Value {
+    json!({
         "name": name,
         "objective_name": ranking.objective_name,
         "method": METHOD,
         "best": ranking.best().map(|r| r.name()),
         "ranking": ranking.results.iter().map(row_json).collect::<Vec<_>>(),
         "time_seconds": ranking.time_seconds,
-    });
-    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
-    s.push('\n');
-    s
+    })
 }
 
 /// "Least wear rate: polysilicon (…); next … with ×3.2 the wear rate", or that none

@@ -17,6 +17,13 @@ pub mod sweep;
 pub mod units;
 pub mod words;
 
+/// A JSON value as the command line writes it: pretty-printed, one trailing newline.
+pub fn json_text(v: &serde_json::Value) -> String {
+    let mut s = serde_json::to_string_pretty(v).unwrap_or_else(|_| "null".to_string());
+    s.push('\n');
+    s
+}
+
 /// The SI unit of an objective (by its problem-file name).
 pub fn objective_unit(name: &str) -> &'static str {
     match name {

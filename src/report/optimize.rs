@@ -85,7 +85,12 @@ fn design_object(names: &[&str], values: &[f64]) -> Value {
 
 /// One JSON object, SI units.
 pub fn json(name: &str, o: &Optimum) -> String {
-    let v = json!({
+    super::json_text(&json_value(name, o))
+}
+
+/// The object [`json`] writes, as a value.
+pub fn json_value(name: &str, o: &Optimum) -> Value {
+    json!({
         "name": name,
         "status": o.status.as_str(),
         "objective_name": o.objective_name,
@@ -114,10 +119,7 @@ pub fn json(name: &str, o: &Optimum) -> String {
             "limit": b.limit,
             "side": b.side,
         })).collect::<Vec<_>>(),
-    });
-    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
-    s.push('\n');
-    s
+    })
 }
 
 /// The per-iteration trace of every start: error against run time.

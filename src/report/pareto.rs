@@ -106,22 +106,44 @@ fn design_object(names: &[&str], values: &[f64]) -> Value {
     Value::Object(m)
 }
 
+/// The head's members, in the order the streamed object writes them.
+fn head_members(h: &Head) -> [(&'static str, Value); 5] {
+    [
+        ("name", json!(h.name)),
+        ("adhesion_measure", json!(h.measure.as_str())),
+        ("direction", json!(h.direction.as_str())),
+        ("objective_name", json!(h.objective_name)),
+        ("design_variables", json!(h.names)),
+    ]
+}
+
 /// The JSON object's head, up to the opening of `points`.
 pub fn json_head(h: &Head) -> String {
-    let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
-    format!(
-        "{{\n  \"name\": {},\n  \"adhesion_measure\": {},\n  \"direction\": {},\n  \"objective_name\": {},\n  \"design_variables\": {},\n  \"points\": [\n",
-        s(json!(h.name)),
-        s(json!(h.measure.as_str())),
-        s(json!(h.direction.as_str())),
-        s(json!(h.objective_name)),
-        s(json!(h.names)),
-    )
+    let mut out = String::from("{\n");
+    for (k, v) in head_members(h) {
+        let _ = writeln!(
+            out,
+            "  {}: {},",
+            json!(k),
+            serde_json::to_string(&v).unwrap_or_else(|_| "null".into())
+        );
+    }
+    out.push_str("  \"points\": [\n");
+    out
 }
 
 /// One point of `points`, on one line; `first` leaves out the separating comma.
 pub fn json_point(names: &[&str], p: &FrontPoint, first: bool) -> String {
-    let v = json!({
+    format!(
+        "{}    {}",
+        if first { "" } else { ",\n" },
+        serde_json::to_string(&point_value(names, p)).unwrap_or_else(|_| "{}".into())
+    )
+}
+
+/// One point of `points`, as a value.
+fn point_value(names: &[&str], p: &FrontPoint) -> Value {
+    json!({
         "index": p.index,
         "target": p.target,
         "target_kind": p.target_kind,
@@ -135,16 +157,11 @@ pub fn json_point(names: &[&str], p: &FrontPoint, first: bool) -> String {
         "warm_started": p.warm_started,
         "evaluations": p.evaluations,
         "design": design_object(names, &p.design),
-    });
-    format!(
-        "{}    {}",
-        if first { "" } else { ",\n" },
-        serde_json::to_string(&v).unwrap_or_else(|_| "{}".into())
-    )
+    })
 }
 
-/// The rest of the object after the last point.
-pub fn json_tail(front: &Front) -> String {
+/// The members after `points`, as an object.
+fn tail_members(front: &Front) -> Map<String, Value> {
     let reference = |r: &crate::optimize::pareto::Reference| {
         json!({
             "adhesion": r.adhesion,
@@ -167,19 +184,46 @@ pub fn json_tail(front: &Front) -> String {
         "probes": front.probes,
         "evaluations": front.evaluations,
     });
+    match rest {
+        Value::Object(m) => m,
+        _ => Map::new(),
+    }
+}
+
+/// The rest of the object after the last point.
+pub fn json_tail(front: &Front) -> String {
+    let m = tail_members(front);
     let mut out = String::from("\n  ],\n");
-    if let Value::Object(m) = rest {
-        let n = m.len();
-        for (i, (k, v)) in m.into_iter().enumerate() {
-            let v = serde_json::to_string_pretty(&v)
-                .unwrap_or_else(|_| "null".into())
-                .replace('\n', "\n  ");
-            let _ = write!(out, "  {}: {v}", json!(k));
-            out.push_str(if i + 1 < n { ",\n" } else { "\n" });
-        }
+    let n = m.len();
+    for (i, (k, v)) in m.into_iter().enumerate() {
+        let v = serde_json::to_string_pretty(&v)
+            .unwrap_or_else(|_| "null".into())
+            .replace('\n', "\n  ");
+        let _ = write!(out, "  {}: {v}", json!(k));
+        out.push_str(if i + 1 < n { ",\n" } else { "\n" });
     }
     out.push_str("}\n");
     out
+}
+
+/// The object [`json`] writes, as a value.
+pub fn json_value(name: &str, front: &Front) -> Value {
+    let mut m = Map::new();
+    for (k, v) in head_members(&Head::of(name, front)) {
+        m.insert(k.to_string(), v);
+    }
+    m.insert(
+        "points".to_string(),
+        Value::Array(
+            front
+                .points
+                .iter()
+                .map(|p| point_value(&front.names, p))
+                .collect(),
+        ),
+    );
+    m.extend(tail_members(front));
+    Value::Object(m)
 }
 
 /// The whole JSON object.

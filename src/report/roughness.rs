@@ -87,6 +87,11 @@ pub fn roughness_block(r: &RoughnessReport) -> String {
 
 /// One JSON object, SI units.
 pub fn json(r: &RoughnessReport) -> String {
+    super::json_text(&json_value(r))
+}
+
+/// The object [`json`] writes, as a value.
+pub fn json_value(r: &RoughnessReport) -> Value {
     let g = r.roughness;
     let m = &g.moments;
     let p = &g.parameters;
@@ -109,7 +114,7 @@ pub fn json(r: &RoughnessReport) -> String {
             "filled_missing": psd.filled,
         })
     });
-    let v = json!({
+    json!({
         "file": r.file,
         "format": r.format,
         "nx": g.nx,
@@ -140,10 +145,7 @@ pub fn json(r: &RoughnessReport) -> String {
         "summits": summits,
         "warnings": g.warnings.iter().map(warning_text).collect::<Vec<_>>(),
         "psd": psd,
-    });
-    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".to_string());
-    s.push('\n');
-    s
+    })
 }
 
 /// A report for people.
