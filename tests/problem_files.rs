@@ -79,6 +79,11 @@ fn micro_gear_in_si() {
     assert_eq!(s.asperity_density, 1e13);
     assert!(p
         .notes
+        .contains(&problem::InputNote::HardnessFromCatalogue {
+            material: "polysilicon",
+            hardness: 10e9
+        }));
+    assert!(wearopt::report::words::input_notes(&p.notes)
         .iter()
         .any(|n| n == "hardness taken from catalogue: polysilicon, 10 GPa"));
 
@@ -241,10 +246,18 @@ fn catalogue_override_is_noted() {
     let p = problem::parse(&text, "t.toml").unwrap();
     assert_eq!(p.scene.youngs_modulus_a, 130e9);
     assert_eq!(p.scene.poisson_ratio_a, 0.22);
-    assert!(p
-        .notes
+    assert!(p.notes.iter().any(|n| matches!(
+        n,
+        problem::InputNote::CatalogueOverride {
+            body: problem::BodyKey::A,
+            property: problem::CatalogueProperty::YoungsModulus,
+            value,
+            ..
+        } if *value == 130e9
+    )));
+    assert!(wearopt::report::words::input_notes(&p.notes)
         .iter()
-        .any(|n| n.contains("overrides the catalogue")));
+        .any(|n| n.starts_with("bodies.a: youngs_modulus 130 GPa overrides the catalogue value")));
 }
 
 /// Each malformed file, the line its error must point at, and the parts its message

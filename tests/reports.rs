@@ -297,3 +297,22 @@ fn stiction_under_both_laws_in_the_transition() {
     let m = v["stiction"]["other_model"]["margin"].as_f64().unwrap();
     assert!((m - 4.2785e-6 / 2e-6).abs() < 1e-4 * m, "{m}");
 }
+
+/// The reader's notes reach eval JSON as words in `notes` (as before) and as values in
+/// `input_note_details`, one per note, in the same order.
+#[test]
+fn input_notes_are_words_and_values() {
+    let t = stdout_of(&["eval", "problems/micro-gear.toml", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&t).unwrap();
+    let details = v["input_note_details"].as_array().unwrap();
+    assert_eq!(details.len(), 1, "{details:?}");
+    assert_eq!(details[0]["kind"], "hardness_from_catalogue");
+    assert_eq!(details[0]["material"], "polysilicon");
+    assert_eq!(details[0]["hardness"], 10e9);
+    assert_eq!(
+        v["notes"][0],
+        "hardness taken from catalogue: polysilicon, 10 GPa"
+    );
+    let text = stdout_of(&["eval", "problems/micro-gear.toml"]);
+    assert!(text.contains("note: hardness taken from catalogue: polysilicon, 10 GPa"));
+}

@@ -47,6 +47,7 @@
 pub mod catalogue;
 mod error;
 mod locate;
+pub mod notes;
 pub mod raw;
 mod study;
 mod topography;
@@ -60,6 +61,7 @@ use serde::Serialize;
 use toml::Spanned;
 
 pub use error::{edit_distance, suggest, Location, ProblemError};
+pub use notes::{BodyKey, CatalogueProperty, InputNote};
 pub use study::{Dimensioned, Study};
 pub use topography::ScanSource;
 
@@ -87,8 +89,9 @@ pub struct Problem {
     /// Design variables, objective, constraints, Pareto front, optimiser settings.
     pub study: Study,
     /// Things the loader decided for the user, to show beside the results (values taken
-    /// from the catalogue, overrides, implausible but accepted values).
-    pub notes: Vec<String>,
+    /// from the catalogue, overrides, implausible but accepted values); the report
+    /// stage words them.
+    pub notes: Vec<InputNote>,
     /// The measured scan σ, R and N came from (`[roughness] topography`), if any.
     pub scan: Option<ScanSource>,
 }
@@ -371,7 +374,7 @@ impl Accept {
 struct Reader<'a> {
     text: &'a str,
     origin: &'a str,
-    notes: Vec<String>,
+    notes: Vec<InputNote>,
 }
 
 impl Reader<'_> {
@@ -518,10 +521,11 @@ struct Body {
 impl Reader<'_> {
     fn body(
         &mut self,
-        key: &str,
+        body: BodyKey,
         raw: &Spanned<RawBody>,
         rigid_allowed: bool,
     ) -> Result<Body, ProblemError> {
+        let key = body.table();
         let span = raw.span();
         let raw = raw.get_ref();
         let material = raw
@@ -540,12 +544,13 @@ impl Reader<'_> {
             (Some(v), m) => {
                 let e = self.quantity(&format!("{key}.youngs_modulus"), v, e_accept)?;
                 if let Some(m) = m {
-                    self.notes.push(format!(
-                        "{key}: youngs_modulus {} overrides the catalogue value {} for {}",
-                        format_quantity(e, Dimension::Pressure),
-                        format_quantity(m.youngs_modulus, Dimension::Pressure),
-                        m.name
-                    ));
+                    self.notes.push(InputNote::CatalogueOverride {
+                        body,
+                        property: CatalogueProperty::YoungsModulus,
+                        value: e,
+                        catalogue_value: m.youngs_modulus,
+                        material: m.name,
+                    });
                 }
                 e
             }
@@ -558,12 +563,13 @@ impl Reader<'_> {
             (Some(v), m) => {
                 let nu = self.quantity(&format!("{key}.poisson_ratio"), v, nu_accept)?;
                 if let Some(m) = m {
-                    self.notes.push(format!(
-                        "{key}: poisson_ratio {} overrides the catalogue value {} for {}",
-                        format_number(nu),
-                        format_number(m.poisson_ratio),
-                        m.name
-                    ));
+                    self.notes.push(InputNote::CatalogueOverride {
+                        body,
+                        property: CatalogueProperty::PoissonRatio,
+                        value: nu,
+                        catalogue_value: m.poisson_ratio,
+                        material: m.name,
+                    });
                 }
                 nu
             }
@@ -711,8 +717,8 @@ impl Problem {
             Some(&bspan),
             "the counterface, e.g. b = { material = \"polysilicon\" } or b = { youngs_modulus = \"inf\" } (rigid)",
         )?;
-        let body_a = r.body("bodies.a", a, false)?;
-        let body_b = r.body("bodies.b", b, true)?;
+        let body_a = r.body(BodyKey::A, a, false)?;
+        let body_b = r.body(BodyKey::B, b, true)?;
 
         // [interface]
         let interface = r.required(&raw.interface, "table [interface]", None, INTERFACE_HINT)?;
@@ -727,11 +733,10 @@ impl Problem {
                     .why("hardness of the softer body"),
             )?,
             (None, Some(m)) => {
-                r.notes.push(format!(
-                    "hardness taken from catalogue: {}, {}",
-                    m.name,
-                    format_quantity(m.hardness, Dimension::Pressure)
-                ));
+                r.notes.push(InputNote::HardnessFromCatalogue {
+                    material: m.name,
+                    hardness: m.hardness,
+                });
                 m.hardness
             }
             (None, None) => {
@@ -765,24 +770,22 @@ impl Problem {
             if work_of_adhesion > 0.0
                 && (work_of_adhesion < lo / 10.0 || work_of_adhesion > hi * 10.0)
             {
-                r.notes.push(format!(
-                    "work_of_adhesion {} is far outside the typical range {}-{} J/m^2 for {} (catalogue)",
-                    format_quantity(work_of_adhesion, Dimension::SurfaceEnergy),
-                    format_number(lo),
-                    format_number(hi),
-                    m.name
-                ));
+                r.notes.push(InputNote::AtypicalWorkOfAdhesion {
+                    value: work_of_adhesion,
+                    typical_min: lo,
+                    typical_max: hi,
+                    material: m.name,
+                });
             }
         }
         if let (Some(ma), Some(mb)) = (body_a.material, body_b.material) {
             if mb.hardness < ma.hardness {
-                r.notes.push(format!(
-                    "body b ({}, H = {}) is softer than body a ({}, H = {}); the model takes a as the rough, softer body",
-                    mb.name,
-                    format_quantity(mb.hardness, Dimension::Pressure),
-                    ma.name,
-                    format_quantity(ma.hardness, Dimension::Pressure)
-                ));
+                r.notes.push(InputNote::SofterCounterface {
+                    material_a: ma.name,
+                    hardness_a: ma.hardness,
+                    material_b: mb.name,
+                    hardness_b: mb.hardness,
+                });
             }
         }
 
@@ -1342,9 +1345,10 @@ asperity_density = "10 um^-2"
         assert_eq!(p.scene.hardness, 10e9);
         assert_eq!(p.scene.wear_area, WearArea::Total);
         assert_eq!(p.scene.interatomic_distance, DEFAULT_INTERATOMIC_DISTANCE);
-        assert!(p
-            .notes
-            .contains(&"hardness taken from catalogue: polysilicon, 10 GPa".to_string()));
+        assert!(p.notes.contains(&InputNote::HardnessFromCatalogue {
+            material: "polysilicon",
+            hardness: 10e9
+        }));
         assert_eq!(p.study, Study::default());
     }
 

@@ -11,8 +11,8 @@ pub struct EvalReport<'a> {
     pub name: &'a str,
     /// The scene as evaluated.
     pub scene: &'a Scene,
-    /// Notes from reading the problem file (defaults taken, …).
-    pub input_notes: &'a [String],
+    /// Notes from reading the problem file (catalogue values taken, overrides, …).
+    pub input_notes: &'a [crate::problem::InputNote],
     /// The evaluation.
     pub evaluation: &'a Evaluation,
     /// Wear-rate elasticities.
@@ -41,17 +41,10 @@ pub fn json_value(r: &EvalReport) -> Value {
                 obj.insert(k, x);
             }
         }
-        let mut warnings = super::words::warnings(ev);
-        warnings.extend(
-            r.input_notes
-                .iter()
-                .filter(|n| n.starts_with("warning"))
-                .cloned(),
-        );
-        obj.insert("warnings".into(), json!(warnings));
-        let mut notes: Vec<String> = r.input_notes.to_vec();
+        let mut notes = super::words::input_notes(r.input_notes);
         notes.extend(super::words::notes(ev));
         obj.insert("notes".into(), json!(notes));
+        obj.insert("input_note_details".into(), json!(r.input_notes));
         obj.insert("name".into(), json!(r.name));
         // The stiction verdict under the other law too, where eval computed it.
         if let (Some(Value::Object(st)), Some(other)) =
@@ -179,13 +172,7 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
     let sc = r.scene;
     let mut p = super::html::Page::new(&format!("wearopt eval — {}", r.name));
     p.paragraph(&format!("Status: {}", ev.status.as_str()), Some("status"));
-    let mut warnings = super::words::warnings(ev);
-    warnings.extend(
-        r.input_notes
-            .iter()
-            .filter(|n| n.starts_with("warning"))
-            .cloned(),
-    );
+    let warnings = super::words::warnings(ev);
     p.list(
         &warnings
             .iter()
@@ -231,7 +218,7 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
         vec!["wear coefficient k".into(), sig_exp(sc.wear_coefficient, 3)],
     ];
     p.table(&["input", "value"], &rows, &[]);
-    p.list(r.input_notes, "note");
+    p.list(&super::words::input_notes(r.input_notes), "note");
     p.heading("Indices and regime");
     let i = &ev.indices;
     p.table(
@@ -445,7 +432,7 @@ pub fn text(r: &EvalReport) -> String {
             WearArea::Plastic => "plastic junctions only",
         }
     ));
-    for n in r.input_notes {
+    for n in super::words::input_notes(r.input_notes) {
         line(format!("  note: {n}"));
     }
     line(String::new());

@@ -4,9 +4,10 @@
 
 use serde_json::{json, Value};
 
-use super::units::{format_quantity, sig_exp};
+use super::units::{format_number, format_quantity, sig_exp};
 use crate::model::{Evaluation, Note, ScalarInput, Warning};
 use crate::problem::units::Dimension;
+use crate::problem::{CatalogueProperty, InputNote};
 
 /// The symbol, name and dimension of a checked input.
 fn input_words(i: ScalarInput) -> (&'static str, Dimension) {
@@ -159,6 +160,61 @@ pub fn note(n: &Note) -> String {
     }
 }
 
+/// A note of the problem-file reader in words.
+pub fn input_note(n: &InputNote) -> String {
+    match n {
+        InputNote::CatalogueOverride {
+            body,
+            property,
+            value,
+            catalogue_value,
+            material,
+        } => {
+            let q = |x: f64| match property {
+                CatalogueProperty::YoungsModulus => format_quantity(x, Dimension::Pressure),
+                CatalogueProperty::PoissonRatio => format_number(x),
+            };
+            format!(
+                "{}: {} {} overrides the catalogue value {} for {material}",
+                body.table(),
+                property.key(),
+                q(*value),
+                q(*catalogue_value)
+            )
+        }
+        InputNote::HardnessFromCatalogue { material, hardness } => format!(
+            "hardness taken from catalogue: {material}, {}",
+            format_quantity(*hardness, Dimension::Pressure)
+        ),
+        InputNote::AtypicalWorkOfAdhesion {
+            value,
+            typical_min,
+            typical_max,
+            material,
+        } => format!(
+            "work_of_adhesion {} is far outside the typical range {} to {} for {material} (catalogue)",
+            format_quantity(*value, Dimension::SurfaceEnergy),
+            format_quantity(*typical_min, Dimension::SurfaceEnergy),
+            format_quantity(*typical_max, Dimension::SurfaceEnergy)
+        ),
+        InputNote::SofterCounterface {
+            material_a,
+            hardness_a,
+            material_b,
+            hardness_b,
+        } => format!(
+            "body b ({material_b}, H = {}) is softer than body a ({material_a}, H = {}); the model takes a as the rough, softer body",
+            format_quantity(*hardness_b, Dimension::Pressure),
+            format_quantity(*hardness_a, Dimension::Pressure)
+        ),
+    }
+}
+
+/// Every note of the problem-file reader in words.
+pub fn input_notes(notes: &[InputNote]) -> Vec<String> {
+    notes.iter().map(input_note).collect()
+}
+
 /// Every warning of an evaluation in words.
 pub fn warnings(ev: &Evaluation) -> Vec<String> {
     ev.warnings.iter().map(warning).collect()
@@ -185,6 +241,57 @@ pub fn evaluation_json(ev: &Evaluation) -> Value {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn input_notes_are_worded_with_units() {
+        use crate::problem::BodyKey;
+        let n = InputNote::CatalogueOverride {
+            body: BodyKey::A,
+            property: CatalogueProperty::YoungsModulus,
+            value: 130e9,
+            catalogue_value: 160e9,
+            material: "polysilicon",
+        };
+        assert_eq!(
+            input_note(&n),
+            "bodies.a: youngs_modulus 130 GPa overrides the catalogue value 160 GPa for polysilicon"
+        );
+        let n = InputNote::CatalogueOverride {
+            body: BodyKey::B,
+            property: CatalogueProperty::PoissonRatio,
+            value: 0.3,
+            catalogue_value: 0.22,
+            material: "polysilicon",
+        };
+        assert_eq!(
+            input_note(&n),
+            "bodies.b: poisson_ratio 0.3 overrides the catalogue value 0.22 for polysilicon"
+        );
+        let n = InputNote::AtypicalWorkOfAdhesion {
+            value: 5.0,
+            typical_min: 0.02,
+            typical_max: 0.1,
+            material: "polysilicon",
+        };
+        assert_eq!(
+            input_note(&n),
+            "work_of_adhesion 5 J/m² is far outside the typical range 20 mJ/m² to 100 mJ/m² for polysilicon (catalogue)"
+        );
+        let n = InputNote::SofterCounterface {
+            material_a: "silicon carbide",
+            hardness_a: 28e9,
+            material_b: "gold",
+            hardness_b: 1e9,
+        };
+        assert_eq!(
+            input_note(&n),
+            "body b (gold, H = 1 GPa) is softer than body a (silicon carbide, H = 28 GPa); the model takes a as the rough, softer body"
+        );
+        // The structured value serialises with its kind, for JSON readers.
+        let v = serde_json::to_value(&n).unwrap();
+        assert_eq!(v["kind"], "softer_counterface");
+        assert_eq!(v["hardness_b"], 1e9);
+    }
 
     #[test]
     fn a_forgotten_unit_is_guessed() {
