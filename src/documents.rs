@@ -36,6 +36,15 @@ use crate::surface::{analyse, level, Levelling, Roughness, Settings, SurfaceErro
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum DocumentError {
+    /// The problem's scene is not one the model can evaluate (a problem built
+    /// or changed by hand; the loader builds only valid scenes).
+    #[error("{origin}: scene: {error}")]
+    Scene {
+        /// The problem's origin.
+        origin: String,
+        /// The field, its value and what is accepted.
+        error: crate::model::InputError,
+    },
     /// `[design] materials` names a material the catalogue does not hold.
     #[error("{origin}: design.materials: {name:?} is not a catalogue material")]
     UnknownMaterial {
@@ -115,6 +124,17 @@ pub enum DocumentError {
     },
 }
 
+/// The problem's scene, checked ([`crate::model::Scene::validate`]).
+fn valid_scene(problem: &Problem, origin: &str) -> Result<(), DocumentError> {
+    problem
+        .scene
+        .validate()
+        .map_err(|error| DocumentError::Scene {
+            origin: origin.to_string(),
+            error,
+        })
+}
+
 /// The optimiser's view of a problem's study (what every study command runs).
 pub fn study(problem: &Problem) -> Study<'_> {
     Study {
@@ -152,18 +172,22 @@ impl Eval {
     }
 }
 
-/// Evaluates the problem's scene with the default options, as `wearopt eval` does.
-pub fn eval(problem: &Problem) -> Eval {
+/// Evaluates the problem's scene with the default options, as `wearopt eval`
+/// does. `origin` names the problem in error messages.
+pub fn eval(problem: &Problem, origin: &str) -> Result<Eval, DocumentError> {
+    valid_scene(problem, origin)?;
     let options = EvaluationOptions::default();
-    Eval {
+    Ok(Eval {
         evaluation: model::evaluate_with_other(&problem.scene, &options),
         sensitivities: model::sensitivities(&problem.scene, options.quadrature),
-    }
+    })
 }
 
 /// The document of `wearopt eval FILE --format json`.
-pub fn eval_json(problem: &Problem) -> Value {
-    report::eval::json_value(&eval(problem).report(problem))
+pub fn eval_json(problem: &Problem, origin: &str) -> Result<Value, DocumentError> {
+    Ok(report::eval::json_value(
+        &eval(problem, origin)?.report(problem),
+    ))
 }
 
 // ---------------------------------------------------------------- optimize
@@ -196,6 +220,7 @@ pub fn optimize(
     origin: &str,
     observers: Option<ObserverFactory>,
 ) -> Result<Optimized, DocumentError> {
+    valid_scene(problem, origin)?;
     let optimize_error = |error| DocumentError::Optimize {
         origin: origin.to_string(),
         error,
@@ -264,6 +289,7 @@ pub fn pareto(
     spec: &ParetoSpec,
     observer: &dyn Observer,
 ) -> Result<Front, DocumentError> {
+    valid_scene(problem, origin)?;
     pareto::pareto(&study(problem), spec, observer).map_err(|error| DocumentError::Pareto {
         origin: origin.to_string(),
         error,

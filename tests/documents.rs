@@ -76,7 +76,8 @@ const PROBLEMS: [&str; 9] = [
 fn eval_documents_equal_the_cli_json() {
     for file in PROBLEMS {
         let (cli, _) = cli_json(&["eval", file, "--format", "json"]);
-        assert_eq!(documents::eval_json(&load(file)), cli, "{file}");
+        let doc = documents::eval_json(&load(file), file).expect("a valid scene");
+        assert_eq!(doc, cli, "{file}");
     }
 }
 

@@ -67,8 +67,10 @@ fn text(document: serde_json::Value) -> String {
 #[pyfunction]
 fn evaluate_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<String> {
     py.detach(|| {
-        let (problem, _) = load(&source, is_path)?;
-        Ok(text(documents::eval_json(&problem)))
+        let (problem, origin) = load(&source, is_path)?;
+        documents::eval_json(&problem, &origin)
+            .map(text)
+            .map_err(|e| e.to_string())
     })
     .map_err(|e: String| value_error(e))
 }

@@ -264,7 +264,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
 
 fn eval(file: PathBuf, format: EvalFormat, out: Option<PathBuf>) -> Result<ExitCode> {
     let problem = wearopt::problem::load(&file)?;
-    let eval = documents::eval(&problem);
+    let eval = documents::eval(&problem, &file.display().to_string())?;
     let evaluation = &eval.evaluation;
     let r = eval.report(&problem);
     let text = match format {

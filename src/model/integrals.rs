@@ -20,6 +20,10 @@ use super::scaled::Scaled;
 use super::special::{gauss_scaled, kappa, tail0, tail1};
 
 /// Accuracy settings of the elastic quadrature (the only non-closed-form part).
+///
+/// Build them with [`Quadrature::new`] (or take the default): settings that
+/// fail [`Quadrature::check`] never make the model panic, but its numbers then
+/// mean nothing.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Quadrature {
     /// Gauss–Legendre points per panel; one of [`gauss::ORDERS`].
@@ -62,35 +66,64 @@ impl Quadrature {
             .iter()
             .find(|(below, _)| level < *below - 1e-9)
             .map_or(4, |&(_, n)| n);
-        wanted.min(self.order)
+        // The largest supported order not above the settings' (4 at least), so
+        // that settings built without `check` never ask for a missing rule.
+        let cap = wanted.min(self.order);
+        gauss::ORDERS
+            .iter()
+            .rev()
+            .copied()
+            .find(|&n| n <= cap)
+            .unwrap_or(gauss::ORDERS[0])
     }
 
-    /// Checks the settings; returns a message naming the bad field.
+    /// Settings from their three values, checked as [`Quadrature::check`] does.
+    pub fn new(
+        order: usize,
+        log_weight_step: f64,
+        log_weight_cut: f64,
+    ) -> Result<Self, super::InputError> {
+        let q = Quadrature {
+            order,
+            log_weight_step,
+            log_weight_cut,
+        };
+        q.check()?;
+        Ok(q)
+    }
+
+    /// Checks the settings: `order` one of [`gauss::ORDERS`], `log_weight_cut`
+    /// in [10, 200], and `log_weight_step` giving 1 to 31 panels per side
+    /// (`log_weight_cut / log_weight_step` in [1, 31]: at most
+    /// [`Quadrature::MAX_PANELS`] breakpoints).
+    pub fn check(&self) -> Result<(), super::InputError> {
+        use super::scene::check;
+        check(
+            "order",
+            self.order as f64,
+            gauss::ORDERS.contains(&self.order),
+            "one of 4, 6, 8, 12, 16, 20, 24, 32",
+        )?;
+        let cut = self.log_weight_cut;
+        check(
+            "log_weight_cut",
+            cut,
+            (10.0..=200.0).contains(&cut),
+            "in [10, 200]",
+        )?;
+        let panels = cut / self.log_weight_step;
+        check(
+            "log_weight_step",
+            self.log_weight_step,
+            panels.is_finite() && panels >= 1.0 && panels * 2.0 + 2.0 <= Self::MAX_PANELS as f64,
+            "such that log_weight_cut / log_weight_step lies in [1, 31]",
+        )
+    }
+
+    /// Checks the settings; returns a message naming the bad field
+    /// ([`Quadrature::check`] in words).
     pub fn validate(&self) -> Result<(), String> {
-        if !gauss::ORDERS.contains(&self.order) {
-            return Err(format!(
-                "quadrature order {} is not one of {:?}",
-                self.order,
-                gauss::ORDERS
-            ));
-        }
-        if !(self.log_weight_cut >= 10.0 && self.log_weight_cut <= 200.0) {
-            return Err(format!(
-                "log_weight_cut {} must lie in [10, 200]",
-                self.log_weight_cut
-            ));
-        }
-        let panels = self.log_weight_cut / self.log_weight_step;
-        if !(panels.is_finite() && panels >= 1.0 && panels * 2.0 + 2.0 <= Self::MAX_PANELS as f64) {
-            return Err(format!(
-                "log_weight_step {} gives {} panels per side; it must lie in [{}, {}]",
-                self.log_weight_step,
-                panels,
-                self.log_weight_cut * 2.0 / (Self::MAX_PANELS as f64 - 2.0),
-                self.log_weight_cut
-            ));
-        }
-        Ok(())
+        self.check().map_err(|e| e.to_string())
     }
 }
 
@@ -565,6 +598,12 @@ fn walk_levels(
         out[n] = d;
         n += 1;
         if level >= cut {
+            return n;
+        }
+        if n == out.len() {
+            // Only settings that fail `Quadrature::check` (a step of 0, a NaN
+            // cut) get here: end at the limit rather than overrun the buffer.
+            out[n - 1] = limit;
             return n;
         }
     }

@@ -107,7 +107,7 @@ impl Shard {
 }
 
 /// Bad sweep settings (bad input).
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SweepError {
     /// No `[design]` variables to vary.
     #[error("the study has no [design] variables: nothing to sweep (add e.g. sigma = {{ min = \"0.5 nm\", max = \"20 nm\" }})")]
@@ -143,6 +143,9 @@ pub enum SweepError {
         /// The nearest m^n above.
         above: u64,
     },
+    /// The study's scene is not one the model can evaluate.
+    #[error("scene: {0}")]
+    Scene(crate::model::InputError),
     /// A shard outside `0..count`.
     #[error("shard {index}/{count}: must be I/N with 0 <= I < N and N >= 1")]
     Shard {
@@ -209,6 +212,7 @@ impl Sweep {
         samples: u64,
         seed: u64,
     ) -> Result<Sweep, SweepError> {
+        scene.validate().map_err(SweepError::Scene)?;
         let dims = design.len();
         if dims == 0 {
             return Err(SweepError::NoDesign);
