@@ -18,8 +18,11 @@ use std::collections::HashMap;
 use common::{num, table};
 use wearopt::accuracy::finite_difference::{self, StepRule};
 use wearopt::accuracy::reference::ReferenceModel;
-use wearopt::accuracy::{self, Quantity, Row, WorkPrecision};
-use wearopt::model::{Coefficients, Model, Quadrature, SensitivityParameter};
+use wearopt::accuracy::{self, Quantity, Row, RowLaw, WorkPrecision};
+use wearopt::model::{
+    AsperityLaw, Attraction, AttractionKind, Coefficients, Model, Quadrature, Scaled,
+    SensitivityParameter,
+};
 
 const REFERENCE_TOLERANCE: f64 = 2e-15;
 const DEFAULT_TOLERANCE: f64 = 1e-13;
@@ -226,11 +229,16 @@ fn csv_has_the_contract_columns() {
         is_default,
         samples: 3,
         evaluations_per_value: 1,
+        law: RowLaw::Jkr,
     };
+    let mut dmt = row(Quantity::NoncontactLoad, "order=20;step=12;cut=46", true);
+    dmt.law = RowLaw::Dmt(AttractionKind::Dugdale);
+    dmt.max_rel_error = f64::INFINITY;
     let wp = WorkPrecision {
         rows: vec![
             row(Quantity::Load, "order=20;step=6;cut=46", true),
             row(Quantity::Gradient, "fd=central;delta=1e-4", false),
+            dmt,
         ],
         grid_points: 3,
         wear_points: 0,
@@ -238,21 +246,38 @@ fn csv_has_the_contract_columns() {
         reference_error: 1e-15,
         reference_gradient_error: 0.0,
         scenes: vec![],
+        dmt_grid_points: 1,
+        dmt_reference_error: 1e-14,
     };
     let csv = wearopt::report::accuracy::csv(&wp);
     let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
-        Some("quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default")
+        Some("quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default,adhesion_model,attraction")
     );
     assert_eq!(
         lines.next(),
-        Some("load,order=20;step=6;cut=46,2.5e-14,0,1234.5,true")
+        Some("load,order=20;step=6;cut=46,2.5e-14,0,1234.5,true,jkr,")
     );
     assert_eq!(
         lines.next(),
-        Some("gradient,fd=central;delta=1e-4,2.5e-14,0,1234.5,false")
+        Some("gradient,fd=central;delta=1e-4,2.5e-14,0,1234.5,false,jkr,")
     );
+    assert_eq!(
+        lines.next(),
+        Some("noncontact_load,order=20;step=12;cut=46,inf,0,1234.5,true,dmt,dugdale")
+    );
+    // JSON: the same rows, a non-finite error as null.
+    let v: serde_json::Value =
+        serde_json::from_str(&wearopt::report::accuracy::json(&wp)).expect("valid JSON");
+    let rows = v["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    assert_eq!(rows[0]["adhesion_model"], "jkr");
+    assert!(rows[0]["attraction"].is_null());
+    assert_eq!(rows[2]["quantity"], "noncontact_load");
+    assert_eq!(rows[2]["attraction"], "dugdale");
+    assert!(rows[2]["max_rel_error"].is_null());
+    assert_eq!(v["dmt_reference_error"], 1e-14);
     let svg = wearopt::report::accuracy::svg(&wp);
     assert!(svg.contains("<svg") && svg.trim_end().ends_with("</svg>"));
     for label in [
@@ -288,4 +313,89 @@ fn default_quadrature_just_left_of_zero() {
         }
     }
     assert!(worst.0 <= DEFAULT_TOLERANCE, "{:e} at {}", worst.0, worst.1);
+}
+
+/// The DMT reference (`ReferenceModel::with_law`: Hertz load Δ^{3/2} − c_0 and the
+/// attraction in the gap, by adaptive G7K15) against the 40-digit mpmath table
+/// `reference_dmt_points.csv` (scripts/reference_dmt.py, two methods ≥ 25 digits
+/// apart). Contact loads against |elastic| + |plastic|, areas against themselves,
+/// the non-contact load against |N| (it never crosses zero), at the table's own
+/// scale e^{noncontact_exponent}; Δc is c_h², the same double in both.
+#[test]
+fn dmt_reference_matches_the_mpmath_table() {
+    let rows = table("reference_dmt_points.csv");
+    assert!(rows.len() >= 1000, "table too small: {}", rows.len());
+    let mut worst = (0.0f64, String::new());
+    for row in &rows {
+        let (theta, lambda) = (num(&row["theta"]), num(&row["lambda"]));
+        let c = match row["case"].as_str() {
+            "adhesive" => Coefficients::from_indices(theta, lambda),
+            "no_plasticity" => {
+                let mut c =
+                    Coefficients::new((6.0 * std::f64::consts::PI / theta).sqrt(), f64::INFINITY);
+                c.c_0 = 2.0 * std::f64::consts::PI / theta;
+                c
+            }
+            _ => Coefficients::new(0.0, num(&row["c_h"])),
+        };
+        let range = num(&row["range"]);
+        let attraction = match row["attraction"].as_str() {
+            "van_der_waals" => Attraction::VanDerWaals { range },
+            _ => Attraction::Dugdale { range },
+        };
+        let h = num(&row["h"]);
+        let r = ReferenceModel::with_law(c, AsperityLaw::Dmt(attraction)).at(h);
+        let (le, lp) = (num(&row["load_elastic"]), num(&row["load_plastic"]));
+        let parts = le.abs() + lp.abs();
+        let n_want = Scaled::new(
+            num(&row["noncontact_load"]),
+            num(&row["noncontact_exponent"]),
+        );
+        let n_got = Scaled::new(r.noncontact_load.value, r.noncontact_exponent);
+        // The reference's mantissa underflows where its scale e^{κ(-h)} is 1 and the
+        // term is below 1e-290 (Dugdale far out): nothing to compare there.
+        let n_err = if n_want.mantissa == 0.0 && n_got.mantissa == 0.0 {
+            0.0
+        } else if r.noncontact_load.value.abs() < 1e-290 {
+            assert!(n_want.log10_abs() < -280.0, "{row:?}");
+            0.0
+        } else {
+            // The table's exponent E is a rounded decimal, and e^{-E} moves by ε·E
+            // for half an ulp of it: conditioning of the comparison, allowed for.
+            let e = n_want.exponent - n_got.exponent;
+            (n_got.minus(n_want).ratio(n_want).abs() - 2.0 * f64::EPSILON * e.abs()).max(0.0)
+        };
+        // The plastic parts carry e^{-Δc(h + Δc/2)}: the reference's Δc (its cubic's
+        // root t times c_h t) is an ulp or two from c_h², which moves them by
+        // ≈ ε Δc (|h + Δc| + 1), the conditioning allowed for as in
+        // `reference_matches_the_mpmath_table`.
+        let dc = num(&row["critical_interference"]);
+        let conditioning = if dc.is_finite() {
+            4.0 * f64::EPSILON * dc * ((h + dc).abs() + 1.0)
+        } else {
+            0.0
+        };
+        for (name, e) in [
+            ("load_elastic", rel(r.load_elastic.value, le, parts)),
+            (
+                "load_plastic",
+                (rel(r.load_plastic.value, lp, parts) - conditioning).max(0.0),
+            ),
+            ("area", rel(r.area.value, num(&row["area"]), 0.0)),
+            (
+                "plastic_area",
+                (rel(r.plastic_area.value, num(&row["plastic_area"]), 0.0) - conditioning).max(0.0),
+            ),
+            ("noncontact_load", n_err),
+        ] {
+            if e > worst.0 {
+                worst = (e, format!("{name}: {row:?}"));
+            }
+        }
+    }
+    eprintln!(
+        "DMT reference vs mpmath: worst {:e} at {}",
+        worst.0, worst.1
+    );
+    assert!(worst.0 <= 1e-14, "{:e} at {}", worst.0, worst.1);
 }

@@ -20,8 +20,8 @@ use std::f64::consts::{LN_10, PI};
 
 use super::reference::ReferenceModel;
 use crate::model::{
-    evaluate, Coefficients, EvaluationOptions, Quadrature, Scene, SensitivityParameter, Status,
-    WearArea,
+    evaluate, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
+    EvaluationOptions, Quadrature, Scene, SensitivityParameter, Status, WearArea,
 };
 
 /// A finite-difference rule on ln x.
@@ -183,7 +183,7 @@ pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
         .nondimensional_separation
         .filter(|_| fast.status == Status::Ok)?;
     let sc = scales(scene);
-    let model = ReferenceModel::new(sc.coefficients);
+    let model = ReferenceModel::with_law(sc.coefficients, reference_law(scene));
     let target = scene.load / sc.load_scale;
     let h = reference_separation(&model, target, h0)?;
     let at = model.at(h);
@@ -194,11 +194,36 @@ pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
     (area > 0.0).then(|| sc.ln_wear_scale + area.ln() - at.scale_exponent)
 }
 
+/// The scene's asperity law, its attraction range taken from Z0/σ here
+/// (z0 = Z0/σ; Δ_h = Z0/(1.03 σ), docs/model.md §7).
+fn reference_law(scene: &Scene) -> AsperityLaw {
+    let z = scene.interatomic_distance / scene.sigma;
+    match (scene.adhesion_model, scene.attraction) {
+        (AdhesionModel::Jkr, _) => AsperityLaw::Jkr,
+        (AdhesionModel::Dmt, AttractionKind::VanDerWaals) => {
+            AsperityLaw::Dmt(Attraction::VanDerWaals { range: z })
+        }
+        (AdhesionModel::Dmt, AttractionKind::Dugdale) => {
+            AsperityLaw::Dmt(Attraction::Dugdale { range: z / 1.03 })
+        }
+    }
+}
+
 /// The root of the reference P̄(h) = target nearest h0 on its monotone piece.
 pub fn reference_separation(model: &ReferenceModel, target: f64, h0: f64) -> Option<f64> {
     // Residual and its h-derivative; in logs for a compressive target.
     let residual = |h: f64| -> (f64, f64) {
         let at = model.at(h);
+        if let AsperityLaw::Dmt(_) = model.law {
+            // Two scales (contact e^{κ(h)}, non-contact e^{κ(-h)}): values, which
+            // neither underflow nor overflow at a scene's separation.
+            let (p, dp) = at.total_load_value();
+            return if target > 0.0 && p > 0.0 {
+                (p.ln() - target.ln(), dp / p)
+            } else {
+                (p - target, dp)
+            };
+        }
         let (p, dp) = (at.load(), at.dload_dh.value);
         if target > 0.0 && p > 0.0 {
             (p.ln() - at.scale_exponent - target.ln(), dp / p)

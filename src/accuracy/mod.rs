@@ -11,6 +11,12 @@
 //!   median time per evaluation; for every step rule the error of the
 //!   elasticities and the time per elasticity.
 //!
+//! * [`dmt_rows`] (run by [`work_precision`]): the same for the DMT law of
+//!   docs/model.md §7 with either attraction, at the default setting, against
+//!   [`reference::ReferenceModel::with_law`]: the contact share of P̄, the
+//!   non-contact share N (relative to |N|, which never crosses zero; points where
+//!   the reference underflows are left out), Ā, Ā_p and the wear rate.
+//!
 //! Relative errors: a load against max(|P̄|, |elastic| + |plastic|) of the
 //! reference (P̄ crosses zero); an area against the reference area (values whose
 //! reference and fast mantissas are both below [`NEGLIGIBLE`] count as exact);
@@ -26,8 +32,8 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use crate::model::{
-    evaluate, gauss, wear, Coefficients, EvaluationOptions, Model, Quadrature, Scene,
-    SensitivityParameter, Status,
+    evaluate, gauss, wear, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
+    EvaluationOptions, Model, Quadrature, Scaled, Scene, SensitivityParameter, Status,
 };
 use finite_difference::StepRule;
 use reference::ReferenceModel;
@@ -48,6 +54,8 @@ pub enum Quantity {
     WearRate,
     /// The elasticities of the wear rate (finite differences).
     Gradient,
+    /// DMT: the load of the attracted asperities out of contact.
+    NoncontactLoad,
 }
 
 impl Quantity {
@@ -59,16 +67,53 @@ impl Quantity {
             Quantity::PlasticArea => "plastic_area",
             Quantity::WearRate => "wear_rate",
             Quantity::Gradient => "gradient",
+            Quantity::NoncontactLoad => "noncontact_load",
         }
     }
 
     /// All, in report order.
-    pub const ALL: [Quantity; 5] = [
+    pub const ALL: [Quantity; 6] = [
         Quantity::Load,
+        Quantity::NoncontactLoad,
         Quantity::Area,
         Quantity::PlasticArea,
         Quantity::WearRate,
         Quantity::Gradient,
+    ];
+}
+
+/// The asperity law a row measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RowLaw {
+    /// JKR (docs/model.md §3): every quadrature setting, the gradient.
+    #[default]
+    Jkr,
+    /// DMT (docs/model.md §7) with this attraction, at the default setting.
+    Dmt(AttractionKind),
+}
+
+impl RowLaw {
+    /// The law's name (`adhesion_model`).
+    pub fn adhesion_model(self) -> AdhesionModel {
+        match self {
+            RowLaw::Jkr => AdhesionModel::Jkr,
+            RowLaw::Dmt(_) => AdhesionModel::Dmt,
+        }
+    }
+
+    /// The attraction (DMT only).
+    pub fn attraction(self) -> Option<AttractionKind> {
+        match self {
+            RowLaw::Jkr => None,
+            RowLaw::Dmt(kind) => Some(kind),
+        }
+    }
+
+    /// JKR, then DMT with van der Waals, then with Dugdale.
+    pub const ALL: [RowLaw; 3] = [
+        RowLaw::Jkr,
+        RowLaw::Dmt(AttractionKind::VanDerWaals),
+        RowLaw::Dmt(AttractionKind::Dugdale),
     ];
 }
 
@@ -92,6 +137,8 @@ pub struct Row {
     pub samples: usize,
     /// Model evaluations per value (gradient: wear-rate evaluations per elasticity).
     pub evaluations_per_value: usize,
+    /// The asperity law measured.
+    pub law: RowLaw,
 }
 
 /// One (coefficients, h) point of the grid.
@@ -121,6 +168,11 @@ pub struct WorkPrecision {
     pub reference_gradient_error: f64,
     /// Scenes whose region was added to the grid.
     pub scenes: Vec<String>,
+    /// DMT grid points per attraction (P̄, Ā, Ā_p samples of the DMT rows).
+    pub dmt_grid_points: usize,
+    /// The largest estimated relative error of the DMT reference over its grid
+    /// (contact loads relative to their parts, N to |N|).
+    pub dmt_reference_error: f64,
 }
 
 /// Options of the run.
@@ -293,7 +345,16 @@ fn wear_error(got: (f64, f64), want_ln: f64) -> f64 {
 /// five elasticities the gradient samples).
 pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPrecision {
     let scene_list: Vec<Scene> = scenes.iter().map(|(_, s)| s.clone()).collect();
-    let points = grid(&scene_list);
+    // The JKR rows take every scene under JKR (a DMT scene too); the DMT rows below
+    // take every scene under DMT with each attraction.
+    let jkr_scenes: Vec<Scene> = scene_list
+        .iter()
+        .map(|s| Scene {
+            adhesion_model: AdhesionModel::Jkr,
+            ..s.clone()
+        })
+        .collect();
+    let points = grid(&jkr_scenes);
     let reps = options.repetitions.max(1);
     // The reference at every grid point.
     let references: Vec<_> = points
@@ -310,7 +371,7 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
         .fold(0.0, f64::max);
     // Wear-rate samples and their reference.
     let mut wear_scenes = Vec::new();
-    for s in &scene_list {
+    for s in &jkr_scenes {
         for &f in &[0.01, 0.1, 1.0, 10.0, 100.0] {
             let mut sc = s.clone();
             sc.load *= f;
@@ -380,6 +441,7 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
                 is_default,
                 samples: n,
                 evaluations_per_value: 1,
+                law: RowLaw::Jkr,
             });
         }
     }
@@ -389,7 +451,7 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
     // Gradient: the scenes' elasticities under each step rule.
     let mut references_fd = Vec::new();
     let mut reference_gradient_error: f64 = 0.0;
-    for s in &scene_list {
+    for s in &jkr_scenes {
         let mut grad = Vec::new();
         for p in SensitivityParameter::ALL {
             if !finite_difference::differentiable(p, s) {
@@ -428,7 +490,16 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
             is_default: rule == StepRule::DEFAULT,
             samples: n,
             evaluations_per_value: rule.evaluations(),
+            law: RowLaw::Jkr,
         });
+    }
+    let mut dmt_grid_points = 0;
+    let mut dmt_reference_error: f64 = 0.0;
+    for kind in [AttractionKind::VanDerWaals, AttractionKind::Dugdale] {
+        let d = dmt_rows(kind, &scene_list, reps);
+        dmt_grid_points = d.grid_points;
+        dmt_reference_error = dmt_reference_error.max(d.reference_error);
+        rows.extend(d.rows);
     }
     WorkPrecision {
         rows,
@@ -438,5 +509,172 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
         reference_error,
         reference_gradient_error,
         scenes: scenes.iter().map(|(n, _)| n.clone()).collect(),
+        dmt_grid_points,
+        dmt_reference_error,
+    }
+}
+
+/// One DMT grid point: coefficients, attraction, h.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DmtGridPoint {
+    /// The coefficients (c_0 = 2π/θ, c_h; c_a and c_d are not used by DMT).
+    pub coefficients: Coefficients,
+    /// The attraction with its range.
+    pub attraction: Attraction,
+    /// h.
+    pub separation: f64,
+}
+
+/// The DMT grid of one attraction: θ ∈ [1e-3, 1e8], λ ∈ [1e-6, 1e6] and H = ∞,
+/// ranges z0 ∈ [1e-4, 10] (van der Waals) or Δ_h ∈ [1e-6, 1e3] (Dugdale),
+/// h ∈ [-4, 60]; and each scene's region under DMT with this attraction, as for JKR.
+pub fn dmt_grid(kind: AttractionKind, scenes: &[Scene]) -> Vec<DmtGridPoint> {
+    let hs = [-4.0, -1.0, 0.0, 0.5, 2.0, 5.0, 12.0, 25.0, 40.0, 60.0];
+    let thetas = [1e-3, 1.0, 184.0, 1e4, 1e8];
+    let lambdas = [1e-6, 1e-2, 1.0, 1e6];
+    let ranges: [f64; 4] = match kind {
+        AttractionKind::VanDerWaals => [1e-4, 1e-2, 0.1, 10.0],
+        AttractionKind::Dugdale => [1e-6, 1e-3, 0.1, 1e3],
+    };
+    let mut coefficients = Vec::new();
+    for &t in &thetas {
+        for &l in &lambdas {
+            coefficients.push(Coefficients::from_indices(t, l));
+        }
+        coefficients.push(Coefficients::from_indices_or_limits(t, f64::INFINITY, 0.0));
+    }
+    let mut out = Vec::new();
+    for c in &coefficients {
+        for &r in &ranges {
+            for &h in &hs {
+                out.push(DmtGridPoint {
+                    coefficients: *c,
+                    attraction: Attraction::new(kind, r),
+                    separation: h,
+                });
+            }
+        }
+    }
+    for scene in scenes {
+        let mut sc = scene.clone();
+        sc.adhesion_model = AdhesionModel::Dmt;
+        sc.attraction = kind;
+        let ev = evaluate(&sc, &EvaluationOptions::default());
+        let Some(h) = ev.nondimensional_separation else {
+            continue;
+        };
+        let idx = wear::indices(&sc);
+        let (theta, lambda) = (idx.elastic_adhesion_index, idx.plastic_adhesion_index);
+        if !(theta.is_finite() && lambda.is_finite()) {
+            continue;
+        }
+        let attraction = Attraction::new(kind, kind.range(sc.interatomic_distance, sc.sigma));
+        for &a in &[0.5, 1.0, 2.0] {
+            for &b in &[0.5, 1.0, 2.0] {
+                for &dh in &[-1.0, -0.5, 0.0, 0.5, 1.0] {
+                    out.push(DmtGridPoint {
+                        coefficients: Coefficients::from_indices(theta * a, lambda * b),
+                        attraction,
+                        separation: h + dh,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The DMT rows of one attraction and what they were measured over.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DmtRows {
+    /// Load (contact share), non-contact load, Ā, Ā_p and wear rate, default setting.
+    pub rows: Vec<Row>,
+    /// Grid points.
+    pub grid_points: usize,
+    /// The reference's largest estimated relative error over the grid.
+    pub reference_error: f64,
+}
+
+/// The DMT rows of one attraction at the default quadrature (module docs): the
+/// grid of [`dmt_grid`], and the scenes under DMT with this attraction at their
+/// loads × {1/100, 1/10, 1, 10, 100} for the wear rate.
+pub fn dmt_rows(kind: AttractionKind, scenes: &[Scene], repetitions: usize) -> DmtRows {
+    let q = Quadrature::default();
+    let points = dmt_grid(kind, scenes);
+    let reps = repetitions.max(1);
+    let (mut el, mut en, mut ea, mut ep, mut times) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut reference_error: f64 = 0.0;
+    for p in &points {
+        let law = AsperityLaw::Dmt(p.attraction);
+        let m = Model::with_law(p.coefficients, law, q);
+        let r = reference::ReferenceModel::with_law(p.coefficients, law).at(p.separation);
+        let at = m.at(p.separation);
+        let parts = r.load_parts().max(r.load().abs()).max(NEGLIGIBLE);
+        reference_error = reference_error.max(r.load_error() / parts);
+        el.push(rel(at.load_elastic + at.load_plastic, r.load(), parts));
+        let n = &r.noncontact_load;
+        if n.value.abs() >= NEGLIGIBLE {
+            reference_error = reference_error.max(n.error / n.value.abs());
+            let want = Scaled::new(n.value, r.noncontact_exponent);
+            en.push(at.noncontact_load().minus(want).ratio(want).abs());
+        }
+        ea.push(area_error(at.area, r.area.value));
+        ep.push(area_error(at.plastic_area, r.plastic_area.value));
+        let start = Instant::now();
+        for _ in 0..reps {
+            black_box(m.at(black_box(p.separation)));
+        }
+        times.push(start.elapsed().as_nanos() as f64 / reps as f64);
+    }
+    let options = EvaluationOptions {
+        pull_off: false,
+        quadrature: q,
+    };
+    let (mut ew, mut tw) = (Vec::new(), Vec::new());
+    for s in scenes {
+        for &f in &[0.01, 0.1, 1.0, 10.0, 100.0] {
+            let mut sc = s.clone();
+            sc.adhesion_model = AdhesionModel::Dmt;
+            sc.attraction = kind;
+            sc.load *= f;
+            let Some(want) = finite_difference::reference_ln_wear_rate(&sc) else {
+                continue;
+            };
+            let ev = evaluate(&sc, &options);
+            ew.push(wear_error((ev.wear_rate, ev.log10_wear_rate), want));
+            let w_reps = reps.div_ceil(4);
+            let start = Instant::now();
+            for _ in 0..w_reps {
+                black_box(evaluate(black_box(&sc), &options));
+            }
+            tw.push(start.elapsed().as_nanos() as f64 / w_reps as f64);
+        }
+    }
+    let mut rows = Vec::new();
+    for (quantity, errors, t) in [
+        (Quantity::Load, el, &times),
+        (Quantity::NoncontactLoad, en, &times),
+        (Quantity::Area, ea, &times),
+        (Quantity::PlasticArea, ep, &times),
+        (Quantity::WearRate, ew, &tw),
+    ] {
+        let (max, med, time, n) = stats(errors, t.clone());
+        rows.push(Row {
+            quantity,
+            setting: setting_label(&q),
+            max_rel_error: max,
+            median_rel_error: med,
+            time_per_eval_ns: time,
+            is_default: true,
+            samples: n,
+            evaluations_per_value: 1,
+            law: RowLaw::Dmt(kind),
+        });
+    }
+    DmtRows {
+        rows,
+        grid_points: points.len(),
+        reference_error,
     }
 }

@@ -29,11 +29,22 @@
 //! overestimates the K15 error of a smooth segment by orders of magnitude) plus a
 //! rounding term 2ε·∫|f|. `tests/accuracy.rs` checks it against 40-digit mpmath
 //! tables: it agrees to a few 1e-16 relative to |elastic| + |plastic|.
+//!
+//! **DMT (docs/model.md §7).** [`ReferenceModel::with_law`] takes the DMT law the
+//! same direct way: the elastic asperity load is `Δ·√Δ − c_0` on [0, Δc], Δc = c_h²
+//! (Hertz, no root solve needed), the plastic one `c_p Δ − c_0`, and the attraction of
+//! the asperities out of contact is integrated adaptively in the gap d = −Δ ≥ 0,
+//! `N(h) = −c_0 ∫_0^{d_max} w(d) e^{−(h−d)²/2} dd` (w = (z0/(z0+d))², d_max = ∞, split
+//! geometrically towards the pole's scale z0 at d = 0; or w = 1 − d/Δ_h on [0, Δ_h]),
+//! its mantissa scaled by `e^{κ(−h)}`. The fast path instead integrates the
+//! attraction by fixed Gauss–Legendre panels in `model::dmt` and the Hertz load in
+//! s = Δ^{1/4}. `tests/accuracy.rs` checks this reference against the 40-digit
+//! `reference_dmt_points.csv`.
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use crate::model::Coefficients;
+use crate::model::{AsperityLaw, Attraction, Coefficients};
 
 /// Relative tolerance (of ∫|f|) of the adaptive quadrature.
 pub const TOLERANCE: f64 = 1e-15;
@@ -77,9 +88,26 @@ pub struct ReferencePoint {
     pub dload_dh_parts: f64,
     /// Integrand evaluations spent.
     pub evaluations: usize,
+    /// DMT: the load of the attracted asperities out of contact (≤ 0), a mantissa
+    /// scaled by `e^{noncontact_exponent}`; 0 under JKR.
+    pub noncontact_load: Estimate,
+    /// DMT: its h-derivative (same scale).
+    pub noncontact_dload_dh: Estimate,
+    /// κ(−h) = max(−h, 0)²/2: the scale exponent of the non-contact mantissas.
+    pub noncontact_exponent: f64,
 }
 
 impl ReferencePoint {
+    /// P̄ as a value (contact and non-contact shares), for a moderate h where
+    /// neither scale overflows; `(value, dP̄/dh value)`.
+    pub fn total_load_value(&self) -> (f64, f64) {
+        let k = (-self.scale_exponent).exp();
+        let kn = (-self.noncontact_exponent).exp();
+        (
+            self.load() * k + self.noncontact_load.value * kn,
+            self.dload_dh.value * k + self.noncontact_dload_dh.value * kn,
+        )
+    }
     /// P̄ (mantissa).
     pub fn load(&self) -> f64 {
         self.load_elastic.value + self.load_plastic.value
@@ -99,6 +127,8 @@ impl ReferencePoint {
 pub struct ReferenceModel {
     /// The coefficients (the only input shared with the fast path).
     pub coefficients: Coefficients,
+    /// The asperity law.
+    pub law: AsperityLaw,
     /// t = Δcl^{1/4}, the positive root of `t³ − c_h t − c_a = 0` (∞ without plasticity).
     pub transition_root: f64,
     /// Δc = t⁴ − c_d t, computed as t (c_h t + c_a/3) (equal by the cubic, no cancellation).
@@ -108,14 +138,25 @@ pub struct ReferenceModel {
 impl ReferenceModel {
     /// The reference for these coefficients.
     pub fn new(coefficients: Coefficients) -> Self {
+        ReferenceModel::with_law(coefficients, AsperityLaw::Jkr)
+    }
+
+    /// The reference of an asperity law (module docs); DMT's Δc = c_h² is the
+    /// transition cubic with c_a = 0.
+    pub fn with_law(coefficients: Coefficients, law: AsperityLaw) -> Self {
+        let c_a = match law {
+            AsperityLaw::Jkr => coefficients.c_a,
+            AsperityLaw::Dmt(_) => 0.0,
+        };
         let (t, dc) = if coefficients.c_h.is_finite() {
-            let t = cubic_root(coefficients.c_a, coefficients.c_h);
-            (t, t * (coefficients.c_h * t + coefficients.c_a / 3.0))
+            let t = cubic_root(c_a, coefficients.c_h);
+            (t, t * (coefficients.c_h * t + c_a / 3.0))
         } else {
             (f64::INFINITY, f64::INFINITY)
         };
         ReferenceModel {
             coefficients,
+            law,
             transition_root: t,
             critical_interference: dc,
         }
@@ -147,7 +188,11 @@ impl ReferenceModel {
     }
 
     /// p_e(Δ) = Δ1^{3/2} − c_a Δ1^{3/4} (eq. 1) with Δ1 from the root solve.
+    /// Under DMT: the Hertz load with the adhesive offset, Δ^{3/2} − c_0.
     pub fn elastic_load(&self, delta: f64) -> f64 {
+        if let AsperityLaw::Dmt(_) = self.law {
+            return delta * delta.sqrt() - self.coefficients.c_0;
+        }
         let s = self.quarter_apparent_interference(delta);
         let s3 = s * s * s;
         s3 * (s3 - self.coefficients.c_a)
@@ -175,6 +220,26 @@ impl ReferenceModel {
         };
         // Ā on [0, ∞), split geometrically towards 0 is not needed (Δ is smooth).
         let [area] = integrate(h, 0.0, f64::INFINITY, None, &mut evaluations, |d| [d]);
+        // DMT: the attraction in the gap d = −Δ, weight e^{−(−h+d)²/2} (so `integrate`
+        // at −h), p = −c_0 w(d), dp/dh-term −p (h − d).
+        let (noncontact_load, noncontact_dload_dh) = match self.law {
+            AsperityLaw::Dmt(attraction) if c.c_0 > 0.0 => {
+                let (d_max, near_zero) = match attraction {
+                    Attraction::VanDerWaals { range } => (f64::INFINITY, Some(range)),
+                    Attraction::Dugdale { range } => (range, None),
+                };
+                let [n, dn] = integrate(-h, 0.0, d_max, near_zero, &mut evaluations, |d| {
+                    let w = match attraction {
+                        Attraction::VanDerWaals { range } => (range / (range + d)).powi(2),
+                        Attraction::Dugdale { range } => (range - d) / range,
+                    };
+                    let p = -c.c_0 * w;
+                    [p, -p * (h - d)]
+                });
+                (n, dn)
+            }
+            _ => (Estimate::default(), Estimate::default()),
+        };
         ReferencePoint {
             separation: h,
             scale_exponent: if h > 0.0 { 0.5 * h * h } else { 0.0 },
@@ -189,12 +254,19 @@ impl ReferenceModel {
             },
             dload_dh_parts: dload_elastic.magnitude + dload_plastic.magnitude,
             evaluations,
+            noncontact_load,
+            noncontact_dload_dh,
+            noncontact_exponent: if h < 0.0 { 0.5 * h * h } else { 0.0 },
         }
     }
 
     /// The scale near Δ = 0 below which the elastic integrand changes character:
-    /// Δ0 = c_d^{4/3} with adhesion, None (split down to tiny Δ) without.
+    /// Δ0 = c_d^{4/3} with adhesion, 0 (split down to tiny Δ) without and under DMT.
     fn split_scale(&self) -> Option<f64> {
+        if let AsperityLaw::Dmt(_) = self.law {
+            // Δ^{3/2} down to Δ = 0.
+            return Some(0.0);
+        }
         let c_d = self.coefficients.c_d;
         Some(if c_d > 0.0 { c_d.powf(4.0 / 3.0) } else { 0.0 })
     }

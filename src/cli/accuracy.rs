@@ -14,8 +14,10 @@ use wearopt::report;
 pub enum AccuracyFormat {
     /// Tables for people.
     Text,
-    /// `quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default`.
+    /// `quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default,adhesion_model,attraction`.
     Csv,
+    /// One object: provenance and the rows.
+    Json,
 }
 
 /// Arguments of `wearopt accuracy`.
@@ -68,6 +70,7 @@ pub fn run(args: AccuracyArgs) -> Result<ExitCode> {
     let out = match args.format {
         AccuracyFormat::Text => report::accuracy::text(&wp),
         AccuracyFormat::Csv => report::accuracy::csv(&wp),
+        AccuracyFormat::Json => report::accuracy::json(&wp),
     };
     print!("{out}");
     Ok(ExitCode::SUCCESS)

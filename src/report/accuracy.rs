@@ -1,31 +1,80 @@
 //! The work–precision report of `wearopt accuracy`: a text table, CSV with the
-//! columns `quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default`,
-//! and a log–log SVG of error against time per evaluation.
+//! columns `quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default,adhesion_model,attraction`,
+//! JSON (the run's provenance and one object per row), and a log–log SVG of error
+//! against time per evaluation.
 
 use std::fmt::Write;
 
-use crate::accuracy::{Quantity, Row, WorkPrecision};
+use serde_json::{json, Value};
+
+use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
+use crate::model::AttractionKind;
 
 use super::number;
 
 /// CSV: one row per quantity and setting.
 pub fn csv(wp: &WorkPrecision) -> String {
     let mut out = String::from(
-        "quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default\n",
+        "quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default,adhesion_model,attraction\n",
     );
     for r in &wp.rows {
         let _ = writeln!(
             out,
-            "{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{}",
             r.quantity.as_str(),
             r.setting,
             number(r.max_rel_error),
             number(r.median_rel_error),
             number(r.time_per_eval_ns),
-            r.is_default
+            r.is_default,
+            r.law.adhesion_model().as_str(),
+            r.law.attraction().map_or("", AttractionKind::as_str)
         );
     }
     out
+}
+
+/// JSON: the run's provenance and its rows (a non-finite number is `null`).
+pub fn json(wp: &WorkPrecision) -> String {
+    let num = |x: f64| {
+        if x.is_finite() {
+            json!(x)
+        } else {
+            Value::Null
+        }
+    };
+    let rows: Vec<Value> = wp
+        .rows
+        .iter()
+        .map(|r| {
+            json!({
+                "quantity": r.quantity.as_str(),
+                "setting": r.setting,
+                "adhesion_model": r.law.adhesion_model().as_str(),
+                "attraction": r.law.attraction().map(AttractionKind::as_str),
+                "max_rel_error": num(r.max_rel_error),
+                "median_rel_error": num(r.median_rel_error),
+                "time_per_eval_ns": num(r.time_per_eval_ns),
+                "is_default": r.is_default,
+                "samples": r.samples,
+                "evaluations_per_value": r.evaluations_per_value,
+            })
+        })
+        .collect();
+    let v = json!({
+        "grid_points": wp.grid_points,
+        "wear_points": wp.wear_points,
+        "gradient_points": wp.gradient_points,
+        "reference_error": num(wp.reference_error),
+        "reference_gradient_error": num(wp.reference_gradient_error),
+        "dmt_grid_points": wp.dmt_grid_points,
+        "dmt_reference_error": num(wp.dmt_reference_error),
+        "scenes": wp.scenes,
+        "rows": rows,
+    });
+    let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
+    s.push('\n');
+    s
 }
 
 /// The text report: provenance, then one table per quantity.
@@ -58,8 +107,44 @@ pub fn text(wp: &WorkPrecision) -> String {
         "gradient: elasticities d ln(wear rate)/d ln x of E, H, γ, σ, R against a Richardson-tableau derivative of the reference wear rate (estimated error ≤ {:.1e}, normwise); time is per elasticity",
         wp.reference_gradient_error
     );
+    for law in RowLaw::ALL {
+        if law != RowLaw::Jkr {
+            if !wp.rows.iter().any(|r| r.law == law) {
+                continue;
+            }
+            let _ = writeln!(out);
+            let _ = writeln!(
+                out,
+                "DMT asperity law (docs/model.md §7) with {} attraction, at the default setting: {} grid points per attraction (θ ∈ [1e-3, 1e8], λ ∈ [1e-6, 1e6], H = ∞, {}, h ∈ [-4, 60], and the scenes' regions under DMT)",
+                match law.attraction() {
+                    Some(AttractionKind::Dugdale) => "Dugdale",
+                    _ => "van der Waals",
+                },
+                wp.dmt_grid_points,
+                match law.attraction() {
+                    Some(AttractionKind::Dugdale) => "Δ_h ∈ [1e-6, 1e3]",
+                    _ => "z0 ∈ [1e-4, 10]",
+                }
+            );
+            let _ = writeln!(
+                out,
+                "reference: the direct form by adaptive G7K15 (Hertz load Δ^{{3/2}} − c_0, attraction in the gap), estimated error ≤ {:.1e} relative; load = the contact share against |elastic| + |plastic|, noncontact_load against |N|",
+                wp.dmt_reference_error
+            );
+        }
+        table(&mut out, wp, law);
+    }
+    out
+}
+
+/// The tables of one law, quantity by quantity.
+fn table(out: &mut String, wp: &WorkPrecision, law: RowLaw) {
     for q in Quantity::ALL {
-        let rows: Vec<&Row> = wp.rows.iter().filter(|r| r.quantity == q).collect();
+        let rows: Vec<&Row> = wp
+            .rows
+            .iter()
+            .filter(|r| r.quantity == q && r.law == law)
+            .collect();
         if rows.is_empty() {
             continue;
         }
@@ -103,7 +188,6 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
         }
     }
-    out
 }
 
 fn duration(ns: f64) -> String {
@@ -134,7 +218,7 @@ pub fn svg(wp: &WorkPrecision) -> String {
             .rows
             .iter()
             .filter(usable)
-            .filter(|r| r.quantity == *q)
+            .filter(|r| r.quantity == *q && r.law == RowLaw::Jkr)
             .map(point)
             .collect();
         if pts.is_empty() {
@@ -147,11 +231,34 @@ pub fn svg(wp: &WorkPrecision) -> String {
                 .with_marker(Marker::CYCLE[i % Marker::CYCLE.len()]),
         );
     }
+    // DMT (default setting only): one series per attraction, a point per quantity.
+    for (i, law) in RowLaw::ALL.iter().skip(1).enumerate() {
+        let mut pts: Vec<(f64, f64)> = wp
+            .rows
+            .iter()
+            .filter(usable)
+            .filter(|r| r.law == *law)
+            .map(point)
+            .collect();
+        if pts.is_empty() {
+            continue;
+        }
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let name = match law.attraction() {
+            Some(AttractionKind::Dugdale) => "DMT, Dugdale (default setting)",
+            _ => "DMT, van der Waals (default setting)",
+        };
+        plot = plot.with_series(
+            Series::new(name, pts)
+                .without_line()
+                .with_marker(Marker::CYCLE[(Quantity::ALL.len() + i) % Marker::CYCLE.len()]),
+        );
+    }
     let defaults: Vec<(f64, f64)> = wp
         .rows
         .iter()
         .filter(usable)
-        .filter(|r| r.is_default)
+        .filter(|r| r.is_default && r.law == RowLaw::Jkr)
         .map(point)
         .collect();
     if !defaults.is_empty() {
@@ -179,6 +286,7 @@ mod tests {
             is_default,
             samples: 3,
             evaluations_per_value: 1,
+            law: RowLaw::Jkr,
         }
     }
 
@@ -198,6 +306,8 @@ mod tests {
             reference_error: 1e-15,
             reference_gradient_error: 0.0,
             scenes: vec![],
+            dmt_grid_points: 0,
+            dmt_reference_error: 0.0,
         };
         let t = text(&wp);
         // The load differs by setting: a row each. The area is a closed form: one row.
