@@ -311,3 +311,105 @@ fn optimize_trace_has_one_row_per_iteration() {
         }
     }
 }
+
+/// Every command reads `--format` as one of the report stage's formats and refuses one
+/// it does not write with exit code 2, naming the formats it accepts; its help lists
+/// exactly those.
+#[test]
+fn every_command_names_the_formats_it_writes() {
+    let cases: &[(&[&str], &str, &str)] = &[
+        (
+            &["eval", "problems/micro-gear.toml"],
+            "csv",
+            "text, json, html",
+        ),
+        (
+            &["optimize", "problems/micro-gear-study.toml"],
+            "csv",
+            "text, json, html",
+        ),
+        // pareto writes every format: only the unknown name is refused.
+        (
+            &["pareto", "problems/latch-pareto.toml"],
+            "",
+            "text, json, csv, html",
+        ),
+        (&["accuracy"], "html", "text, json, csv"),
+        (&["figures"], "html", "text, json"),
+        (
+            &[
+                "fit-adhesion",
+                "problems/ando-friction.csv",
+                "--radius",
+                "0.3mm",
+            ],
+            "csv",
+            "text, json",
+        ),
+        (
+            &["roughness", "problems/scans/self-affine.gsf"],
+            "html",
+            "text, json",
+        ),
+        (
+            &[
+                "curve", "--theta", "10", "--lambda", "1", "--from", "0", "--to", "1", "--points",
+                "2",
+            ],
+            "text",
+            "csv, json",
+        ),
+        (
+            &["sweep", "problems/micro-gear-study.toml", "--samples", "4"],
+            "text",
+            "csv, json",
+        ),
+    ];
+    for (args, bad, accepted) in cases {
+        let command = args[0];
+        if bad.is_empty() {
+            assert_eq!(command, "pareto");
+        }
+        let out = wearopt()
+            .args(*args)
+            .args(["--format", if bad.is_empty() { "xml" } else { bad }])
+            .output()
+            .unwrap();
+        if !bad.is_empty() {
+            assert_eq!(out.status.code(), Some(2), "{args:?} --format {bad}");
+            assert!(out.stdout.is_empty(), "{args:?}: wrote before refusing");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(
+                err.contains(&format!(
+                    "--format {bad}: {command} does not write {bad}; accepted: {accepted}"
+                )),
+                "{args:?}: {err}"
+            );
+        }
+        // Not a format at all.
+        let out = wearopt()
+            .args(*args)
+            .args(["--format", "xml"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&out.stderr).contains(&format!(
+            "--format \"xml\": not a format; {command} accepts: {accepted}"
+        )));
+        // Help lists exactly the accepted formats.
+        let help = wearopt().args([command, "--help"]).output().unwrap();
+        let help = String::from_utf8_lossy(&help.stdout);
+        let listed: Vec<&str> = help
+            .lines()
+            .skip_while(|l| !l.trim_start().starts_with("--format"))
+            .skip_while(|l| !l.contains("Possible values"))
+            .skip(1)
+            .take_while(|l| l.trim_start().starts_with("- "))
+            .map(|l| {
+                let l = l.trim_start().trim_start_matches("- ");
+                &l[..l.find(':').unwrap()]
+            })
+            .collect();
+        assert_eq!(listed.join(", "), *accepted, "{command}: {help}");
+    }
+}

@@ -4,21 +4,12 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
-use clap::{Args, ValueEnum};
+use clap::Args;
 
 use wearopt::accuracy::{work_precision, Options};
-use wearopt::report;
+use wearopt::report::{self, Format};
 
-/// Output format of the accuracy report.
-#[derive(Debug, Clone, Copy, ValueEnum)]
-pub enum AccuracyFormat {
-    /// Tables for people.
-    Text,
-    /// `quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default,adhesion_model,attraction`.
-    Csv,
-    /// One object: provenance and the rows.
-    Json,
-}
+use super::format::{formats, refuse};
 
 /// Arguments of `wearopt accuracy`.
 #[derive(Debug, Args)]
@@ -26,9 +17,11 @@ pub struct AccuracyArgs {
     /// A problem file whose region (θ, λ, h and neighbours), loads and sensitivities
     /// are added to the extreme-range grid; without it the shipped scenes are used.
     pub file: Option<PathBuf>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = AccuracyFormat::Text)]
-    pub format: AccuracyFormat,
+    /// Output format: tables for people; CSV
+    /// (`quantity,setting,max_rel_error,median_rel_error,time_per_eval_ns,is_default,adhesion_model,attraction`);
+    /// or one JSON object (provenance and the rows).
+    #[arg(long, value_parser = formats("accuracy", report::accuracy::FORMATS), default_value = "text")]
+    pub format: Format,
     /// Also write a log–log SVG of error against time per evaluation to this file.
     #[arg(long, value_name = "WORK_PRECISION.svg")]
     pub plot: Option<PathBuf>,
@@ -68,9 +61,10 @@ pub fn run(args: AccuracyArgs) -> Result<ExitCode> {
             .with_context(|| format!("writing the plot to {}", path.display()))?;
     }
     let out = match args.format {
-        AccuracyFormat::Text => report::accuracy::text(&wp),
-        AccuracyFormat::Csv => report::accuracy::csv(&wp),
-        AccuracyFormat::Json => report::accuracy::json(&wp),
+        Format::Text => report::accuracy::text(&wp),
+        Format::Csv => report::accuracy::csv(&wp),
+        Format::Json => report::accuracy::json(&wp),
+        f => return Err(refuse("accuracy", f, report::accuracy::FORMATS)),
     };
     print!("{out}");
     Ok(ExitCode::SUCCESS)

@@ -6,23 +6,16 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
-use clap::ValueEnum;
 
 use wearopt::figures::{
     assess_claims, compute_figures, paper_figures, FigureError, FigureSettings, MAX_POINTS,
 };
 use wearopt::report::figures as out;
+use wearopt::report::Format;
+
+use super::format::{formats, refuse};
 
 use super::usage;
-
-/// The report's format on stdout (the files are always CSV and SVG).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FiguresFormat {
-    /// Human-readable summary.
-    Text,
-    /// One JSON object: settings, files, slopes, claims.
-    Json,
-}
 
 /// Arguments of `wearopt figures`.
 #[derive(Debug, clap::Args)]
@@ -39,9 +32,10 @@ pub struct FiguresArgs {
     /// Largest non-dimensional load P̄ drawn (> --load-min).
     #[arg(long, default_value_t = FigureSettings::default().load_max, allow_hyphen_values = true)]
     pub load_max: f64,
-    /// Format of the report on stdout.
-    #[arg(long, value_enum, default_value_t = FiguresFormat::Text)]
-    pub format: FiguresFormat,
+    /// Format of the report on stdout (the files are always CSV and SVG): a summary for
+    /// people, or one JSON object (settings, files, slopes, claims).
+    #[arg(long, value_parser = formats("figures", out::FORMATS), default_value = "text")]
+    pub format: Format,
 }
 
 fn write(path: &Path, contents: &str) -> Result<()> {
@@ -91,8 +85,9 @@ pub fn run(args: FiguresArgs) -> Result<ExitCode> {
     files.push(slopes);
 
     let report = match args.format {
-        FiguresFormat::Text => out::text(&settings, &files, &figures, &claims),
-        FiguresFormat::Json => out::json(&settings, &files, &figures, &claims),
+        Format::Text => out::text(&settings, &files, &figures, &claims),
+        Format::Json => out::json(&settings, &files, &figures, &claims),
+        f => return Err(refuse("figures", f, out::FORMATS)),
     };
     print!("{report}");
     let incomplete = figures

@@ -4,20 +4,13 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::Result;
-use clap::{Args, ValueEnum};
+use clap::Args;
 
 use wearopt::calibrate::{self, CalibrationError, FitSettings, FrictionCoefficient, Quoted};
 use wearopt::problem::units::{parse_quantity, Dimension};
-use wearopt::report;
+use wearopt::report::{self, Format};
 
-/// Output format of the calibration report.
-#[derive(Debug, Clone, Copy, ValueEnum)]
-pub enum FitFormat {
-    /// A report for people.
-    Text,
-    /// One JSON object, SI units.
-    Json,
-}
+use super::format::{formats, refuse};
 
 /// Arguments of `wearopt fit-adhesion`.
 #[derive(Debug, Args)]
@@ -49,8 +42,8 @@ pub struct FitAdhesionArgs {
     #[arg(long, value_name = "STRESS")]
     pub quoted_bond_strength: Option<String>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = FitFormat::Text)]
-    pub format: FitFormat,
+    #[arg(long, value_parser = formats("fit-adhesion", report::calibrate::FORMATS), default_value = "text")]
+    pub format: Format,
 }
 
 fn quantity(name: &'static str, text: &str, dim: Dimension) -> Result<f64> {
@@ -112,8 +105,9 @@ pub fn run(args: FitAdhesionArgs) -> Result<ExitCode> {
     };
     let calibration = calibrate::fit(&data, &settings)?;
     let out = match args.format {
-        FitFormat::Text => report::calibrate::text(&calibration),
-        FitFormat::Json => report::calibrate::json(&calibration),
+        Format::Text => report::calibrate::text(&calibration),
+        Format::Json => report::calibrate::json(&calibration),
+        f => return Err(refuse("fit-adhesion", f, report::calibrate::FORMATS)),
     };
     print!("{out}");
     Ok(ExitCode::SUCCESS)

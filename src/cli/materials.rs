@@ -7,20 +7,9 @@ use std::process::ExitCode;
 
 use anyhow::Result;
 
-use wearopt::optimize::materials::{MaterialOutcome, MaterialRanking};
+use wearopt::optimize::materials::MaterialRanking;
 use wearopt::problem::Problem;
-use wearopt::report;
-
-/// How the ranking is rendered.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Rendering {
-    /// The ranking table for people.
-    Text,
-    /// One JSON object.
-    Json,
-    /// One self-contained HTML page.
-    Html,
-}
+use wearopt::report::{self, Format};
 
 /// Writes the ranking of `problem`'s materials to `out` (stdout when `None`) and
 /// the per-material trace to `trace`. Exit code 1 when no material meets every
@@ -28,32 +17,24 @@ pub enum Rendering {
 pub fn write(
     problem: &Problem,
     ranking: &MaterialRanking,
-    format: Rendering,
+    format: Format,
     out: Option<&Path>,
     trace: Option<PathBuf>,
 ) -> Result<ExitCode> {
     if let Some(path) = trace {
-        let mut csv = String::new();
-        for r in &ranking.results {
-            if let MaterialOutcome::Optimized(o) = &r.outcome {
-                let t = report::optimize::trace_csv(o);
-                for (i, l) in t.lines().enumerate() {
-                    if i == 0 && csv.is_empty() {
-                        csv.push_str(&format!("material,{l}\n"));
-                    } else if i > 0 {
-                        csv.push_str(&format!("{},{l}\n", r.name()));
-                    }
-                }
-            }
-        }
-        super::write_output(&path, &csv, "the trace")?;
+        super::write_output(&path, &report::materials::trace_csv(ranking), "the trace")?;
     }
     let text = match format {
-        Rendering::Text => report::materials::text(&problem.name, ranking),
-        Rendering::Json => {
-            report::json_text(&report::materials::json_value(&problem.name, ranking))
+        Format::Text => report::materials::text(&problem.name, ranking),
+        Format::Json => report::json_text(&report::materials::json_value(&problem.name, ranking)),
+        Format::Html => report::materials::html(&problem.name, ranking),
+        f => {
+            return Err(super::format::refuse(
+                "optimize",
+                f,
+                report::materials::FORMATS,
+            ))
         }
-        Rendering::Html => report::materials::html(&problem.name, ranking),
     };
     super::write_output(out.unwrap_or(Path::new("-")), &text, "the report")?;
     Ok(if ranking.best().is_some() {

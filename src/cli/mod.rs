@@ -3,6 +3,7 @@
 mod accuracy;
 mod figures;
 mod fit_adhesion;
+mod format;
 mod materials;
 mod pareto;
 mod roughness;
@@ -19,7 +20,7 @@ use wearopt::documents::{self, Optimized};
 use wearopt::model::{
     self, AsperityLaw, Attraction, Coefficients, EvaluationOptions, Model, Quadrature, Status,
 };
-use wearopt::report;
+use wearopt::report::{self, Format};
 
 /// Adhesive wear of rough micro-contacts (MEMS gears and hinges, NEMS switches,
 /// storage heads): evaluate the rough-surface adhesion model on a problem file.
@@ -31,20 +32,6 @@ use wearopt::report;
 pub struct Cli {
     #[command(subcommand)]
     command: Command,
-}
-
-#[derive(Debug, Clone, Copy, ValueEnum)]
-enum EvalFormat {
-    Text,
-    Json,
-    /// One self-contained HTML page with tables and inline SVG plots.
-    Html,
-}
-
-#[derive(Debug, Clone, Copy, ValueEnum)]
-enum CurveFormat {
-    Csv,
-    Json,
 }
 
 #[derive(Debug, Subcommand)]
@@ -62,8 +49,8 @@ enum Command {
         /// The problem file (TOML).
         file: PathBuf,
         /// Output format.
-        #[arg(long, value_enum, default_value_t = EvalFormat::Text)]
-        format: EvalFormat,
+        #[arg(long, value_parser = format::formats("eval", report::eval::FORMATS), default_value = "text")]
+        format: Format,
         /// Write the report to this file instead of stdout ("-": stdout).
         #[arg(long, value_name = "FILE")]
         out: Option<PathBuf>,
@@ -91,8 +78,8 @@ Exit code 1 when the study is infeasible."
         /// The problem file (TOML) with [design], [objective] and [[constraint]] sections.
         file: PathBuf,
         /// Output format.
-        #[arg(long, value_enum, default_value_t = EvalFormat::Text)]
-        format: EvalFormat,
+        #[arg(long, value_parser = format::formats("optimize", report::optimize::FORMATS), default_value = "text")]
+        format: Format,
         /// Print an iteration table per start on stderr.
         #[arg(long)]
         verbose: bool,
@@ -154,8 +141,8 @@ wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json 
         #[arg(long)]
         points: usize,
         /// Output format.
-        #[arg(long, value_enum, default_value_t = CurveFormat::Csv)]
-        format: CurveFormat,
+        #[arg(long, value_parser = format::formats("curve", report::curve::FORMATS), default_value = "csv")]
+        format: Format,
         /// The asperity law: jkr (the paper's) or dmt (attraction of asperities not in contact).
         #[arg(long, value_enum, default_value_t = CurveLaw::Jkr)]
         adhesion_model: CurveLaw,
@@ -262,15 +249,15 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
     }
 }
 
-fn eval(file: PathBuf, format: EvalFormat, out: Option<PathBuf>) -> Result<ExitCode> {
+fn eval(file: PathBuf, format: Format, out: Option<PathBuf>) -> Result<ExitCode> {
     let problem = wearopt::problem::load(&file)?;
     let eval = documents::eval(&problem, &file.display().to_string())?;
     let evaluation = &eval.evaluation;
     let r = eval.report(&problem);
     let text = match format {
-        EvalFormat::Text => report::eval::text(&r),
-        EvalFormat::Json => report::json_text(&report::eval::json_value(&r)),
-        EvalFormat::Html => {
+        Format::Text => report::eval::text(&r),
+        Format::Json => report::json_text(&report::eval::json_value(&r)),
+        Format::Html => {
             let curve = model::load_curve(
                 &problem.scene,
                 evaluation,
@@ -279,6 +266,7 @@ fn eval(file: PathBuf, format: EvalFormat, out: Option<PathBuf>) -> Result<ExitC
             );
             report::eval::html(&r, &curve)
         }
+        f => return Err(format::refuse("eval", f, report::eval::FORMATS)),
     };
     write_output(
         out.as_deref().unwrap_or(std::path::Path::new("-")),
@@ -293,15 +281,13 @@ fn eval(file: PathBuf, format: EvalFormat, out: Option<PathBuf>) -> Result<ExitC
 
 fn optimize(
     file: PathBuf,
-    format: EvalFormat,
+    format: Format,
     verbose: bool,
     trace: Option<PathBuf>,
     out: Option<PathBuf>,
 ) -> Result<ExitCode> {
     let to_stdout = out.as_deref().is_none_or(|p| p.as_os_str() == "-");
-    if trace.as_deref().is_some_and(|p| p.as_os_str() == "-")
-        && !matches!(format, EvalFormat::Text)
-        && to_stdout
+    if trace.as_deref().is_some_and(|p| p.as_os_str() == "-") && format != Format::Text && to_stdout
     {
         return Err(usage(
             "--trace - would write the CSV trace to stdout, where the JSON report goes: give --trace a file name (--trace trace.csv), or use --format text".to_string(),
@@ -319,28 +305,16 @@ fn optimize(
     let optimum = match optimized {
         Optimized::Optimum(o) => o,
         Optimized::Ranking(ranking) => {
-            return materials::write(
-                &problem,
-                &ranking,
-                match format {
-                    EvalFormat::Text => materials::Rendering::Text,
-                    EvalFormat::Json => materials::Rendering::Json,
-                    EvalFormat::Html => materials::Rendering::Html,
-                },
-                out.as_deref(),
-                trace,
-            )
+            return materials::write(&problem, &ranking, format, out.as_deref(), trace)
         }
     };
     if let Some(path) = trace {
         write_output(&path, &report::optimize::trace_csv(&optimum), "the trace")?;
     }
     let text = match format {
-        EvalFormat::Text => report::optimize::text(&problem.name, &optimum),
-        EvalFormat::Json => {
-            report::json_text(&report::optimize::json_value(&problem.name, &optimum))
-        }
-        EvalFormat::Html => {
+        Format::Text => report::optimize::text(&problem.name, &optimum),
+        Format::Json => report::json_text(&report::optimize::json_value(&problem.name, &optimum)),
+        Format::Html => {
             let curve = model::load_curve(
                 &optimum.scene,
                 &optimum.evaluation,
@@ -349,6 +323,7 @@ fn optimize(
             );
             report::optimize::html(&problem.name, &optimum, &curve)
         }
+        f => return Err(format::refuse("optimize", f, report::optimize::FORMATS)),
     };
     write_output(
         out.as_deref().unwrap_or(std::path::Path::new("-")),
@@ -385,7 +360,7 @@ fn curve(
     from: f64,
     to: f64,
     points: usize,
-    format: CurveFormat,
+    format: Format,
 ) -> Result<ExitCode> {
     if theta.is_nan() || theta <= 0.0 {
         return Err(usage(format!(
@@ -452,8 +427,9 @@ fn curve(
         })
         .collect();
     let out = match format {
-        CurveFormat::Csv => report::curve::csv(&rows),
-        CurveFormat::Json => report::curve::json(&rows),
+        Format::Csv => report::curve::csv(&rows),
+        Format::Json => report::curve::json(&rows),
+        f => return Err(format::refuse("curve", f, report::curve::FORMATS)),
     };
     print!("{out}");
     Ok(ExitCode::SUCCESS)

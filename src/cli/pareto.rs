@@ -9,27 +9,14 @@ use std::process::ExitCode;
 use std::sync::Mutex;
 
 use anyhow::{Context, Result};
-use clap::ValueEnum;
 
 use wearopt::documents;
 use wearopt::optimize::pareto::{Front, FrontPoint, FrontStatus, Observer};
 use wearopt::optimize::Study;
 use wearopt::report::pareto as out;
+use wearopt::report::Format;
 
 use super::usage;
-
-/// Output format on stdout.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ParetoFormat {
-    /// Human-readable table.
-    Text,
-    /// One row per point (header row), the design flattened into columns.
-    Csv,
-    /// One object: status, adhesion_measure, points, knee, …
-    Json,
-    /// One self-contained HTML page: the report and the front as inline SVG.
-    Html,
-}
 
 /// Arguments of `wearopt pareto`.
 #[derive(Debug, clap::Args)]
@@ -39,9 +26,10 @@ pub struct ParetoArgs {
     /// Points on the curve (2 to 200; default: [pareto] points).
     #[arg(long)]
     pub points: Option<usize>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = ParetoFormat::Text)]
-    pub format: ParetoFormat,
+    /// Output format: CSV has one row per point (header row), the design flattened into
+    /// columns; JSON one object (status, adhesion_measure, points, knee, …).
+    #[arg(long, value_parser = super::format::formats("pareto", out::FORMATS), default_value = "text")]
+    pub format: Format,
     /// Also draw the front as SVG to this file.
     #[arg(long, value_name = "FRONT.svg")]
     pub plot: Option<PathBuf>,
@@ -60,7 +48,7 @@ fn progress_wanted() -> bool {
 
 /// Streams finished points to stdout and drives the progress bar.
 struct Stream<'a> {
-    format: ParetoFormat,
+    format: Format,
     names: &'a [&'static str],
     bar: Option<indicatif::ProgressBar>,
     /// Points written so far, and the first write error.
@@ -114,9 +102,9 @@ impl Observer for Stream<'_> {
             st.0 == 1
         };
         match self.format {
-            ParetoFormat::Csv => self.write(&out::csv_row(p)),
-            ParetoFormat::Json => self.write(&out::json_point(self.names, p, first)),
-            ParetoFormat::Text | ParetoFormat::Html => {}
+            Format::Csv => self.write(&out::csv_row(p)),
+            Format::Json => self.write(&out::json_point(self.names, p, first)),
+            Format::Text | Format::Html => {}
         }
     }
 }
@@ -166,7 +154,7 @@ fn constraint_values(study: &Study, front: &Front) -> out::ConstraintValues {
 
 /// Runs `wearopt pareto`.
 pub fn run(args: ParetoArgs) -> Result<ExitCode> {
-    if args.out.is_some() && args.format != ParetoFormat::Html {
+    if args.out.is_some() && args.format != Format::Html {
         return Err(usage(
             "--out is for --format html; text, CSV and JSON stream to stdout (redirect it)"
                 .to_string(),
@@ -204,23 +192,23 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         names: &names,
     };
     match args.format {
-        ParetoFormat::Csv => stream.write(&out::csv_header(&names)),
-        ParetoFormat::Json => stream.write(&out::json_head(&head)),
-        ParetoFormat::Text | ParetoFormat::Html => {}
+        Format::Csv => stream.write(&out::csv_header(&names)),
+        Format::Json => stream.write(&out::json_head(&head)),
+        Format::Text | Format::Html => {}
     }
     let front = documents::pareto(&problem, &origin, &spec, &stream)?;
     if let Some(b) = &stream.bar {
         b.finish_and_clear();
     }
     match args.format {
-        ParetoFormat::Csv => {}
-        ParetoFormat::Json => stream.write(&out::json_tail(&front)),
-        ParetoFormat::Text => stream.write(&out::text(
+        Format::Csv => {}
+        Format::Json => stream.write(&out::json_tail(&front)),
+        Format::Text => stream.write(&out::text(
             &problem.name,
             &front,
             &problem.study.constraints,
         )),
-        ParetoFormat::Html => {
+        Format::Html => {
             let values = constraint_values(&documents::study(&problem), &front);
             let page = out::html(&problem.name, &front, &problem.study.constraints, &values);
             super::write_output(

@@ -7,9 +7,10 @@ use anyhow::Result;
 use clap::{Args, ValueEnum};
 
 use wearopt::documents::{self, RoughnessOptions};
-use wearopt::report;
+use wearopt::report::{self, Format};
 use wearopt::surface::Levelling;
 
+use super::format::{formats, refuse};
 use super::write_output;
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -17,12 +18,6 @@ pub(crate) enum LevelArg {
     None,
     Plane,
     Quadratic,
-}
-
-#[derive(Debug, Clone, Copy, ValueEnum)]
-pub(crate) enum RoughnessFormat {
-    Text,
-    Json,
 }
 
 #[derive(Debug, Args)]
@@ -45,8 +40,8 @@ pub(crate) struct RoughnessArgs {
     #[arg(long, value_name = "UNIT")]
     height_unit: Option<String>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = RoughnessFormat::Text)]
-    format: RoughnessFormat,
+    #[arg(long, value_parser = formats("roughness", report::roughness::FORMATS), default_value = "text")]
+    format: Format,
     /// Write the power spectral density as a log–log SVG plot ("-": stdout).
     #[arg(long, value_name = "PSD.svg")]
     psd: Option<PathBuf>,
@@ -71,8 +66,9 @@ pub(crate) fn run(args: RoughnessArgs) -> Result<ExitCode> {
         write_output(path, &report::roughness::psd_svg(&r, psd), "the PSD plot")?;
     }
     let out = match args.format {
-        RoughnessFormat::Text => report::roughness::text(&r),
-        RoughnessFormat::Json => report::json_text(&report::roughness::json_value(&r)),
+        Format::Text => report::roughness::text(&r),
+        Format::Json => report::json_text(&report::roughness::json_value(&r)),
+        f => return Err(refuse("roughness", f, report::roughness::FORMATS)),
     };
     print!("{out}");
     Ok(ExitCode::SUCCESS)

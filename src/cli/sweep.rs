@@ -26,15 +26,6 @@ pub enum MethodArg {
     Grid,
 }
 
-/// Output formats (command-line spelling).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FormatArg {
-    /// A header line and one line per design.
-    Csv,
-    /// One object with a `rows` array, one row per line.
-    Json,
-}
-
 /// Arguments of `wearopt sweep`.
 #[derive(Debug, clap::Args)]
 pub struct SweepArgs {
@@ -53,9 +44,10 @@ pub struct SweepArgs {
     /// SLURM_ARRAY_TASK_COUNT (and _MIN, _STEP) when set, else the whole sweep.
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = FormatArg::Csv)]
-    pub format: FormatArg,
+    /// Output format: CSV (a header line and one line per design) or JSON (one object
+    /// with a `rows` array, one row per line).
+    #[arg(long, value_parser = super::format::formats("sweep", out::FORMATS), default_value = "csv")]
+    pub format: wearopt::report::Format,
     /// Write the rows to this file instead of stdout; a rerun that finds it complete skips the work.
     #[arg(long, value_name = "PATH")]
     pub out: Option<PathBuf>,
@@ -153,8 +145,9 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         MethodArg::Grid => Method::Grid,
     };
     let format = match args.format {
-        FormatArg::Csv => Format::Csv,
-        FormatArg::Json => Format::Json,
+        wearopt::report::Format::Csv => Format::Csv,
+        wearopt::report::Format::Json => Format::Json,
+        f => return Err(super::format::refuse("sweep", f, out::FORMATS)),
     };
     let sweep = Sweep::new(
         &problem.scene,

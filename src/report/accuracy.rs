@@ -12,6 +12,10 @@ use crate::model::AttractionKind;
 
 use super::number;
 
+/// The formats `wearopt accuracy` writes (the first is the default).
+pub const FORMATS: &[super::Format] =
+    &[super::Format::Text, super::Format::Json, super::Format::Csv];
+
 /// CSV: one row per quantity and setting.
 pub fn csv(wp: &WorkPrecision) -> String {
     let mut out = String::from(

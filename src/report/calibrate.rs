@@ -5,6 +5,9 @@ use serde_json::{json, Value};
 use super::{si, sig};
 use crate::calibrate::{Calibration, FrictionCoefficient, CONFIDENCE_LEVEL};
 
+/// The formats `wearopt fit-adhesion` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
+
 /// One JSON object, SI units (N, m, N/m, Pa). Keys: those of [`Calibration`] plus
 /// `confidence_level` and `model`.
 pub fn json(c: &Calibration) -> String {

@@ -4,6 +4,9 @@ use serde::Serialize;
 
 use super::number;
 
+/// The formats `wearopt curve` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[super::Format::Csv, super::Format::Json];
+
 /// One row of a curve: the model at one separation h.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CurveRow {

@@ -5,6 +5,13 @@ use serde_json::{json, Map, Value};
 use super::{si, sig, sig_exp};
 use crate::model::{AdhesionModel, AttractionKind, Evaluation, Scene, Sensitivity, WearArea};
 
+/// The formats `wearopt eval` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[
+    super::Format::Text,
+    super::Format::Json,
+    super::Format::Html,
+];
+
 /// Everything an evaluation report shows.
 pub struct EvalReport<'a> {
     /// The problem's name.

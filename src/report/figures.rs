@@ -12,6 +12,9 @@ use super::number;
 use super::svg::{Axis, LinePlot, Series};
 use crate::figures::{Claim, Figure, FigureSettings, Varied, EQUAL_SLOPE_RATIO, LINEAR_R_SQUARED};
 
+/// The formats `wearopt figures` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
+
 /// The CSV header of each figure's points.
 pub const FIGURE_COLUMNS: &str = "theta,lambda,load,wear_volume";
 /// The CSV header of slopes.csv.

@@ -7,6 +7,9 @@ use super::sig;
 use crate::optimize::materials::{MaterialOutcome, MaterialRanking, MaterialResult};
 use crate::problem::units::{format_quantity, Dimension};
 
+/// The formats a material ranking is written in (those of `wearopt optimize`).
+pub const FORMATS: &[super::Format] = super::optimize::FORMATS;
+
 const METHOD: [&str; 4] = [
     "body a takes each material's E, ν and H (catalogue); body b is unchanged",
     "design variables on E, ν or H are dropped (the material fixes them)",
@@ -88,6 +91,25 @@ pub fn json_value(name: &str, ranking: &MaterialRanking) -> Value {
         "ranking": ranking.results.iter().map(row_json).collect::<Vec<_>>(),
         "time_seconds": ranking.time_seconds,
     })
+}
+
+/// The optimiser's trace of every optimised material, one CSV: the columns of
+/// [`super::optimize::trace_csv`] after a `material` column.
+pub fn trace_csv(ranking: &MaterialRanking) -> String {
+    let mut csv = String::new();
+    for r in &ranking.results {
+        if let MaterialOutcome::Optimized(o) = &r.outcome {
+            let t = super::optimize::trace_csv(o);
+            for (i, l) in t.lines().enumerate() {
+                if i == 0 && csv.is_empty() {
+                    csv.push_str(&format!("material,{l}\n"));
+                } else if i > 0 {
+                    csv.push_str(&format!("{},{l}\n", r.name()));
+                }
+            }
+        }
+    }
+    csv
 }
 
 /// "Least wear rate: polysilicon (…); next … with ×3.2 the wear rate", or that none

@@ -7,6 +7,7 @@ pub mod calibrate;
 pub mod curve;
 pub mod eval;
 pub mod figures;
+pub mod format;
 pub mod html;
 pub mod materials;
 pub mod optimize;
@@ -44,4 +45,5 @@ pub fn design_dimension(name: &str) -> crate::problem::units::Dimension {
     })
 }
 
+pub use format::Format;
 pub use units::{number, si, sig, sig_exp};

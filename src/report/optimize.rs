@@ -7,6 +7,13 @@ use super::{number, si, sig, sig_exp};
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::problem::units::format_quantity;
 
+/// The formats `wearopt optimize` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[
+    super::Format::Text,
+    super::Format::Json,
+    super::Format::Html,
+];
+
 /// A constraint the baseline design breaks: its name, the baseline's value, the limit
 /// broken and which side ("min" or "max").
 pub struct BaselineViolation {

@@ -14,6 +14,14 @@ use crate::optimize::{AdhesionMeasure, Constraint, ParetoDirection};
 use crate::problem::units::format_quantity;
 use crate::problem::Dimensioned;
 
+/// The formats `wearopt pareto` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[
+    super::Format::Text,
+    super::Format::Json,
+    super::Format::Csv,
+    super::Format::Html,
+];
+
 /// What the head of a streamed report needs (known before the sweep runs).
 #[derive(Debug, Clone, Copy)]
 pub struct Head<'a> {

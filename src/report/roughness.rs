@@ -9,6 +9,9 @@ use crate::surface::psd::{Psd, PsdKind};
 use crate::surface::read::Format;
 use crate::surface::{Roughness, Warning};
 
+/// The formats `wearopt roughness` writes (the first is the default).
+pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
+
 /// Everything a roughness report shows.
 pub struct RoughnessReport<'a> {
     /// The file as named by the user.

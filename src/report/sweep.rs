@@ -20,6 +20,9 @@ use super::svg::{Axis, LinePlot, Marker, Series};
 use crate::optimize::{Named, ParetoDirection};
 use crate::sweep::{Sweep, SweepRow};
 
+/// The formats `wearopt sweep` and `wearopt merge` write (the first is the default).
+pub const FORMATS: &[super::Format] = &[super::Format::Csv, super::Format::Json];
+
 /// Output formats of a sweep.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
