@@ -37,7 +37,7 @@ pub fn json(r: &EvalReport) -> String {
     super::json_text(&json_value(r))
 }
 
-/// The object [`json`] writes, as a value.
+/// The object [`json()`] writes, as a value.
 pub fn json_value(r: &EvalReport) -> Value {
     let ev = r.evaluation;
     let mut v = super::words::evaluation_json(ev);

@@ -81,11 +81,6 @@ impl Page {
         let _ = writeln!(self.body, "</ul>");
     }
 
-    /// Preformatted text.
-    pub fn pre(&mut self, text: &str) {
-        let _ = writeln!(self.body, "<pre>{}</pre>", escape(text));
-    }
-
     /// A plot (an SVG document from [`super::svg`]) with a caption; `id` names it.
     pub fn figure(&mut self, id: &str, svg: &str, caption: &str) {
         let _ = writeln!(

@@ -81,7 +81,7 @@ pub fn json(name: &str, ranking: &MaterialRanking) -> String {
     super::json_text(&json_value(name, ranking))
 }
 
-/// The object [`json`] writes, as a value.
+/// The object [`json()`] writes, as a value.
 pub fn json_value(name: &str, ranking: &MaterialRanking) -> Value {
     json!({
         "name": name,

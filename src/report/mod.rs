@@ -1,6 +1,14 @@
-//! Rendering results: text reports, JSON and CSV. Knows nothing of how the
-//! numbers were computed. Every number written to JSON or CSV is the shortest
-//! string that round-trips the f64 exactly.
+//! Rendering results: text reports, JSON, CSV, SVG plots and self-contained HTML
+//! pages. Knows nothing of how the numbers were computed; the library's values
+//! (warnings, notes, statuses) are worded here and only here. Every number written
+//! to JSON or CSV is the shortest string that round-trips the f64 exactly.
+//!
+//! One module per result type, each with one renderer per [`Format`] it writes and
+//! the list of those formats (`FORMATS`, checked by [`format::parse`]):
+//! [`eval`], [`optimize`], [`materials`], [`pareto`], [`sweep`], [`accuracy`],
+//! [`calibrate`] (fit-adhesion), [`roughness`], [`curve`], [`figures`]. Shared
+//! pieces: [`units`] (SI prefixes and the numbers' text), [`words`] (the library's
+//! warnings and notes in words), [`svg`] (line plots and bar charts).
 
 pub mod accuracy;
 pub mod calibrate;
@@ -8,7 +16,7 @@ pub mod curve;
 pub mod eval;
 pub mod figures;
 pub mod format;
-pub mod html;
+pub(crate) mod html;
 pub mod materials;
 pub mod optimize;
 pub mod pareto;
@@ -26,7 +34,7 @@ pub fn json_text(v: &serde_json::Value) -> String {
 }
 
 /// The SI unit of an objective (by its problem-file name).
-pub fn objective_unit(name: &str) -> &'static str {
+pub(crate) fn objective_unit(name: &str) -> &'static str {
     match name {
         "wear_rate" => "m³/m",
         "wear_volume" => "m³",
@@ -37,7 +45,7 @@ pub fn objective_unit(name: &str) -> &'static str {
 }
 
 /// The dimension of a design variable (by its problem-file name).
-pub fn design_dimension(name: &str) -> crate::problem::units::Dimension {
+pub(crate) fn design_dimension(name: &str) -> crate::problem::units::Dimension {
     use crate::optimize::{DesignQuantity, Named};
     use crate::problem::Dimensioned;
     DesignQuantity::from_name(name).map_or(crate::problem::units::Dimension::Dimensionless, |q| {

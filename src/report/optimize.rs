@@ -95,7 +95,7 @@ pub fn json(name: &str, o: &Optimum) -> String {
     super::json_text(&json_value(name, o))
 }
 
-/// The object [`json`] writes, as a value.
+/// The object [`json()`] writes, as a value.
 pub fn json_value(name: &str, o: &Optimum) -> Value {
     json!({
         "name": name,

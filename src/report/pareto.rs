@@ -214,7 +214,7 @@ pub fn json_tail(front: &Front) -> String {
     out
 }
 
-/// The object [`json`] writes, as a value.
+/// The object [`json()`] writes, as a value.
 pub fn json_value(name: &str, front: &Front) -> Value {
     let mut m = Map::new();
     for (k, v) in head_members(&Head::of(name, front)) {
@@ -247,7 +247,7 @@ pub fn json(name: &str, front: &Front) -> String {
 // ---------------------------------------------------------------- text
 
 /// The plain sentence for a front without trade-off.
-pub fn no_trade_off_sentence(direction: ParetoDirection) -> &'static str {
+pub(crate) fn no_trade_off_sentence(direction: ParetoDirection) -> &'static str {
     match direction {
         ParetoDirection::Low => {
             "no trade-off: the least-wear design is also the least-adhesion design"

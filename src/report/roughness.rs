@@ -25,7 +25,7 @@ pub struct RoughnessReport<'a> {
 }
 
 /// One warning in words.
-pub fn warning_text(w: &Warning) -> String {
+pub(crate) fn warning_text(w: &Warning) -> String {
     match w {
         Warning::Anisotropy { ratio } => format!(
             "anisotropy: m2 differs by a factor {} between x and y (above 2); the McCool formulas assume an isotropic surface, so σ, R and N are averages of two different directions",
@@ -70,7 +70,7 @@ fn opt(x: Option<f64>) -> Value {
 }
 
 /// The `[roughness]` table the analysis gives, ready to paste into a problem file.
-pub fn roughness_block(r: &RoughnessReport) -> String {
+pub(crate) fn roughness_block(r: &RoughnessReport) -> String {
     let p = &r.roughness.parameters;
     let cut = match r.roughness.settings.cutoff {
         Some(c) => format!("cut-off {}", format_quantity(c, Dimension::Length)),
@@ -93,7 +93,7 @@ pub fn json(r: &RoughnessReport) -> String {
     super::json_text(&json_value(r))
 }
 
-/// The object [`json`] writes, as a value.
+/// The object [`json()`] writes, as a value.
 pub fn json_value(r: &RoughnessReport) -> Value {
     let g = r.roughness;
     let m = &g.moments;
@@ -379,7 +379,7 @@ pub fn psd_svg(r: &RoughnessReport, psd: &Psd) -> String {
 
 /// Lines for a scene report whose roughness came from a scan: where from, α, cut-off,
 /// levelling, and the analysis' warnings.
-pub fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
+pub(crate) fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
     let g = &scan.roughness;
     let p = &g.parameters;
     let mut lines = vec![format!(
@@ -411,7 +411,7 @@ pub fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
 }
 
 /// The JSON object of a scene's scan source (SI units).
-pub fn scan_json(scan: &crate::problem::ScanSource) -> Value {
+pub(crate) fn scan_json(scan: &crate::problem::ScanSource) -> Value {
     let g = &scan.roughness;
     let p = &g.parameters;
     json!({

@@ -103,7 +103,7 @@ fn csv_cell(v: Option<f64>) -> String {
 }
 
 /// One row's line, without the separator (see [`row`]).
-pub fn row_line(format: Format, sweep: &Sweep, r: &SweepRow) -> String {
+pub(crate) fn row_line(format: Format, sweep: &Sweep, r: &SweepRow) -> String {
     match format {
         Format::Csv => {
             let mut out = r.index.to_string();
