@@ -632,7 +632,7 @@ pub struct Calibration {
 /// A small dense row-major matrix: the Jacobian type handed to argmin's Gauss–Newton
 /// (argmin-math's `Vec` backend has no matrix inverse).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Matrix {
+pub(crate) struct Matrix {
     rows: usize,
     cols: usize,
     data: Vec<f64>,
@@ -681,12 +681,27 @@ impl argmin_math::ArgminDot<Vec<f64>, Vec<f64>> for Matrix {
     }
 }
 
+/// Why [`Matrix`] has no inverse (handed to argmin, which stops the fit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+enum MatrixError {
+    /// Only square matrices are inverted.
+    #[error("cannot invert a {rows}×{cols} matrix")]
+    NotSquare { rows: usize, cols: usize },
+    /// A zero or non-finite pivot.
+    #[error("singular matrix")]
+    Singular,
+}
+
 impl argmin_math::ArgminInv<Matrix> for Matrix {
     /// Gauss–Jordan elimination with partial pivoting (the matrices here are 1×1 or 2×2).
     fn inv(&self) -> Result<Matrix, argmin_math::Error> {
         let n = self.rows;
         if n != self.cols {
-            anyhow::bail!("cannot invert a {}×{} matrix", self.rows, self.cols);
+            return Err(MatrixError::NotSquare {
+                rows: self.rows,
+                cols: self.cols,
+            }
+            .into());
         }
         let mut a = self.data.clone();
         let mut inv = vec![0.0; n * n];
@@ -699,7 +714,7 @@ impl argmin_math::ArgminInv<Matrix> for Matrix {
                 .unwrap_or(c);
             let pivot = a[p * n + c];
             if pivot == 0.0 || !pivot.is_finite() {
-                anyhow::bail!("singular matrix");
+                return Err(MatrixError::Singular.into());
             }
             for k in 0..n {
                 a.swap(c * n + k, p * n + k);

@@ -48,7 +48,7 @@ pub mod catalogue;
 mod error;
 mod locate;
 pub mod notes;
-pub mod raw;
+pub(crate) mod raw;
 mod study;
 mod topography;
 pub mod units;
@@ -60,7 +60,8 @@ use std::time::Duration;
 use serde::Serialize;
 use toml::Spanned;
 
-pub use error::{edit_distance, suggest, Location, ProblemError};
+pub(crate) use error::suggest;
+pub use error::{Location, ProblemError};
 pub use notes::{BodyKey, CatalogueProperty, InputNote};
 pub use study::{Dimensioned, Study};
 pub use topography::ScanSource;

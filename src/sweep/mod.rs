@@ -8,7 +8,7 @@
 //! parallel and handed over in index order, so memory does not grow with the
 //! number of samples.
 
-pub mod sequence;
+pub(crate) mod sequence;
 
 use std::ops::Range;
 
