@@ -1,12 +1,17 @@
 //! Speed of the evaluator (issue: non-dimensional evaluation ≤ 1 µs median,
-//! dimensional evaluation with the separation solve ≤ 20 µs median).
+//! dimensional evaluation with the separation solve ≤ 20 µs median), for the JKR
+//! law and the DMT law with both attractions (issue 11: one DMT P̄ + Ā ≤ 1 µs, a DMT
+//! scene with separation solve and pull-off ≤ 20 µs).
 //!
 //! Run: `cargo bench --bench evaluator`
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use wearopt::model::{evaluate, Coefficients, EvaluationOptions, Model};
+use wearopt::model::{
+    evaluate, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
+    EvaluationOptions, Model, Quadrature,
+};
 
 fn nondimensional(c: &mut Criterion) {
     let mut g = c.benchmark_group("nondimensional P̄, Ā at one h");
@@ -28,6 +33,54 @@ fn nondimensional(c: &mut Criterion) {
     g.bench_function("greenwood-williamson h=1", |b| {
         b.iter(|| black_box(gw.at(black_box(1.0)).load()))
     });
+    g.finish();
+}
+
+/// DMT P̄ and Ā at one h: the hub's θ = 184 with its ranges (z0 = Z0/σ = 0.1, Δ_h =
+/// 0.1/1.03), and θ = 10, λ = 1, h = 1 as for JKR.
+fn nondimensional_dmt(c: &mut Criterion) {
+    let mut g = c.benchmark_group("nondimensional DMT P̄, Ā at one h");
+    for &(theta, lambda, h) in &[(10.0, 1.0, 1.0), (184.0, 10.0, 2.0)] {
+        for attraction in [
+            Attraction::VanDerWaals { range: 0.1 },
+            Attraction::Dugdale { range: 0.1 / 1.03 },
+        ] {
+            let m = Model::with_law(
+                Coefficients::from_indices(theta, lambda),
+                AsperityLaw::Dmt(attraction),
+                Quadrature::default(),
+            );
+            let name = match attraction {
+                Attraction::VanDerWaals { .. } => "van der Waals",
+                Attraction::Dugdale { .. } => "Dugdale",
+            };
+            g.bench_function(format!("{name} theta={theta} lambda={lambda} h={h}"), |b| {
+                b.iter(|| {
+                    let at = m.at(black_box(h));
+                    black_box((at.load(), at.area()))
+                })
+            });
+        }
+    }
+    g.finish();
+}
+
+/// The micro-gear hub (φ0 = 0.374) under DMT with either attraction, and the
+/// shipped DLC contact (DMT with van der Waals): separation solve and pull-off.
+fn dimensional_dmt(c: &mut Criterion) {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/");
+    let mut g = c.benchmark_group("dimensional DMT scene evaluation");
+    let hub = wearopt::problem::load(std::path::Path::new(&format!("{dir}micro-gear.toml")))
+        .expect("shipped problem loads");
+    for attraction in [AttractionKind::VanDerWaals, AttractionKind::Dugdale] {
+        let mut scene = hub.scene.clone();
+        scene.adhesion_model = AdhesionModel::Dmt;
+        scene.attraction = attraction;
+        g.bench_function(
+            format!("micro-gear DMT {}: solve + pull-off", attraction.as_str()),
+            |b| b.iter(|| black_box(evaluate(black_box(&scene), &EvaluationOptions::default()))),
+        );
+    }
     g.finish();
 }
 
@@ -56,5 +109,11 @@ fn dimensional(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, nondimensional, dimensional);
+criterion_group!(
+    benches,
+    nondimensional,
+    nondimensional_dmt,
+    dimensional,
+    dimensional_dmt
+);
 criterion_main!(benches);
