@@ -26,12 +26,12 @@
 //!   preferred end; the target nearest `s_w` is moved onto it, so the front
 //!   ends exactly at the study's least-wear design.
 //! * **Solves.** Each ε-point is the study's own [`optimize`] with the ε-row
-//!   added. Points are solved in waves of [`WAVE`] in parallel (rayon): one
-//!   start from the nearest solution known before the wave, one from the
-//!   baseline, the study's multistart where neither ends optimal. Then every
-//!   point is re-solved from both neighbours' designs (and with the multistart
-//!   where it is still not optimal), keeping the better design, until no point
-//!   improves ([`MAX_REFINE_ROUNDS`] at most). Each step reads only designs
+//!   added, run with the study's multistart, so that no point is worse than a
+//!   standalone run at its ε. Points are solved in waves of [`WAVE`] in
+//!   parallel (rayon), each also from the nearest solution known before the
+//!   wave. Then every point is re-solved from both neighbours' designs,
+//!   keeping the better design, until no point improves
+//!   ([`MAX_REFINE_ROUNDS`] at most). Each step reads only designs
 //!   known before it, so the result is the same for any thread count; the
 //!   [`Observer`] receives the points in order once they are final.
 //! * **Dominance.** A point is dominated when an earlier point of the sweep
@@ -449,40 +449,24 @@ impl Sweep<'_> {
         })
     }
 
-    /// One start from `warm` (the nearest solved neighbour), then one from
-    /// the baseline scene; the study's whole multistart only where neither
-    /// ends optimal. Returns the best solution, whether a single warm start
-    /// gave it, and the evaluations spent.
+    /// The study's own multistart at `target` (the very run a standalone
+    /// `optimize` with the ε-row makes), and one start from `warm` (the
+    /// nearest solved neighbour); the better of the two. Returns it, whether
+    /// the warm start gave it, and the evaluations spent.
     fn solve_point(&self, target: Target, warm: Option<&Scene>) -> (Option<Solved>, bool, usize) {
-        let better = |a: &Solved, b: &Solved| {
-            // a strictly better than b: feasible first, then a lower objective.
-            (a.feasible && !b.feasible)
-                || (a.feasible == b.feasible && a.objective < b.objective * (1.0 - 1e-12))
-        };
-        let mut evaluations = 0;
-        let mut best: Option<(Solved, bool)> = None;
-        let singles = warm.into_iter().chain(std::iter::once(self.study.scene));
-        for (k, from) in singles.enumerate() {
-            let r = self.solve(target, from, &self.warm_settings);
-            evaluations += r.as_ref().map_or(0, |s| s.evaluations);
-            if let Some(r) = r {
-                let optimal = r.status == OptimizationStatus::Optimal;
-                if best.as_ref().is_none_or(|b| better(&r, &b.0)) {
-                    best = Some((r, k == 0 && warm.is_some()));
-                }
-                if optimal {
-                    let (b, w) = best.expect("set above");
-                    return (Some(b), w, evaluations);
-                }
+        let standalone = self.solve(target, self.study.scene, self.study.settings);
+        let warm = warm.and_then(|w| self.solve(target, w, &self.warm_settings));
+        let evaluations = [&standalone, &warm]
+            .iter()
+            .map(|r| r.as_ref().map_or(0, |s| s.evaluations))
+            .sum();
+        match (standalone, warm) {
+            (Some(s), Some(w)) if improves(&w, Some(&s), 1e-12) => (Some(w), true, evaluations),
+            (Some(s), _) => (Some(s), false, evaluations),
+            (None, w) => {
+                let from_warm = w.is_some();
+                (w, from_warm, evaluations)
             }
-        }
-        let cold = self.solve(target, self.study.scene, self.study.settings);
-        evaluations += cold.as_ref().map_or(0, |s| s.evaluations);
-        match (cold, best) {
-            (Some(c), Some(b)) if better(&b.0, &c) => (Some(b.0), b.1, evaluations),
-            (Some(c), _) => (Some(c), false, evaluations),
-            (None, Some(b)) => (Some(b.0), b.1, evaluations),
-            (None, None) => (None, false, evaluations),
         }
     }
 }
@@ -714,12 +698,15 @@ fn improves(a: &Solved, b: Option<&Solved>, tolerance: f64) -> bool {
 }
 
 /// Re-solves the ε-points until none improves (at most [`MAX_REFINE_ROUNDS`]
-/// rounds): each point from both neighbours' designs, then, when it is still
-/// not optimal, with the study's multistart; the better design is kept. Each
-/// round reads the previous round's designs only, so the result does not
-/// depend on the thread count.
+/// rounds): each point from both neighbours' designs; the better design is
+/// kept. (Every point already holds the result of the study's multistart,
+/// see [`Sweep::solve_point`].) A pair whose designs did not change in the
+/// last round is not solved again: the same solve would give the same
+/// design. Each round reads the previous round's designs only, so the result
+/// does not depend on the thread count.
 fn refine(sweep: &Sweep, slots: &mut [Slot]) {
     let tolerance = sweep.study.settings.tolerance.max(WEAR_TOLERANCE * 1e-3);
+    let mut changed = vec![true; slots.len()];
     for _ in 0..MAX_REFINE_ROUNDS {
         let designs: Vec<Option<Scene>> = slots
             .iter()
@@ -741,19 +728,10 @@ fn refine(sweep: &Sweep, slots: &mut [Slot]) {
                     let Some(Some(scene)) = designs.get(k) else {
                         continue;
                     };
-                    let r = sweep.solve(slots[i].target, scene, &sweep.warm_settings);
-                    evaluations += r.as_ref().map_or(0, |r| r.evaluations);
-                    if let Some(r) = r {
-                        if improves(&r, best.as_ref().or(current), tolerance) {
-                            best = Some(r);
-                        }
+                    if !changed[i] && !changed[k] {
+                        continue;
                     }
-                }
-                let optimal = |r: Option<&Solved>| {
-                    r.is_some_and(|r| r.feasible && r.status == OptimizationStatus::Optimal)
-                };
-                if !optimal(best.as_ref().or(current)) {
-                    let r = sweep.solve(slots[i].target, sweep.study.scene, sweep.study.settings);
+                    let r = sweep.solve(slots[i].target, scene, &sweep.warm_settings);
                     evaluations += r.as_ref().map_or(0, |r| r.evaluations);
                     if let Some(r) = r {
                         if improves(&r, best.as_ref().or(current), tolerance) {
@@ -765,8 +743,9 @@ fn refine(sweep: &Sweep, slots: &mut [Slot]) {
             })
             .collect();
         let mut improved = false;
-        for (slot, (best, evaluations)) in slots.iter_mut().zip(updates) {
+        for ((slot, (best, evaluations)), c) in slots.iter_mut().zip(updates).zip(&mut changed) {
             slot.evaluations += evaluations;
+            *c = best.is_some();
             if let Some(b) = best {
                 slot.solved = Some(b);
                 slot.warm_started = false;
