@@ -6,21 +6,22 @@
 //!   settings), which the problem-file stage builds.
 //! * [`program`]: the solver's vocabulary, [`NonlinearProgram`].
 //! * [`sqp`]: [`minimize`], a trust-region SQP for any such program (argmin `Solver`).
-//! * [`qp`]: its clarabel subproblem; [`multipliers`]: KKT residual and multipliers.
-//! * [`fd`]: finite-difference gradients with error estimates (rayon).
+//! * `qp` (crate-internal): its clarabel subproblem; `multipliers`: KKT
+//!   residual and multipliers; `fd`: finite-difference gradients with error
+//!   estimates (rayon).
 //! * [`design`]: variables in log space, scaled to the unit box.
 //! * [`functions`]: a study as a [`NonlinearProgram`] (ln objective, constraint rows).
 //! * [`optimize`]: deterministic low-discrepancy multistart in parallel, with a
 //!   search for starts in contact.
 
 pub mod design;
-pub mod fd;
+pub(crate) mod fd;
 pub mod functions;
 pub mod materials;
-pub mod multipliers;
+pub(crate) mod multipliers;
 pub mod pareto;
 pub mod program;
-pub mod qp;
+pub(crate) mod qp;
 pub mod sqp;
 pub mod study;
 

@@ -339,55 +339,34 @@ impl Sweep<'_> {
         })
     }
 
-    /// Minimise the objective with the measure held at `target`, from `scene`
-    /// (its design is start 0) with `settings`.
-    fn solve(&self, target: Target, scene: &Scene, settings: &OptimizerSettings) -> Option<Solved> {
+    /// The study with the measure held at `target`, around `scene`: the
+    /// ε-row added (pull-off force, θ), or γ fixed or its bound narrowed
+    /// (work of adhesion). None when a one-sided γ target leaves no range.
+    fn held_at(
+        &self,
+        target: Target,
+        scene: &Scene,
+    ) -> Option<(Scene, Vec<DesignVariable>, Vec<Constraint>)> {
         let mut scene = scene.clone();
         let mut design: Vec<DesignVariable> = self.study.design.to_vec();
         let mut constraints: Vec<Constraint> = self.study.constraints.to_vec();
+        let (Target::Equal(s) | Target::AtMost(s) | Target::AtLeast(s)) = target;
+        let v = value_at(self.measure, s);
         let quantity = match self.measure {
-            AdhesionMeasure::PullOffForce => Some(ConstraintQuantity::PullOffForce),
-            AdhesionMeasure::ElasticAdhesionIndex => Some(ConstraintQuantity::ElasticAdhesionIndex),
-            AdhesionMeasure::WorkOfAdhesion => None,
-        };
-        let inverted = self.measure == AdhesionMeasure::ElasticAdhesionIndex;
-        match (quantity, target) {
-            (Some(q), Target::Equal(s)) => {
-                let v = value_at(self.measure, s);
-                constraints.push(Constraint {
-                    quantity: q,
-                    min: Some(v),
-                    max: Some(v),
-                });
-            }
-            (Some(q), Target::AtMost(s) | Target::AtLeast(s)) => {
-                let v = value_at(self.measure, s);
-                // "At most this strength" is an upper bound on the value, or a
-                // lower one for θ.
-                let upper = matches!(target, Target::AtMost(_)) != inverted;
-                constraints.push(Constraint {
-                    quantity: q,
-                    min: (!upper).then_some(v),
-                    max: upper.then_some(v),
-                });
-            }
-            (None, t) => {
+            AdhesionMeasure::PullOffForce => ConstraintQuantity::PullOffForce,
+            AdhesionMeasure::ElasticAdhesionIndex => ConstraintQuantity::ElasticAdhesionIndex,
+            AdhesionMeasure::WorkOfAdhesion => {
                 let i = design
                     .iter()
                     .position(|d| d.name == DesignQuantity::WorkOfAdhesion)?;
-                let v = match t {
-                    Target::Equal(s) | Target::AtMost(s) | Target::AtLeast(s) => {
-                        value_at(self.measure, s)
-                    }
-                };
-                match t {
+                match target {
                     Target::Equal(_) => {
                         design.remove(i);
                         scene.work_of_adhesion = v;
                     }
                     Target::AtMost(_) | Target::AtLeast(_) => {
                         let var = &mut design[i];
-                        if matches!(t, Target::AtMost(_)) {
+                        if matches!(target, Target::AtMost(_)) {
                             if v <= var.min {
                                 return None;
                             }
@@ -401,40 +380,66 @@ impl Sweep<'_> {
                         scene.work_of_adhesion = scene.work_of_adhesion.clamp(var.min, var.max);
                     }
                 }
+                return Some((scene, design, constraints));
             }
-        }
-        let sub = Study {
-            scene: &scene,
-            design: &design,
-            objective: Some(self.objective),
-            constraints: &constraints,
-            settings,
         };
+        let (min, max) = match target {
+            Target::Equal(_) => (Some(v), Some(v)),
+            Target::AtMost(_) | Target::AtLeast(_) => {
+                // "At most this strength" is an upper bound on the value, or a
+                // lower one for θ.
+                let inverted = self.measure == AdhesionMeasure::ElasticAdhesionIndex;
+                let upper = matches!(target, Target::AtMost(_)) != inverted;
+                ((!upper).then_some(v), upper.then_some(v))
+            }
+        };
+        constraints.push(Constraint { quantity, min, max });
+        Some((scene, design, constraints))
+    }
+
+    /// Minimise the objective with the measure held at `target`, from `scene`
+    /// (its design is start 0) with `settings`: the study's own [`optimize`]
+    /// on [`Sweep::held_at`]'s study.
+    fn solve(&self, target: Target, scene: &Scene, settings: &OptimizerSettings) -> Option<Solved> {
+        let (scene, design, constraints) = self.held_at(target, scene)?;
         let (status, feasible, end_scene, evaluations) = if design.is_empty() {
             // Only γ moved and it is fixed: the point is the scene itself.
             let space = super::DesignSpace::new(&scene, &[]);
             let f = super::StudyFunctions::new(space, self.objective, &constraints);
-            let p = f.at(&[])?;
-            let status = if p.max_violation() <= super::FEASIBILITY_TOLERANCE {
+            let feasible = f.at(&[])?.max_violation() <= super::FEASIBILITY_TOLERANCE;
+            let status = if feasible {
                 OptimizationStatus::Optimal
             } else {
                 OptimizationStatus::Infeasible
             };
-            (
-                status,
-                status == OptimizationStatus::Optimal,
-                scene.clone(),
-                1,
-            )
+            (status, feasible, scene, 1)
         } else {
-            let o = optimize(&sub).ok()?;
+            let o = optimize(&Study {
+                scene: &scene,
+                design: &design,
+                objective: Some(self.objective),
+                constraints: &constraints,
+                settings,
+            })
+            .ok()?;
             (o.status, o.feasible(), o.scene, o.evaluations)
         };
-        let ev = self.evaluate(&end_scene);
+        self.solved(status, feasible, end_scene, evaluations + 1)
+    }
+
+    /// A solve's result with its measure, wear and design.
+    fn solved(
+        &self,
+        status: OptimizationStatus,
+        feasible: bool,
+        scene: Scene,
+        evaluations: usize,
+    ) -> Option<Solved> {
+        let ev = self.evaluate(&scene);
         if ev.status != Status::Ok {
             return None;
         }
-        let (value, log10) = measure_of(self.measure, &ev, &end_scene)?;
+        let (value, log10) = measure_of(self.measure, &ev, &scene)?;
         Some(Solved {
             status,
             feasible,
@@ -443,9 +448,9 @@ impl Sweep<'_> {
             value,
             log10,
             strength: strength_of(self.measure, log10),
-            design: self.design_at(&end_scene),
-            scene: end_scene,
-            evaluations: evaluations + 1,
+            design: self.design_at(&scene),
+            scene,
+            evaluations,
         })
     }
 
@@ -515,6 +520,30 @@ fn corner_strengths(sweep: &Sweep) -> Vec<(f64, Scene)> {
         .collect()
 }
 
+/// One feasibility probe of the range search: a single start from `from`
+/// (the last feasible probe), then, when that is not feasible, from `corner`.
+/// Returns the probe's result and the evaluations spent.
+fn probe_once(
+    sweep: &Sweep,
+    target: Target,
+    from: &Scene,
+    corner: Option<&Scene>,
+) -> (Option<Solved>, usize) {
+    let r = sweep.solve(target, from, &sweep.warm_settings);
+    let mut evaluations = r.as_ref().map_or(0, |r| r.evaluations);
+    if r.as_ref().is_some_and(|r| r.feasible) {
+        return (r, evaluations);
+    }
+    if let Some(c) = corner {
+        let rc = sweep.solve(target, c, &sweep.warm_settings);
+        evaluations += rc.as_ref().map_or(0, |r| r.evaluations);
+        if rc.as_ref().is_some_and(|r| r.feasible) {
+            return (rc, evaluations);
+        }
+    }
+    (r, evaluations)
+}
+
 /// One end of the reachable range: from the feasible `start` toward `bound`
 /// (inclusive), by probing "strength ≥ s" (upward) or "≤ s" (downward), each
 /// probe warm-started from the last feasible one and, when that fails, from
@@ -543,17 +572,8 @@ fn find_end(
         } else {
             Target::AtMost(probe)
         };
-        let mut r = sweep.solve(target, &good.scene, &sweep.warm_settings);
-        evaluations += r.as_ref().map_or(0, |r| r.evaluations);
-        if !r.as_ref().is_some_and(|r| r.feasible) {
-            if let Some(c) = corner {
-                let rc = sweep.solve(target, c, &sweep.warm_settings);
-                evaluations += rc.as_ref().map_or(0, |r| r.evaluations);
-                if rc.as_ref().is_some_and(|r| r.feasible) {
-                    r = rc;
-                }
-            }
-        }
+        let (r, e) = probe_once(sweep, target, &good.scene, corner);
+        evaluations += e;
         probes += 1;
         observer.probe_done();
         match r {
@@ -804,6 +824,152 @@ fn front_point(index: usize, slot: &Slot, measure: AdhesionMeasure, n: usize) ->
     }
 }
 
+/// The reachable range of the measure and the designs at its ends.
+struct Range {
+    lo: f64,
+    hi: f64,
+    lo_solved: Solved,
+    hi_solved: Solved,
+    /// The low end is the pull-off floor (one-sided).
+    floor_end: bool,
+    probes: usize,
+    evaluations: usize,
+}
+
+/// The reachable range around the least-wear design `start` (see the module
+/// docs): bracketed by the box corners and the study's own limits on the
+/// measure, each end then found by [`find_end`].
+fn reachable_range(sweep: &Sweep, start: &Solved, observer: &dyn Observer) -> Range {
+    let s_w = start.strength;
+    let corners = corner_strengths(sweep);
+    let (limit_lo, limit_hi) = study_limits(sweep.measure, sweep.study.constraints);
+    let floor = match sweep.measure {
+        AdhesionMeasure::PullOffForce => PULL_OFF_FLOOR.log10(),
+        _ => f64::NEG_INFINITY,
+    };
+    let extreme = |better: fn(f64, f64) -> bool| {
+        corners
+            .iter()
+            .fold(None::<&(f64, Scene)>, |best, c| match best {
+                Some(b) if !better(c.0, b.0) => Some(b),
+                _ => Some(c),
+            })
+    };
+    let weakest = extreme(|a, b| a < b);
+    let strongest = extreme(|a, b| a > b);
+    let box_lo = weakest.map_or(s_w, |c| c.0.min(s_w)).max(limit_lo);
+    let box_hi = strongest.map_or(s_w, |c| c.0.max(s_w)).min(limit_hi);
+    let (mut probes, mut evaluations) = (0, 0);
+    let (lo, lo_solved, floor_end) = if !start.feasible {
+        (s_w, start.clone(), false)
+    } else if s_w <= floor {
+        // The least-wear design has no pull-off to speak of: it is the low end.
+        (floor, start.clone(), true)
+    } else {
+        let corner = weakest.map(|c| &c.1);
+        let (lo, solved, p, e) = find_end(sweep, start, box_lo.max(floor), corner, observer);
+        probes += p;
+        evaluations += e;
+        (lo, solved, lo <= floor + STRENGTH_TOLERANCE)
+    };
+    let (hi, hi_solved) = if start.feasible {
+        let corner = strongest.map(|c| &c.1);
+        let (hi, solved, p, e) = find_end(sweep, start, box_hi.max(floor), corner, observer);
+        probes += p;
+        evaluations += e;
+        (hi.max(lo), solved)
+    } else {
+        (s_w.max(lo), start.clone())
+    };
+    Range {
+        lo,
+        hi,
+        lo_solved,
+        hi_solved,
+        floor_end,
+        probes,
+        evaluations,
+    }
+}
+
+/// Solves the targets `strengths` in waves of [`WAVE`] from the preferred end,
+/// each point by [`Sweep::solve_point`], warm from the nearest design known
+/// before its wave (`seeds`, then each wave's). The point at `floor_index`
+/// holds its target as an upper bound.
+fn sweep_waves(
+    sweep: &Sweep,
+    strengths: &[f64],
+    floor_index: Option<usize>,
+    seeds: [&Solved; 3],
+) -> Vec<Slot> {
+    // Only designs whose measure a double can hold (a pull-off below 1e-300 N
+    // leaves its row without a gradient).
+    let mut known: Vec<(f64, Scene)> = Vec::new();
+    let remember = |known: &mut Vec<(f64, Scene)>, r: &Solved| {
+        if r.feasible && r.log10 > -300.0 {
+            known.push((r.strength, r.scene.clone()));
+        }
+    };
+    for r in seeds {
+        remember(&mut known, r);
+    }
+    let mut slots: Vec<Slot> = Vec::with_capacity(strengths.len());
+    for (w, wave) in strengths.chunks(WAVE).enumerate() {
+        let solved: Vec<Slot> = wave
+            .par_iter()
+            .enumerate()
+            .map(|(j, &s)| {
+                let target = if Some(w * WAVE + j) == floor_index {
+                    Target::AtMost(s)
+                } else {
+                    Target::Equal(s)
+                };
+                let warm = known
+                    .iter()
+                    .min_by(|a, b| (a.0 - s).abs().total_cmp(&(b.0 - s).abs()))
+                    .map(|k| &k.1);
+                let (solved, warm_started, evaluations) = sweep.solve_point(target, warm);
+                Slot {
+                    strength: s,
+                    target,
+                    solved,
+                    warm_started,
+                    evaluations,
+                }
+            })
+            .collect();
+        for slot in solved {
+            if let Some(r) = &slot.solved {
+                remember(&mut known, r);
+            }
+            slots.push(slot);
+        }
+    }
+    slots
+}
+
+/// The reported points of the final slots, in sweep order, with dominance
+/// decided against the earlier points; each goes to the observer.
+fn points_of(
+    slots: &[Slot],
+    measure: AdhesionMeasure,
+    n: usize,
+    direction: ParetoDirection,
+    observer: &dyn Observer,
+) -> Vec<FrontPoint> {
+    let mut points: Vec<FrontPoint> = Vec::with_capacity(slots.len());
+    for (index, slot) in slots.iter().enumerate() {
+        let mut p = front_point(index, slot, measure, n);
+        if p.feasible {
+            p.dominated = dominated_by_earlier(&points, &p, direction);
+            p.on_front = !p.dominated;
+        }
+        observer.point_done(&p);
+        points.push(p);
+    }
+    points
+}
+
 /// Sweeps the wear–adhesion curve of a study (see the module docs). The
 /// result is the same for any number of rayon threads.
 pub fn pareto(
@@ -875,56 +1041,9 @@ pub fn pareto(
     });
 
     // The reachable range.
-    let corners = corner_strengths(&sweep);
-    let (limit_lo, limit_hi) = study_limits(measure, study.constraints);
-    let floor = match measure {
-        AdhesionMeasure::PullOffForce => PULL_OFF_FLOOR.log10(),
-        _ => f64::NEG_INFINITY,
-    };
-    let extreme = |better: fn(f64, f64) -> bool| {
-        corners
-            .iter()
-            .fold(None::<&(f64, Scene)>, |best, c| match best {
-                Some(b) if !better(c.0, b.0) => Some(b),
-                _ => Some(c),
-            })
-    };
-    let weakest = extreme(|a, b| a < b);
-    let strongest = extreme(|a, b| a > b);
-    let box_lo = weakest.map_or(s_w, |c| c.0.min(s_w)).max(limit_lo);
-    let box_hi = strongest.map_or(s_w, |c| c.0.max(s_w)).min(limit_hi);
-    let mut probes = 0;
-    let (lo, lo_solved, floor_end) = if !least_wear_feasible {
-        (s_w, start.clone(), false)
-    } else if s_w <= floor {
-        // The least-wear design has no pull-off to speak of: it is the low end.
-        (floor, start.clone(), true)
-    } else {
-        let (lo, solved, p, e) = find_end(
-            &sweep,
-            &start,
-            box_lo.max(floor),
-            weakest.map(|c| &c.1),
-            observer,
-        );
-        probes += p;
-        evaluations += e;
-        (lo, solved, lo <= floor + STRENGTH_TOLERANCE)
-    };
-    let (hi, hi_solved) = if least_wear_feasible {
-        let (hi, solved, p, e) = find_end(
-            &sweep,
-            &start,
-            box_hi.max(floor),
-            strongest.map(|c| &c.1),
-            observer,
-        );
-        probes += p;
-        evaluations += e;
-        (hi.max(lo), solved)
-    } else {
-        (s_w.max(lo), start.clone())
-    };
+    let range = reachable_range(&sweep, &start, observer);
+    evaluations += range.evaluations;
+    let (lo, hi, floor_end, probes) = (range.lo, range.hi, range.floor_end, range.probes);
     let snap = (s_w > lo).then_some(s_w);
     let strengths = targets(measure, lo, hi, spec.points, spec.direction, snap);
 
@@ -934,64 +1053,15 @@ pub fn pareto(
         ParetoDirection::Low => 0,
         ParetoDirection::High => strengths.len() - 1,
     });
-    // Solutions to warm-start from: the range search's, then each wave's.
-    // Only those whose measure a double can hold (a pull-off below 1e-300 N
-    // leaves its row without a gradient).
-    let mut known: Vec<(f64, Scene)> = Vec::new();
-    let remember = |known: &mut Vec<(f64, Scene)>, r: &Solved| {
-        if r.feasible && r.log10 > -300.0 {
-            known.push((r.strength, r.scene.clone()));
-        }
-    };
-    for r in [&lo_solved, &hi_solved, &start] {
-        remember(&mut known, r);
-    }
-    let mut slots: Vec<Slot> = Vec::with_capacity(strengths.len());
-    for (w, wave) in strengths.chunks(WAVE).enumerate() {
-        let solved: Vec<Slot> = wave
-            .par_iter()
-            .enumerate()
-            .map(|(j, &s)| {
-                let index = w * WAVE + j;
-                let target = if Some(index) == floor_index {
-                    Target::AtMost(s)
-                } else {
-                    Target::Equal(s)
-                };
-                // The nearest solution known before this wave.
-                let warm = known
-                    .iter()
-                    .min_by(|a, b| (a.0 - s).abs().total_cmp(&(b.0 - s).abs()))
-                    .map(|k| &k.1);
-                let (solved, warm_started, evaluations) = sweep.solve_point(target, warm);
-                Slot {
-                    strength: s,
-                    target,
-                    solved,
-                    warm_started,
-                    evaluations,
-                }
-            })
-            .collect();
-        for slot in solved {
-            if let Some(r) = &slot.solved {
-                remember(&mut known, r);
-            }
-            slots.push(slot);
-        }
-    }
+    let mut slots = sweep_waves(
+        &sweep,
+        &strengths,
+        floor_index,
+        [&range.lo_solved, &range.hi_solved, &start],
+    );
     refine(&sweep, &mut slots);
-    let mut points: Vec<FrontPoint> = Vec::with_capacity(slots.len());
-    for (index, slot) in slots.iter().enumerate() {
-        evaluations += slot.evaluations;
-        let mut p = front_point(index, slot, measure, names.len());
-        if p.feasible {
-            p.dominated = dominated_by_earlier(&points, &p, spec.direction);
-            p.on_front = !p.dominated;
-        }
-        observer.point_done(&p);
-        points.push(p);
-    }
+    evaluations += slots.iter().map(|s| s.evaluations).sum::<usize>();
+    let points = points_of(&slots, measure, names.len(), spec.direction, observer);
     let front = points.iter().filter(|p| p.on_front).count();
     let status = match front {
         0 => FrontStatus::Infeasible,

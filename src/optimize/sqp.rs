@@ -1,8 +1,8 @@
 //! A trust-region SQP for any [`NonlinearProgram`], as an argmin [`Solver`]:
-//! quasi-Newton (damped BFGS) subproblems solved by clarabel ([`super::qp`]),
+//! quasi-Newton (damped BFGS) subproblems solved by clarabel (`qp`),
 //! elastic mode for inconsistent linearisations, acceptance by the ℓ1 merit
 //! function `φ = f + ρ Σ max(0, g_j)` with a second-order correction, and
-//! convergence on the KKT residual of [`super::multipliers::kkt`] measured in
+//! convergence on the KKT residual of `multipliers::kkt` measured in
 //! the problem's own coordinates.
 //!
 //! Every tuning constant is a field of [`SqpSettings`], with its default in
@@ -86,7 +86,7 @@ pub struct SqpSettings {
 impl SqpSettings {
     /// The test for `optimal`: KKT residual ≤ `tolerance` and no row or bound
     /// violated by more than `feasibility_tolerance`.
-    pub fn met(&self, k: &Kkt) -> bool {
+    pub(crate) fn met(&self, k: &Kkt) -> bool {
         k.residual <= self.tolerance && k.violation <= self.feasibility_tolerance
     }
 }
@@ -182,7 +182,10 @@ pub struct SqpResult {
     pub constraints: Vec<f64>,
     /// How it ended.
     pub status: SqpStatus,
-    /// The KKT residual at x (see [`super::multipliers::Kkt`]).
+    /// The KKT residual at x: the largest of the relative stationarity
+    /// ‖∇f + Σλ_j∇g_j − μ_lower + μ_upper‖∞ / max(1, ‖∇f‖∞), the
+    /// complementarity max_j |λ_j g_j| / max(1, |f|) and the largest violation
+    /// of a row or bound, in the problem's own coordinates.
     pub kkt_residual: f64,
     /// λ_j ≥ 0, one per row in the order `constraints` returns them.
     pub multipliers: Vec<f64>,
@@ -212,10 +215,10 @@ impl SqpResult {
 }
 
 /// A program as argmin's problem.
-pub struct Program<'a, P: ?Sized>(&'a P);
+pub(crate) struct Program<'a, P: ?Sized>(&'a P);
 
 /// The SQP solver state.
-pub struct Sqp {
+pub(crate) struct Sqp {
     settings: SqpSettings,
     lower: Vec<f64>,
     upper: Vec<f64>,
