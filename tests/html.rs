@@ -185,7 +185,7 @@ fn pareto_page() {
         headers[1],
         [
             "point",
-            "pull off force",
+            "pull-off force",
             "wear rate",
             "status",
             "front",

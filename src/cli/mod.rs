@@ -202,6 +202,10 @@ fn curve_law(
     }
 }
 
+/// Samples of the load–separation curve drawn on the HTML pages (dense enough that the
+/// stretch around the operating point stays smooth when the page shows only that).
+const LOAD_CURVE_POINTS: usize = 1001;
+
 /// An error that is the user's input, not ours: exit code 2.
 #[derive(Debug, thiserror::Error)]
 #[error("{0}")]
@@ -262,7 +266,7 @@ fn eval(file: PathBuf, format: Format, out: Option<PathBuf>) -> Result<ExitCode>
                 &problem.scene,
                 evaluation,
                 &EvaluationOptions::default(),
-                201,
+                LOAD_CURVE_POINTS,
             );
             report::eval::html(&r, &curve)
         }
@@ -319,7 +323,7 @@ fn optimize(
                 &optimum.scene,
                 &optimum.evaluation,
                 &EvaluationOptions::default(),
-                201,
+                LOAD_CURVE_POINTS,
             );
             report::optimize::html(&problem.name, &optimum, &curve)
         }

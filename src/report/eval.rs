@@ -132,19 +132,34 @@ fn verdict_words(v: crate::model::StictionVerdict) -> &'static str {
 }
 
 /// The load–separation curve as an SVG plot: W against d, the operating point and
-/// the pull-off marked.
+/// the pull-off marked. A pull-off beyond the sampled stretch of the curve (the model
+/// samples at most 40 σ; a pull-off that underflows sits far out) is left unmarked
+/// rather than stretch the axis until the curve is a sliver.
 pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
     use super::svg::{Axis, LinePlot, Marker, Series};
-    let max_w = c
+    let (d_lo, d_hi) = c
         .points
         .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    let pull_off = c.pull_off_point.filter(|p| (d_lo..=d_hi).contains(&p.0));
+    // Without a pull-off to show, the curve past a few times the operating point's
+    // distance from the start is a flat line at W = 0: leave it out.
+    let d_end = match (pull_off, c.operating_point) {
+        (None, Some(op)) if op.0 > d_lo => (op.0 + 3.0 * (op.0 - d_lo)).min(d_hi),
+        _ => d_hi,
+    };
+    let points: Vec<(f64, f64)> = c.points.iter().copied().filter(|p| p.0 <= d_end).collect();
+    let max_w = points
+        .iter()
         .chain(c.operating_point.iter())
-        .chain(c.pull_off_point.iter())
+        .chain(pull_off.iter())
         .map(|p| p.1.abs())
         .fold(0.0, f64::max);
     let (wf, wu) = super::units::axis_unit(max_w, "N");
     let (df, du) =
-        super::units::axis_unit(c.points.iter().map(|p| p.0.abs()).fold(0.0, f64::max), "m");
+        super::units::axis_unit(points.iter().map(|p| p.0.abs()).fold(0.0, f64::max), "m");
     let scaled = |p: &(f64, f64)| (p.0 / df, p.1 / wf);
     let mut plot = LinePlot::new(
         title,
@@ -152,7 +167,7 @@ pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
         Axis::linear("load W (positive presses)").with_unit(wu),
     )
     .with_series(
-        Series::new("W(d), the model", c.points.iter().map(scaled).collect())
+        Series::new("W(d), the model", points.iter().map(scaled).collect())
             .with_marker(Marker::None),
     );
     if let Some(p) = &c.operating_point {
@@ -162,7 +177,7 @@ pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
                 .with_marker(Marker::Circle),
         );
     }
-    if let Some(p) = &c.pull_off_point {
+    if let Some(p) = &pull_off {
         plot = plot.with_series(
             Series::new("pull-off", vec![scaled(p)])
                 .without_line()
@@ -170,6 +185,32 @@ pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
         );
     }
     plot.to_svg()
+}
+
+/// Whether [`load_curve_svg`] marks the pull-off (it lies on the sampled curve).
+fn pull_off_drawn(c: &crate::model::LoadCurve) -> bool {
+    let (lo, hi) = c
+        .points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    c.pull_off_point.is_some_and(|p| (lo..=hi).contains(&p.0))
+}
+
+/// The caption of [`load_curve_svg`]'s plot, saying what is marked.
+pub(crate) fn load_curve_caption(what: &str, c: &crate::model::LoadCurve) -> String {
+    let marked = match (c.operating_point.is_some(), pull_off_drawn(c)) {
+        (true, true) => {
+            ", with the operating point and the pull-off (the most tensile load the contact holds)"
+        }
+        (true, false) => {
+            ", with the operating point; the pull-off lies far beyond the drawn range (its force is in the table)"
+        }
+        (false, true) => ", with the pull-off (the most tensile load the contact holds)",
+        (false, false) => "",
+    };
+    format!("{what} against the mean-plane separation d{marked}.")
 }
 
 /// A self-contained HTML page: the tables of [`text`] and the load–separation curve
@@ -323,6 +364,44 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
             ),
         ]);
     }
+    if let Some((law, st)) = other_stiction(ev) {
+        rows.push(vec![
+            format!(
+                "stiction under the {} law instead",
+                law.as_str().to_uppercase()
+            ),
+            format!(
+                "pull-off {}, margin {} → {}",
+                q(st.pull_off_force, "N"),
+                sig_exp(st.margin, 3),
+                match st.verdict {
+                    crate::model::StictionVerdict::Sticks => "sticks",
+                    crate::model::StictionVerdict::Releases => "releases",
+                }
+            ),
+        ]);
+    }
+    if let Some(om) = &ev.other_model {
+        rows.push(vec![
+            format!(
+                "under the {} law instead",
+                om.adhesion_model.as_str().to_uppercase()
+            ),
+            match om.nondimensional_separation {
+                Some(_) => format!(
+                    "real area {}, pull-off {}, wear rate {}",
+                    q(om.real_area, "m²"),
+                    om.pull_off_force.map_or("—".into(), |f| q(f, "N")),
+                    q(om.wear_rate, "m³/m")
+                ),
+                None => format!(
+                    "{} (no contact under this load), pull-off {}",
+                    om.status.as_str(),
+                    om.pull_off_force.map_or("—".into(), |f| q(f, "N"))
+                ),
+            },
+        ]);
+    }
     if let Some(f) = ev.friction_force {
         rows.push(vec!["friction force τ A_r".into(), q(f, "N")]);
     }
@@ -333,7 +412,7 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
     p.figure(
         "load-separation",
         &load_curve_svg(&format!("Load against separation — {}", r.name), curve),
-        "The model's load W against the mean-plane separation d, with the operating point and the pull-off (the most tensile load the contact holds).",
+        &load_curve_caption("The model's load W", curve),
     );
     if !r.sensitivities.is_empty() {
         p.heading("Sensitivity of the wear rate");
@@ -662,4 +741,47 @@ pub fn text(r: &EvalReport) -> String {
         }
     }
     o
+}
+
+#[cfg(test)]
+mod load_curve_tests {
+    use super::*;
+    use crate::model::LoadCurve;
+
+    /// A pull-off beyond the sampled curve is not marked, and the flat tail past the
+    /// operating point is cut to three times its distance from the start.
+    #[test]
+    fn a_far_pull_off_is_not_marked_and_the_tail_is_cut() {
+        let points: Vec<(f64, f64)> = (0..=400)
+            .map(|i| {
+                let d = 1e-9 + 1e-10 * i as f64;
+                (d, 1e-3 * (-(d - 1e-9) / 1e-9).exp())
+            })
+            .collect();
+        let c = LoadCurve {
+            points: points.clone(),
+            operating_point: Some((2e-9, 1e-3 * (-1.0f64).exp())),
+            pull_off_point: Some((450e-9, -1e-30)),
+        };
+        let svg = load_curve_svg("t", &c);
+        assert!(!svg.contains(">pull-off<"), "{svg}");
+        // d runs 1 … 41 nm; the page shows 1 … 5 nm (operating point at 2 nm).
+        assert!(
+            svg.contains(">5</text>") && !svg.contains(">40</text>"),
+            "{svg}"
+        );
+        assert!(load_curve_caption("W", &c).contains("far beyond the drawn range"));
+        // On the curve it is marked and nothing is cut.
+        let c = LoadCurve {
+            points,
+            operating_point: Some((2e-9, 1e-3 * (-1.0f64).exp())),
+            pull_off_point: Some((30e-9, -1e-6)),
+        };
+        let svg = load_curve_svg("t", &c);
+        assert!(
+            svg.contains(">pull-off<") && svg.contains(">40</text>"),
+            "{svg}"
+        );
+        assert!(load_curve_caption("W", &c).contains("the most tensile load"));
+    }
 }

@@ -385,24 +385,22 @@ pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String 
     p.list(&bounds, "note");
     let unit = super::objective_unit(o.objective_name);
     p.heading("Objective");
-    p.table(
-        &["quantity", "optimum", "baseline"],
-        &[
-            vec![
-                o.objective_name.to_string(),
-                si(o.objective, unit, 4),
-                si(o.baseline_objective, unit, 4),
-            ],
-            vec![
-                "wear_rate".into(),
-                si(o.evaluation.wear_rate, "m³/m", 4),
-                o.baseline_evaluation
-                    .as_ref()
-                    .map_or("—".into(), |e| si(e.wear_rate, "m³/m", 4)),
-            ],
-        ],
-        &[],
-    );
+    let mut rows = vec![vec![
+        o.objective_name.to_string(),
+        si(o.objective, unit, 4),
+        si(o.baseline_objective, unit, 4),
+    ]];
+    // The wear rate beside another objective (not twice when it is the objective).
+    if o.objective_name != "wear_rate" {
+        rows.push(vec![
+            "wear_rate".into(),
+            si(o.evaluation.wear_rate, "m³/m", 4),
+            o.baseline_evaluation
+                .as_ref()
+                .map_or("—".into(), |e| si(e.wear_rate, "m³/m", 4)),
+        ]);
+    }
+    p.table(&["quantity", "optimum", "baseline"], &rows, &[]);
     if !o.constraints.is_empty() {
         p.heading("Constraints");
         let f =
@@ -457,8 +455,11 @@ pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String 
     );
     p.figure(
         "load-separation",
-        &super::eval::load_curve_svg(&format!("The optimum's load against separation — {name}"), curve),
-        "The optimum design's load W against the mean-plane separation d, with the operating point and the pull-off.",
+        &super::eval::load_curve_svg(
+            &format!("The optimum's load against separation — {name}"),
+            curve,
+        ),
+        &super::eval::load_curve_caption("The optimum design's load W", curve),
     );
     p.finish()
 }

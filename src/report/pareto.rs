@@ -706,7 +706,11 @@ pub fn html(
         "Least wear at each adhesion (ε-constraint curve), the Pareto front, its knee and the baseline design.",
     );
 
-    let adhesion_header = m.as_str().replace('_', " ");
+    let adhesion_header = match m {
+        AdhesionMeasure::PullOffForce => "pull-off force".to_string(),
+        AdhesionMeasure::WorkOfAdhesion => "work of adhesion γ".to_string(),
+        AdhesionMeasure::ElasticAdhesionIndex => "elastic adhesion index θ".to_string(),
+    };
     let objective_header = front.objective_name.replace('_', " ");
     let design_cells = |design: &[f64]| -> Vec<String> {
         front
@@ -834,28 +838,26 @@ pub fn html(
                 let at = |v: Option<&Vec<Option<f64>>>| {
                     constraint_cell(c, v.and_then(|a| a.get(j).copied().flatten()))
                 };
-                vec![
-                    c.quantity.to_string(),
-                    limit(c.min),
-                    limit(c.max),
-                    at(knee_at),
-                    at(Some(&values.least_wear)),
-                    at(values.baseline.as_ref()),
-                ]
+                let mut row = vec![c.quantity.to_string(), limit(c.min), limit(c.max)];
+                if knee_at.is_some() {
+                    row.push(at(knee_at));
+                }
+                row.push(at(Some(&values.least_wear)));
+                if values.baseline.is_some() {
+                    row.push(at(values.baseline.as_ref()));
+                }
+                row
             })
             .collect();
-        p.table(
-            &[
-                "constraint",
-                "min",
-                "max",
-                "at the knee",
-                "least-wear design",
-                "baseline",
-            ],
-            &rows,
-            &[],
-        );
+        let mut header = vec!["constraint", "min", "max"];
+        if knee_at.is_some() {
+            header.push("at the knee");
+        }
+        header.push("least-wear design");
+        if values.baseline.is_some() {
+            header.push("baseline");
+        }
+        p.table(&header, &rows, &[]);
     }
     p.paragraph(
         &format!(
