@@ -1,7 +1,8 @@
 //! The paper's figures 1–4 (§4): non-dimensional wear volume V̄ against
 //! non-dimensional load P̄, the least-squares line through each curve, and a
 //! verdict on each claim §4 makes about them. Computation only, no I/O;
-//! [`crate::report::figures`] renders the CSV, SVG and text/JSON report, and the
+//! [`crate::report::figures`] words the claims and renders the CSV, SVG and text/JSON
+//! report, and the
 //! CLI (`wearopt figures`) writes them.
 //!
 //! # How a curve is drawn
@@ -350,41 +351,83 @@ pub fn compute_figures(specs: &[FigureSpec], settings: &FigureSettings) -> Vec<F
     figures
 }
 
-/// A claim of the paper's §4 and whether the model bears it out.
+/// A claim of the paper's §4 and whether the model bears it out. The report stage
+/// words it (`report::figures`): what the paper says, the test, and the evidence.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Claim {
     /// A short stable key (`linear`, `low_lambda_low_theta_wears_more`, …).
     pub id: &'static str,
-    /// What the paper says, in words.
-    pub statement: &'static str,
-    /// The test applied, with its threshold.
-    pub criterion: String,
     /// Whether the model satisfies it; None when the figures needed are missing.
     pub holds: Option<bool>,
     /// The numbers that decide it.
-    pub evidence: String,
+    pub evidence: Evidence,
 }
 
-fn fmt(x: f64) -> String {
-    if x.is_finite() && x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e5) {
-        format!("{x:.3e}")
-    } else {
-        format!("{x:.4}")
-    }
+/// The curve whose fit is least straight (claim 1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WorstFit {
+    /// Its figure.
+    pub figure: u8,
+    /// Its θ.
+    pub theta: f64,
+    /// Its λ.
+    pub lambda: f64,
+    /// Its r², None when no line could be fitted.
+    pub r_squared: Option<f64>,
 }
 
-fn slope_list(fig: &Figure) -> String {
-    let name = match fig.spec.varied {
-        Varied::Theta => "θ",
-        Varied::Lambda => "λ",
-    };
-    fig.spec
-        .values
-        .iter()
-        .zip(fig.slopes())
-        .map(|(v, s)| format!("{name}={v}: {}", fmt(s)))
-        .collect::<Vec<_>>()
-        .join(", ")
+/// A figure's slopes in the order of its varied index (claims 2 to 4).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Slopes {
+    /// The figure.
+    pub figure: u8,
+    /// The index varied across its curves.
+    pub varied: Varied,
+    /// The varied index's values.
+    pub values: Vec<f64>,
+    /// The least-squares slope of each curve (NaN where none was fitted).
+    pub slopes: Vec<f64>,
+    /// The slopes fall strictly as the index grows (all finite).
+    pub falls: bool,
+    /// Adjacent values (v_i, v_i+1) where the slope does not fall.
+    pub breaks: Vec<(f64, f64)>,
+}
+
+/// A figure's slopes, or the number of a figure that was not computed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FigureSlopes {
+    /// The figure was computed.
+    Computed(Slopes),
+    /// The figure of this number was not among those computed.
+    Missing(u8),
+}
+
+/// What decides a claim.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Evidence {
+    /// Claim 1: the least straight curve, and how many fall below the threshold.
+    Linearity {
+        /// The curve with the smallest r² (None: no curves).
+        worst: Option<WorstFit>,
+        /// Curves below [`LINEAR_R_SQUARED`] (or without a fit).
+        below: usize,
+        /// Curves in all.
+        curves: usize,
+    },
+    /// Claims 2 and 4: the slopes of each figure named, in order.
+    Ordering {
+        /// One entry per figure the claim looks at.
+        figures: Vec<FigureSlopes>,
+    },
+    /// Claim 3: figure 2's slopes and their max/min ratio.
+    EqualSlopes {
+        /// Figure 2's slopes.
+        figure: FigureSlopes,
+        /// max/min of the slopes (NaN when the figure is missing).
+        ratio: f64,
+    },
 }
 
 /// True when the slopes fall strictly as the varied index grows (all finite).
@@ -392,31 +435,28 @@ fn strictly_decreasing(slopes: &[f64]) -> bool {
     slopes.iter().all(|s| s.is_finite()) && slopes.windows(2).all(|w| w[1] < w[0])
 }
 
-/// The pairs of adjacent curves where the slope does not fall.
-fn order_breaks(fig: &Figure) -> Vec<String> {
-    let s = fig.slopes();
-    let v = &fig.spec.values;
-    (1..s.len())
-        .filter(|&i| s[i].is_nan() || s[i - 1].is_nan() || s[i] >= s[i - 1])
-        .map(|i| format!("{} → {}", v[i - 1], v[i]))
-        .collect()
-}
-
 fn find(figures: &[Figure], number: u8) -> Option<&Figure> {
     figures.iter().find(|f| f.spec.number == number)
 }
 
-fn order_claim(fig: &Figure, what: &str) -> (Option<bool>, String) {
-    let ok = strictly_decreasing(&fig.slopes());
-    let breaks = order_breaks(fig);
-    let mut evidence = format!("Fig. {} slopes {}", fig.spec.number, slope_list(fig));
-    if !ok {
-        evidence.push_str(&format!(
-            "; slope does not fall with {what} at {}",
-            breaks.join(", ")
-        ));
-    }
-    (Some(ok), evidence)
+/// Figure `number`'s slopes, in order, with where they fail to fall.
+fn slopes_of(figures: &[Figure], number: u8) -> FigureSlopes {
+    let Some(fig) = find(figures, number) else {
+        return FigureSlopes::Missing(number);
+    };
+    let s = fig.slopes();
+    let v = &fig.spec.values;
+    FigureSlopes::Computed(Slopes {
+        figure: number,
+        varied: fig.spec.varied,
+        values: v.clone(),
+        falls: strictly_decreasing(&s),
+        breaks: (1..s.len())
+            .filter(|&i| s[i].is_nan() || s[i - 1].is_nan() || s[i] >= s[i - 1])
+            .map(|i| (v[i - 1], v[i]))
+            .collect(),
+        slopes: s,
+    })
 }
 
 /// Tests the four claims of §4 against computed figures (by figure number:
@@ -436,87 +476,75 @@ pub fn assess_claims(figures: &[Figure]) -> Vec<Claim> {
             let rb = b.2.map_or(f64::NEG_INFINITY, |f| f.r_squared);
             ra.total_cmp(&rb)
         })
-        .copied();
+        .map(|(n, c, f)| WorstFit {
+            figure: *n,
+            theta: c.theta,
+            lambda: c.lambda,
+            r_squared: f.map(|f| f.r_squared),
+        });
     let below = fits
         .iter()
         .filter(|(_, _, f)| f.is_none_or(|f| f.r_squared < LINEAR_R_SQUARED))
         .count();
     claims.push(Claim {
         id: "linear",
-        statement: "wear volume depends linearly on load for all parameter combinations",
-        criterion: format!("every curve's least-squares r² ≥ {LINEAR_R_SQUARED}"),
         holds: worst.map(|_| below == 0),
-        evidence: match worst {
-            None => "no curves".to_string(),
-            Some((n, c, f)) => format!(
-                "smallest r² = {} (Fig. {n}, θ = {}, λ = {}); {below} of {} curves below {LINEAR_R_SQUARED}",
-                f.map_or("none".to_string(), |f| format!("{:.6}", f.r_squared)),
-                c.theta,
-                c.lambda,
-                fits.len()
-            ),
+        evidence: Evidence::Linearity {
+            worst,
+            below,
+            curves: fits.len(),
         },
     });
 
-    // (2) Figure 1: at low λ, lower θ wears more.
-    let (holds, evidence) = match find(figures, 1) {
-        Some(f) => order_claim(f, "θ"),
-        None => (None, "figure 1 not computed".to_string()),
+    let order_holds = |f: &FigureSlopes| match f {
+        FigureSlopes::Computed(s) => Some(s.falls),
+        FigureSlopes::Missing(_) => None,
     };
+
+    // (2) Figure 1: at low λ, lower θ wears more.
+    let fig1 = slopes_of(figures, 1);
     claims.push(Claim {
         id: "low_lambda_low_theta_wears_more",
-        statement: "at low λ (0.1) the wear rate is larger for lower θ (Fig. 1)",
-        criterion: "slope of V̄ against P̄ falls strictly as θ rises".to_string(),
-        holds,
-        evidence,
+        holds: order_holds(&fig1),
+        evidence: Evidence::Ordering {
+            figures: vec![fig1],
+        },
     });
 
     // (3) Figure 2: at high λ, slopes nearly equal.
-    let (holds, evidence) = match find(figures, 2) {
-        Some(f) => {
-            let s = f.slopes();
+    let fig2 = slopes_of(figures, 2);
+    let (holds, ratio) = match &fig2 {
+        FigureSlopes::Computed(f) => {
+            let s = &f.slopes;
             let max = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
             let min = s.iter().copied().fold(f64::INFINITY, f64::min);
             let ratio = max / min;
             let ok = s.iter().all(|x| x.is_finite()) && min > 0.0 && ratio <= EQUAL_SLOPE_RATIO;
-            (
-                Some(ok),
-                format!("Fig. 2 slopes {}; max/min = {}", slope_list(f), fmt(ratio)),
-            )
+            (Some(ok), ratio)
         }
-        None => (None, "figure 2 not computed".to_string()),
+        FigureSlopes::Missing(_) => (None, f64::NAN),
     };
     claims.push(Claim {
         id: "high_lambda_theta_insensitive",
-        statement: "at high λ (5) the wear rate is more or less the same for all θ (Fig. 2)",
-        criterion: format!("max/min slope ≤ {EQUAL_SLOPE_RATIO}"),
         holds,
-        evidence,
+        evidence: Evidence::EqualSlopes {
+            figure: fig2,
+            ratio,
+        },
     });
 
     // (4) Figures 3 and 4: lower λ wears more, at both θ.
-    let parts: Vec<(Option<bool>, String)> = [3, 4]
-        .iter()
-        .map(|&n| match find(figures, n) {
-            Some(f) => order_claim(f, "λ"),
-            None => (None, format!("figure {n} not computed")),
-        })
-        .collect();
-    let holds = if parts.iter().any(|p| p.0.is_none()) {
+    let parts: Vec<FigureSlopes> = [3, 4].iter().map(|&n| slopes_of(figures, n)).collect();
+    let each: Vec<Option<bool>> = parts.iter().map(order_holds).collect();
+    let holds = if each.iter().any(Option::is_none) {
         None
     } else {
-        Some(parts.iter().all(|p| p.0 == Some(true)))
+        Some(each.iter().all(|h| *h == Some(true)))
     };
     claims.push(Claim {
         id: "low_lambda_wears_more",
-        statement: "the wear rate is larger for lower λ at both low and high θ (Figs. 3 and 4)",
-        criterion: "slope falls strictly as λ rises, at θ = 10 and at θ = 25".to_string(),
         holds,
-        evidence: parts
-            .into_iter()
-            .map(|p| p.1)
-            .collect::<Vec<_>>()
-            .join("; "),
+        evidence: Evidence::Ordering { figures: parts },
     });
     claims
 }

@@ -10,7 +10,10 @@ use serde_json::json;
 
 use super::number;
 use super::svg::{Axis, LinePlot, Series};
-use crate::figures::{Claim, Figure, FigureSettings, Varied, EQUAL_SLOPE_RATIO, LINEAR_R_SQUARED};
+use crate::figures::{
+    Claim, Evidence, Figure, FigureSettings, FigureSlopes, Slopes, Varied, EQUAL_SLOPE_RATIO,
+    LINEAR_R_SQUARED,
+};
 
 /// The formats `wearopt figures` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
@@ -87,6 +90,115 @@ pub fn svg(fig: &Figure) -> String {
     plot.to_svg()
 }
 
+/// A slope or ratio for the evidence: four decimals, or three significant digits in
+/// scientific notation when tiny or huge.
+fn fmt(x: f64) -> String {
+    if x.is_finite() && x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e5) {
+        format!("{x:.3e}")
+    } else {
+        format!("{x:.4}")
+    }
+}
+
+fn symbol(v: Varied) -> &'static str {
+    match v {
+        Varied::Theta => "θ",
+        Varied::Lambda => "λ",
+    }
+}
+
+fn slope_list(s: &Slopes) -> String {
+    s.values
+        .iter()
+        .zip(&s.slopes)
+        .map(|(v, sl)| format!("{}={v}: {}", symbol(s.varied), fmt(*sl)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn ordering_words(f: &FigureSlopes) -> String {
+    match f {
+        FigureSlopes::Missing(n) => format!("figure {n} not computed"),
+        FigureSlopes::Computed(s) => {
+            let mut e = format!("Fig. {} slopes {}", s.figure, slope_list(s));
+            if !s.falls {
+                let breaks: Vec<String> =
+                    s.breaks.iter().map(|(a, b)| format!("{a} → {b}")).collect();
+                e.push_str(&format!(
+                    "; slope does not fall with {} at {}",
+                    symbol(s.varied),
+                    breaks.join(", ")
+                ));
+            }
+            e
+        }
+    }
+}
+
+/// What the paper says, for a claim's id.
+pub fn statement(id: &str) -> &'static str {
+    match id {
+        "linear" => "wear volume depends linearly on load for all parameter combinations",
+        "low_lambda_low_theta_wears_more" => {
+            "at low λ (0.1) the wear rate is larger for lower θ (Fig. 1)"
+        }
+        "high_lambda_theta_insensitive" => {
+            "at high λ (5) the wear rate is more or less the same for all θ (Fig. 2)"
+        }
+        "low_lambda_wears_more" => {
+            "the wear rate is larger for lower λ at both low and high θ (Figs. 3 and 4)"
+        }
+        _ => "",
+    }
+}
+
+/// The test applied to a claim, with its threshold.
+pub fn criterion(id: &str) -> String {
+    match id {
+        "linear" => format!("every curve's least-squares r² ≥ {LINEAR_R_SQUARED}"),
+        "low_lambda_low_theta_wears_more" => {
+            "slope of V̄ against P̄ falls strictly as θ rises".to_string()
+        }
+        "high_lambda_theta_insensitive" => format!("max/min slope ≤ {EQUAL_SLOPE_RATIO}"),
+        "low_lambda_wears_more" => {
+            "slope falls strictly as λ rises, at θ = 10 and at θ = 25".to_string()
+        }
+        _ => String::new(),
+    }
+}
+
+/// The numbers that decide a claim, in words.
+pub fn evidence(e: &Evidence) -> String {
+    match e {
+        Evidence::Linearity {
+            worst,
+            below,
+            curves,
+        } => match worst {
+            None => "no curves".to_string(),
+            Some(w) => format!(
+                "smallest r² = {} (Fig. {}, θ = {}, λ = {}); {below} of {curves} curves below {LINEAR_R_SQUARED}",
+                w.r_squared
+                    .map_or("none".to_string(), |r| format!("{r:.6}")),
+                w.figure,
+                w.theta,
+                w.lambda
+            ),
+        },
+        Evidence::Ordering { figures } => figures
+            .iter()
+            .map(ordering_words)
+            .collect::<Vec<_>>()
+            .join("; "),
+        Evidence::EqualSlopes { figure, ratio } => match figure {
+            FigureSlopes::Computed(s) => {
+                format!("Fig. {} slopes {}; max/min = {}", s.figure, slope_list(s), fmt(*ratio))
+            }
+            FigureSlopes::Missing(n) => format!("figure {n} not computed"),
+        },
+    }
+}
+
 fn verdict(holds: Option<bool>) -> &'static str {
     match holds {
         Some(true) => "holds",
@@ -152,9 +264,9 @@ pub fn text(
             "  ({}) {}: {}. Test: {}. {}.",
             i + 1,
             verdict(c.holds).to_uppercase(),
-            c.statement,
-            c.criterion,
-            c.evidence
+            statement(c.id),
+            criterion(c.id),
+            evidence(&c.evidence)
         );
     }
     o
@@ -191,10 +303,10 @@ pub fn json(
         .map(|c| {
             json!({
                 "id": c.id,
-                "statement": c.statement,
-                "criterion": c.criterion,
+                "statement": statement(c.id),
+                "criterion": criterion(c.id),
                 "holds": c.holds,
-                "evidence": c.evidence,
+                "evidence": evidence(&c.evidence),
             })
         })
         .collect();
