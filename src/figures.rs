@@ -1,9 +1,8 @@
 //! The paper's figures 1–4 (§4): non-dimensional wear volume V̄ against
 //! non-dimensional load P̄, the least-squares line through each curve, and a
 //! verdict on each claim §4 makes about them. Computation only, no I/O;
-//! [`crate::report::figures`] words the claims and renders the CSV, SVG and text/JSON
-//! report, and the
-//! CLI (`wearopt figures`) writes them.
+//! [`crate::report::figures`] words the claims and renders the CSV, SVG and
+//! text/JSON report, and the CLI (`wearopt figures`) writes them.
 //!
 //! # How a curve is drawn
 //!
