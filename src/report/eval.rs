@@ -494,7 +494,7 @@ pub fn text(r: &EvalReport) -> String {
         if sc.work_of_adhesion == 0.0 {
             "0 (no adhesion)".to_string()
         } else {
-            format!("{} J/m²", sig_exp(sc.work_of_adhesion, 3))
+            si(sc.work_of_adhesion, "J/m²", 3)
         }
     ));
     line(format!("  asperity law: {}", law_words(ev, sc)));
