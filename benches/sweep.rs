@@ -7,7 +7,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
 use std::path::Path;
 
-use wearopt::report::sweep::{self as out, Format};
+use wearopt::report::sweep::{self as out, Encoding};
 use wearopt::sweep::{Method, Sweep};
 
 fn micro_gear_sweep(c: &mut Criterion) {
@@ -33,7 +33,7 @@ fn micro_gear_sweep(c: &mut Criterion) {
             sweep
                 .run(0..samples, |rows| {
                     for r in rows {
-                        bytes += out::row(Format::Csv, &sweep, r, first).len();
+                        bytes += out::row(Encoding::Csv, &sweep, r, first).len();
                         first = false;
                     }
                     Ok::<(), ()>(())

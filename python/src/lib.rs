@@ -319,8 +319,8 @@ fn sweep_text(
             }
         };
         let format = match format.as_str() {
-            "csv" => report::sweep::Format::Csv,
-            "json" => report::sweep::Format::Json,
+            "csv" => report::sweep::Encoding::Csv,
+            "json" => report::sweep::Encoding::Json,
             other => return Err(format!("format {other:?}: expected \"csv\" or \"json\"")),
         };
         if !problem.study.materials.is_empty() {

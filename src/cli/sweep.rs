@@ -10,7 +10,7 @@ use anyhow::{Context, Result};
 use clap::ValueEnum;
 
 use wearopt::optimize::ParetoDirection;
-use wearopt::report::sweep::{self as out, Format, MergeError};
+use wearopt::report::sweep::{self as out, Encoding, MergeError};
 use wearopt::sweep::{pareto_optimal, Method, Shard, Sweep, SweepRow};
 
 use super::usage;
@@ -144,11 +144,8 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         MethodArg::Lhs => Method::Lhs,
         MethodArg::Grid => Method::Grid,
     };
-    let format = match args.format {
-        wearopt::report::Format::Csv => Format::Csv,
-        wearopt::report::Format::Json => Format::Json,
-        f => return Err(super::format::refuse("sweep", f, out::FORMATS)),
-    };
+    let format = Encoding::of(args.format)
+        .ok_or_else(|| super::format::refuse("sweep", args.format, out::FORMATS))?;
     let sweep = Sweep::new(
         &problem.scene,
         &problem.study.design,

@@ -23,13 +23,26 @@ use crate::sweep::{Sweep, SweepRow};
 /// The formats `wearopt sweep` and `wearopt merge` write (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Csv, super::Format::Json];
 
-/// Output formats of a sweep.
+/// How a sweep's rows are encoded: the two [`super::Format`]s a sweep writes, as a
+/// type of their own so that every piece of a stream (head, rows, tail) and every
+/// merged part has exactly one of them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
+pub enum Encoding {
     /// A header line and one line per design.
     Csv,
     /// One object with a `rows` array, one row per line.
     Json,
+}
+
+impl Encoding {
+    /// The encoding of a report format, if a sweep writes it (see [`FORMATS`]).
+    pub fn of(format: super::Format) -> Option<Encoding> {
+        match format {
+            super::Format::Csv => Some(Encoding::Csv),
+            super::Format::Json => Some(Encoding::Json),
+            super::Format::Text | super::Format::Html => None,
+        }
+    }
 }
 
 /// What the head of a sweep's output shows.
@@ -42,7 +55,7 @@ pub struct Head<'a> {
 }
 
 /// The head: the CSV header line, or the JSON object up to the opening of `rows`.
-pub fn head(format: Format, h: &Head) -> String {
+pub fn head(format: Encoding, h: &Head) -> String {
     let names = h.sweep.design_names();
     let constraints: Vec<&str> = h
         .sweep
@@ -51,7 +64,7 @@ pub fn head(format: Format, h: &Head) -> String {
         .map(|q| q.as_str())
         .collect();
     match format {
-        Format::Csv => {
+        Encoding::Csv => {
             let mut out = String::from("index");
             for n in &names {
                 out.push(',');
@@ -65,7 +78,7 @@ pub fn head(format: Format, h: &Head) -> String {
             out.push_str(",feasible\n");
             out
         }
-        Format::Json => {
+        Encoding::Json => {
             let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
             format!(
                 "{{\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},\n  \"rows\": [",
@@ -103,9 +116,9 @@ fn csv_cell(v: Option<f64>) -> String {
 }
 
 /// One row's line, without the separator (see [`row`]).
-pub(crate) fn row_line(format: Format, sweep: &Sweep, r: &SweepRow) -> String {
+pub(crate) fn row_line(format: Encoding, sweep: &Sweep, r: &SweepRow) -> String {
     match format {
-        Format::Csv => {
+        Encoding::Csv => {
             let mut out = r.index.to_string();
             for v in &r.design {
                 out.push(',');
@@ -127,7 +140,7 @@ pub(crate) fn row_line(format: Format, sweep: &Sweep, r: &SweepRow) -> String {
             let _ = write!(out, ",{}", r.feasible);
             out
         }
-        Format::Json => {
+        Encoding::Json => {
             let design = object(
                 sweep
                     .design_names()
@@ -161,24 +174,24 @@ pub(crate) fn row_line(format: Format, sweep: &Sweep, r: &SweepRow) -> String {
 }
 
 /// The separator written before a row: `first` is true for the first row of the output.
-fn separator(format: Format, first: bool) -> &'static str {
+fn separator(format: Encoding, first: bool) -> &'static str {
     match (format, first) {
-        (Format::Csv, _) => "",
-        (Format::Json, true) => "\n",
-        (Format::Json, false) => ",\n",
+        (Encoding::Csv, _) => "",
+        (Encoding::Json, true) => "\n",
+        (Encoding::Json, false) => ",\n",
     }
 }
 
 /// The text written after a row (CSV ends each row with a newline).
-fn terminator(format: Format) -> &'static str {
+fn terminator(format: Encoding) -> &'static str {
     match format {
-        Format::Csv => "\n",
-        Format::Json => "",
+        Encoding::Csv => "\n",
+        Encoding::Json => "",
     }
 }
 
 /// One row as written, with its separator.
-pub fn row(format: Format, sweep: &Sweep, r: &SweepRow, first: bool) -> String {
+pub fn row(format: Encoding, sweep: &Sweep, r: &SweepRow, first: bool) -> String {
     format!(
         "{}{}{}",
         separator(format, first),
@@ -188,10 +201,10 @@ pub fn row(format: Format, sweep: &Sweep, r: &SweepRow, first: bool) -> String {
 }
 
 /// What closes the output after the last row.
-pub fn tail(format: Format) -> &'static str {
+pub fn tail(format: Encoding) -> &'static str {
     match format {
-        Format::Csv => "",
-        Format::Json => "\n  ]\n}\n",
+        Encoding::Csv => "",
+        Encoding::Json => "\n  ]\n}\n",
     }
 }
 
@@ -258,7 +271,7 @@ pub enum MergeError {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Part<'a> {
     /// CSV or JSON.
-    pub format: Format,
+    pub format: Encoding,
     /// The head as written (CSV: the header line with its newline).
     pub head: &'a str,
     /// Its rows: index and line (without separator, terminator or trailing comma).
@@ -298,7 +311,7 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
             .and_then(|v| v.trim_end_matches(',').parse().ok());
         let body = &text[at + open.len()..];
         let body = body
-            .strip_suffix(tail(Format::Json))
+            .strip_suffix(tail(Encoding::Json))
             .or_else(|| (body == "\n  ]\n}\n").then_some(""))
             .ok_or(MergeError::Incomplete)?;
         let head_lines = head.lines().count();
@@ -320,7 +333,7 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
         }
         check_order(&rows, head_lines + 1)?;
         Ok(Part {
-            format: Format::Json,
+            format: Encoding::Json,
             head,
             rows,
             samples,
@@ -349,7 +362,7 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
         }
         check_order(&rows, 2)?;
         Ok(Part {
-            format: Format::Csv,
+            format: Encoding::Csv,
             head,
             rows,
             samples: None,
@@ -375,7 +388,7 @@ fn check_order(rows: &[(u64, &str)], first_line: usize) -> Result<(), MergeError
 /// ([`sort_key`]); parts without rows may come anywhere.
 #[derive(Debug, Clone)]
 pub struct Merger {
-    format: Format,
+    format: Encoding,
     head: String,
     samples: Option<u64>,
     next: u64,
@@ -478,7 +491,7 @@ pub fn map_points(part: &Part) -> Result<Vec<(f64, Option<f64>, bool)>, MergeErr
                 line: head_lines + k + 1,
             };
             match part.format {
-                Format::Csv => {
+                Encoding::Csv => {
                     let cells: Vec<&str> = line.split(',').collect();
                     let get = |name: &str| col(name).and_then(|i| cells.get(i).copied());
                     let wear = get("wear_rate").and_then(|v| v.parse().ok());
@@ -489,7 +502,7 @@ pub fn map_points(part: &Part) -> Result<Vec<(f64, Option<f64>, bool)>, MergeErr
                         _ => Err(bad),
                     }
                 }
-                Format::Json => {
+                Encoding::Json => {
                     let v: Value = serde_json::from_str(line.trim()).map_err(|_| bad.clone())?;
                     match (v["wear_rate"].as_f64(), v["feasible"].as_bool()) {
                         (Some(w), Some(f)) => Ok((w, v["log10_pull_off_force"].as_f64(), f)),
