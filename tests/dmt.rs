@@ -474,3 +474,25 @@ fn dlc_contact_is_dmt_and_matches_the_reference() {
     let sum = ev.elastic_load + ev.plastic_load + nc;
     assert!(rel(sum, 50e-6) < 1e-12, "{sum}");
 }
+
+/// Found by the million-case stability run: θ = 1, H = ∞, Dugdale Δ_h ≈ 20. The
+/// pull-off search started at the attraction's reach (h = 21), where P̄' is nearly
+/// flat, and Newton jumped to h ≈ −2e15; it must find the minimum between h = 0 and 1
+/// (P̄' < 0 at h = 0 and > 0 at h = 1, by the evaluator's own values there).
+#[test]
+fn far_start_finds_the_minimum() {
+    let mut c = Coefficients::new((6.0 * std::f64::consts::PI).sqrt(), f64::INFINITY);
+    c.c_0 = 2.0 * std::f64::consts::PI;
+    let m = dmt(
+        c,
+        Attraction::Dugdale {
+            range: 19.971557374648555,
+        },
+    );
+    assert!(m.at(0.0).dload_dh().signum() < 0.0);
+    assert!(m.at(1.0).dload_dh().signum() > 0.0);
+    let p = find_pull_off(&m).expect("a minimum with γ > 0");
+    assert!(p.separation > 0.0 && p.separation < 1.0, "{p:?}");
+    assert!(p.load.signum() < 0.0, "{p:?}");
+    assert_eq!(p.local_minima, 1);
+}

@@ -1,10 +1,16 @@
-//! The physics of docs/model.md: coefficients and indices, one asperity, the
-//! load and area integrals, the separation solve, Archard wear, and the
-//! dimensional layer that ties them to a [`Scene`]. No I/O.
+//! The physics of docs/model.md: coefficients and indices, the asperity laws
+//! ([`law`]: JKR, §3, and DMT with van der Waals or Dugdale attraction of the
+//! asperities out of contact, §7), the load and area integrals, the separation
+//! solve, Archard wear, and the dimensional layer that ties them to a [`Scene`].
+//! No I/O, no printing, no English: outcomes are values ([`Status`], [`Warning`],
+//! [`Note`]) that the report stage words.
+//!
+//! Internals are crate-private: the DMT attraction quadrature (`dmt`) and the
+//! Gaussian special functions (`special`).
 
 pub mod asperity;
 pub mod coefficients;
-pub mod dmt;
+pub(crate) mod dmt;
 pub mod gauss;
 pub mod integrals;
 pub mod law;
@@ -13,7 +19,7 @@ pub mod scaled;
 mod scene;
 pub mod sensitivity;
 pub mod separation;
-pub mod special;
+pub(crate) mod special;
 pub mod warnings;
 pub mod wear;
 

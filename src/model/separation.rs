@@ -300,7 +300,22 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
             // Converged: the step is below the spacing of doubles at h.
             return Some(at);
         }
-        let next = if curvature_ok && newton.is_finite() && newton > lo && newton < hi {
+        // Under DMT a far start (the attraction's reach) can see a nearly flat
+        // slope and propose a jump far past the minimum (h = 21 → −2e15 for
+        // θ = 1, H = ∞, Dugdale Δ_h = 20, found by the million-case run): a step
+        // longer than 4·max(|h|, 1) falls back to the halving walk below. JKR's
+        // iterates are unchanged.
+        let trust = if at.has_noncontact() {
+            4.0 * h.abs().max(1.0)
+        } else {
+            f64::INFINITY
+        };
+        let next = if curvature_ok
+            && newton.is_finite()
+            && newton > lo
+            && newton < hi
+            && (newton - h).abs() <= trust
+        {
             newton
         } else if lo.is_finite() && hi.is_finite() {
             0.5 * (lo + hi)
