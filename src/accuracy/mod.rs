@@ -1,7 +1,7 @@
 //! Work–precision of the evaluator: how accurate and how fast each accuracy
 //! setting is, measured against an independent high-precision reference.
 //!
-//! * [`reference`]: the direct form of docs/model.md §3 by adaptive Gauss–Kronrod
+//! * [`reference`](mod@reference): the direct form of docs/model.md §3 by adaptive Gauss–Kronrod
 //!   with a root solve for Δ1(Δ) at every node (validated against 40-digit
 //!   mpmath tables in `tests/accuracy.rs`).
 //! * [`finite_difference`]: the step rules of the wear-rate sensitivities and a

@@ -1,7 +1,7 @@
 //! The separation h for a given load, and the pull-off load of the rough surface
 //! (docs/model.md §4).
 //!
-//! Write the asperity load law as p(Δ) = p_c(Δ) + J·1[Δ > Δc], where p_c is
+//! Write the asperity load law as p(Δ) = p_c(Δ) + J·𝟙(Δ > Δc), where p_c is
 //! continuous and increasing on the loading branch (p_c(0) = -c_a c_d/3 ≤ 0) and
 //! J is the load jump at the elastic–plastic transition. Then
 //!
