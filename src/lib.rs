@@ -14,6 +14,8 @@
 //!   roughness) computed from a problem or a height map, for the CLI and the
 //!   Python package alike.
 
+#![warn(missing_docs)]
+
 pub mod accuracy;
 pub mod calibrate;
 pub mod documents;

@@ -1,10 +1,10 @@
 //! Problem files: the TOML schema, units, the material catalogue and validation with
 //! precise errors.
 //!
-//! Loading has two stages. [`raw`] deserializes the file as written (serde, unknown keys
-//! denied, every value `Spanned` so it knows its line); [`Problem::from_raw`] then reads
-//! units, looks up materials, fills defaults, checks ranges and cross-field rules, and
-//! builds the [`Scene`] and [`Study`]. Every refusal is a [`ProblemError`] whose one-line
+//! Loading ([`load`], [`parse`]) has two stages. The first deserializes the file as
+//! written (serde, unknown keys denied, every value `Spanned` so it knows its line);
+//! the second reads units, looks up materials, fills defaults, checks ranges and
+//! cross-field rules, and builds the [`Scene`] and [`Study`]. Every refusal is a [`ProblemError`] whose one-line
 //! message names the file, the line, the dotted key, the value as written and what would
 //! be accepted:
 //!
@@ -602,7 +602,11 @@ impl Problem {
     /// Stage two: units, catalogue look-ups, defaults, ranges and cross-field checks.
     /// `text` is the source `raw` was read from (for line numbers and values as
     /// written); `origin` names it in messages.
-    pub fn from_raw(raw: RawProblem, text: &str, origin: &str) -> Result<Problem, ProblemError> {
+    pub(crate) fn from_raw(
+        raw: RawProblem,
+        text: &str,
+        origin: &str,
+    ) -> Result<Problem, ProblemError> {
         let mut r = Reader {
             text,
             origin,
