@@ -35,8 +35,6 @@ use super::study::{Constraint, DesignQuantity, DesignVariable};
 use super::{OptimizationStatus, OptimizeError, Optimum, Study};
 use crate::model::{evaluate, Evaluation, EvaluationOptions, Scene, Status};
 use crate::problem::catalogue::Material;
-use crate::problem::units::{format_quantity, Dimension};
-use crate::problem::Dimensioned;
 
 /// Relative slack when checking a constraint at a fixed design.
 const CONSTRAINT_SLACK: f64 = 1e-9;
@@ -51,9 +49,55 @@ pub struct MaterialCase {
     /// The design variables that remain, with γ bounds intersected.
     pub design: Vec<DesignVariable>,
     /// Why the material cannot be studied, if it cannot.
-    pub excluded: Option<String>,
-    /// What was changed and why.
-    pub notes: Vec<String>,
+    pub excluded: Option<Exclusion>,
+    /// What was changed, or kept and worth knowing (the report words them).
+    pub notes: Vec<MaterialNote>,
+}
+
+/// Why a material cannot be studied (values in SI; the report words them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Exclusion {
+    /// The study's γ bounds and the material's typical γ range do not overlap.
+    GammaRangesDisjoint {
+        /// The study's γ bounds (J/m²).
+        study: (f64, f64),
+        /// The material's typical γ range (J/m²).
+        typical: (f64, f64),
+    },
+}
+
+/// What entering a material changed in its study, or kept and is worth knowing
+/// (values in SI; the report words them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MaterialNote {
+    /// A design variable the material fixes was dropped from the design.
+    VariableFixed {
+        /// The dropped variable.
+        variable: DesignQuantity,
+        /// Its value with the material (SI).
+        value: f64,
+    },
+    /// The γ bounds became the study's intersected with the material's typical range.
+    GammaBoundsIntersected {
+        /// Lower bound (J/m²).
+        min: f64,
+        /// Upper bound (J/m²).
+        max: f64,
+    },
+    /// The baseline γ was clamped into the intersected bounds.
+    BaselineGammaMoved {
+        /// The file's baseline γ (J/m²).
+        from: f64,
+        /// The baseline used (J/m²).
+        to: f64,
+    },
+    /// The file's γ (no γ design variable) lies outside the material's typical range.
+    GammaOutsideTypical {
+        /// The file's γ (J/m²).
+        value: f64,
+        /// The material's typical γ range (J/m²).
+        typical: (f64, f64),
+    },
 }
 
 /// Builds the study of `material` from the file's study (see the module docs).
@@ -66,46 +110,35 @@ pub fn material_case(study: &Study, material: &'static Material) -> MaterialCase
     let mut design = Vec::new();
     let mut excluded = None;
     let (lo, hi) = material.work_of_adhesion;
-    let fmt_gamma = |x| format_quantity(x, Dimension::SurfaceEnergy);
     for v in study.design {
         match v.name {
             DesignQuantity::YoungsModulus
             | DesignQuantity::YoungsModulusA
             | DesignQuantity::PoissonRatio
             | DesignQuantity::Hardness => {
-                notes.push(format!(
-                    "design variable {} dropped: fixed by the material ({})",
-                    v.name,
-                    format_quantity(v.name.get(&scene), v.name.dimension())
-                ));
+                notes.push(MaterialNote::VariableFixed {
+                    variable: v.name,
+                    value: v.name.get(&scene),
+                });
             }
             DesignQuantity::WorkOfAdhesion => {
                 let (min, max) = (v.min.max(lo), v.max.min(hi));
                 if min >= max {
-                    excluded = Some(format!(
-                        "the study's γ range {} to {} does not overlap the typical range of {}, {} to {}",
-                        fmt_gamma(v.min),
-                        fmt_gamma(v.max),
-                        material.name,
-                        fmt_gamma(lo),
-                        fmt_gamma(hi)
-                    ));
+                    excluded = Some(Exclusion::GammaRangesDisjoint {
+                        study: (v.min, v.max),
+                        typical: (lo, hi),
+                    });
                     continue;
                 }
                 if (min, max) != (v.min, v.max) {
-                    notes.push(format!(
-                        "work_of_adhesion bounds {} to {} (the study's, intersected with the material's typical range)",
-                        fmt_gamma(min),
-                        fmt_gamma(max)
-                    ));
+                    notes.push(MaterialNote::GammaBoundsIntersected { min, max });
                 }
                 let g = scene.work_of_adhesion.clamp(min, max);
                 if g != scene.work_of_adhesion {
-                    notes.push(format!(
-                        "baseline work_of_adhesion moved from {} to {} (into the bounds)",
-                        fmt_gamma(scene.work_of_adhesion),
-                        fmt_gamma(g)
-                    ));
+                    notes.push(MaterialNote::BaselineGammaMoved {
+                        from: scene.work_of_adhesion,
+                        to: g,
+                    });
                     scene.work_of_adhesion = g;
                 }
                 design.push(DesignVariable { min, max, ..*v });
@@ -120,13 +153,10 @@ pub fn material_case(study: &Study, material: &'static Material) -> MaterialCase
         && scene.work_of_adhesion > 0.0
         && !(lo..=hi).contains(&scene.work_of_adhesion)
     {
-        notes.push(format!(
-            "work_of_adhesion {} (the file's, kept) is outside the typical range of {}, {} to {}",
-            fmt_gamma(scene.work_of_adhesion),
-            material.name,
-            fmt_gamma(lo),
-            fmt_gamma(hi)
-        ));
+        notes.push(MaterialNote::GammaOutsideTypical {
+            value: scene.work_of_adhesion,
+            typical: (lo, hi),
+        });
     }
     MaterialCase {
         material,

@@ -4,8 +4,11 @@
 use serde_json::{json, Map, Value};
 
 use super::sig;
-use crate::optimize::materials::{MaterialOutcome, MaterialRanking, MaterialResult};
+use crate::optimize::materials::{
+    Exclusion, MaterialNote, MaterialOutcome, MaterialRanking, MaterialResult,
+};
 use crate::problem::units::{format_quantity, Dimension};
+use crate::problem::Dimensioned;
 
 /// The formats a material ranking is written in (those of `wearopt optimize`).
 pub const FORMATS: &[super::Format] = super::optimize::FORMATS;
@@ -69,8 +72,8 @@ fn row_json(r: &MaterialResult) -> Value {
         "pull_off_force": r.evaluation().and_then(|e| e.pull_off_force),
         "plasticity_index": r.evaluation().map(|e| e.indices.plasticity_index),
         "optimizer": optimizer,
-        "excluded_reason": r.case.excluded,
-        "notes": r.case.notes,
+        "excluded_reason": r.case.excluded.map(|e| exclusion_words(&e, r.name())),
+        "notes": r.case.notes.iter().map(|n| note_words(n, r.name())).collect::<Vec<_>>(),
     })
 }
 
@@ -136,19 +139,64 @@ fn best_sentence(ranking: &MaterialRanking) -> String {
     }
 }
 
+/// Why a material cannot be studied, in words (`material` names it).
+fn exclusion_words(why: &Exclusion, material: &str) -> String {
+    let gamma = |x| format_quantity(x, Dimension::SurfaceEnergy);
+    match *why {
+        Exclusion::GammaRangesDisjoint { study, typical } => format!(
+            "the study's γ range {} to {} does not overlap the typical range of {material}, {} to {}",
+            gamma(study.0),
+            gamma(study.1),
+            gamma(typical.0),
+            gamma(typical.1)
+        ),
+    }
+}
+
+/// A note of a material's case, in words (`material` names it).
+fn note_words(note: &MaterialNote, material: &str) -> String {
+    let gamma = |x| format_quantity(x, Dimension::SurfaceEnergy);
+    match *note {
+        MaterialNote::VariableFixed { variable, value } => format!(
+            "design variable {variable} dropped: fixed by the material ({})",
+            format_quantity(value, variable.dimension())
+        ),
+        MaterialNote::GammaBoundsIntersected { min, max } => format!(
+            "work_of_adhesion bounds {} to {} (the study's, intersected with the material's typical range)",
+            gamma(min),
+            gamma(max)
+        ),
+        MaterialNote::BaselineGammaMoved { from, to } => format!(
+            "baseline work_of_adhesion moved from {} to {} (into the bounds)",
+            gamma(from),
+            gamma(to)
+        ),
+        MaterialNote::GammaOutsideTypical { value, typical } => format!(
+            "work_of_adhesion {} (the file's, kept) is outside the typical range of {material}, {} to {}",
+            gamma(value),
+            gamma(typical.0),
+            gamma(typical.1)
+        ),
+    }
+}
+
 /// Why a material was excluded or had no contact, and the notes of its case, each
 /// prefixed with the material's name.
 fn notes(ranking: &MaterialRanking) -> Vec<String> {
     let mut out = Vec::new();
     for r in &ranking.results {
         if let Some(why) = &r.case.excluded {
-            out.push(format!("{}: excluded: {why}", r.name()));
+            out.push(format!(
+                "{}: excluded: {}",
+                r.name(),
+                exclusion_words(why, r.name())
+            ));
         }
         if let MaterialOutcome::NoContact(why) = &r.outcome {
             out.push(format!("{}: {why}", r.name()));
         }
         for n in &r.case.notes {
-            out.push(format!("{}: {n}", r.name()));
+            out.push(format!("{}: {}", r.name(), note_words(n, r.name())));
         }
     }
     out
