@@ -289,30 +289,6 @@ impl MaterialResult {
     pub fn wear_rate(&self) -> Option<f64> {
         self.evaluation().map(|e| e.wear_rate)
     }
-
-    /// Names of the constraints active at the design, then the design bounds reached
-    /// (`sigma at min`).
-    pub fn active(&self) -> Vec<String> {
-        match &self.outcome {
-            MaterialOutcome::Optimized(o) => o
-                .constraints
-                .iter()
-                .filter(|c| c.active)
-                .map(|c| c.quantity.to_string())
-                .chain(
-                    o.active_bounds
-                        .iter()
-                        .map(|b| format!("{} at {}", b.variable, b.side)),
-                )
-                .collect(),
-            MaterialOutcome::Evaluated { constraints, .. } => constraints
-                .iter()
-                .filter(|c| !c.satisfied)
-                .map(|c| format!("{} violated", c.quantity))
-                .collect(),
-            _ => Vec::new(),
-        }
-    }
 }
 
 /// The ranking of a material study.

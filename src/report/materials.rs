@@ -66,7 +66,7 @@ fn row_json(r: &MaterialResult) -> Value {
         "hardness": scene.hardness,
         "design": design,
         "design_bounds": bounds,
-        "active_constraints": r.active(),
+        "active_constraints": active(r),
         "active_bounds": active_bounds,
         "constraints": constraints,
         "pull_off_force": r.evaluation().and_then(|e| e.pull_off_force),
@@ -136,6 +136,30 @@ fn best_sentence(ranking: &MaterialRanking) -> String {
             )
         }
         None => "No material meets every constraint.".into(),
+    }
+}
+
+/// Names of the constraints active at the design, then the design bounds reached
+/// (`sigma at min`); for a fixed design, the constraints it violates.
+fn active(r: &MaterialResult) -> Vec<String> {
+    match &r.outcome {
+        MaterialOutcome::Optimized(o) => o
+            .constraints
+            .iter()
+            .filter(|c| c.active)
+            .map(|c| c.quantity.to_string())
+            .chain(
+                o.active_bounds
+                    .iter()
+                    .map(|b| format!("{} at {}", b.variable, b.side)),
+            )
+            .collect(),
+        MaterialOutcome::Evaluated { constraints, .. } => constraints
+            .iter()
+            .filter(|c| !c.satisfied)
+            .map(|c| format!("{} violated", c.quantity))
+            .collect(),
+        _ => Vec::new(),
     }
 }
 
@@ -249,7 +273,7 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
                 r.objective().map_or("—".into(), |o| super::si(o, unit, 4))
             ));
         }
-        let active = r.active();
+        let active = active(r);
         row.push_str(&format!(
             " {:>10} {:>10} {:>12}  {}",
             q(scene.sigma, Dimension::Length),
@@ -386,7 +410,7 @@ pub fn html(name: &str, ranking: &MaterialRanking) -> String {
         .iter()
         .filter(|r| r.evaluation().is_some())
         .map(|r| {
-            let active = r.active();
+            let active = active(r);
             vec![
                 r.name().to_string(),
                 if active.is_empty() {
