@@ -625,8 +625,33 @@ pub struct Calibration {
     pub converged: bool,
     /// Gauss–Newton iterations.
     pub iterations: u64,
-    /// Remarks for the reader (assumptions, boundary estimates).
-    pub notes: Vec<String>,
+    /// Remarks for the reader (assumptions, boundary estimates), as values: the
+    /// report stage words them.
+    pub notes: Vec<CalibrationNote>,
+}
+
+/// A remark on a calibration the reader should see beside its numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum CalibrationNote {
+    /// μ was neither given nor fitted: the paper's value was used.
+    FrictionCoefficientAssumed {
+        /// The μ used.
+        value: f64,
+    },
+    /// As many measurements as parameters: the fit is exact, with no uncertainty.
+    ExactFit {
+        /// Number of measurements.
+        measurements: usize,
+        /// Number of fitted parameters (1: γ; 2: γ and μ).
+        parameters: usize,
+    },
+    /// The confidence interval of γ reached below 0 and was clipped there.
+    IntervalClippedAtZero,
+    /// γ ended at the bottom of the searched range: the data show no adhesion.
+    NoAdhesion,
+    /// The Gauss–Newton iteration did not meet its tolerance.
+    NotConverged,
 }
 
 /// A small dense row-major matrix: the Jacobian type handed to argmin's Gauss–Newton
@@ -1009,28 +1034,24 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
 
     let mut notes = Vec::new();
     if settings.friction_coefficient == FrictionCoefficient::Default {
-        notes.push(format!(
-            "μ = {DEFAULT_FRICTION_COEFFICIENT} assumed (the paper's value); give --mu to set it or --fit-mu to fit it"
-        ));
+        notes.push(CalibrationNote::FrictionCoefficientAssumed {
+            value: DEFAULT_FRICTION_COEFFICIENT,
+        });
     }
     if dof == 0 {
-        notes.push(format!(
-            "{n} measurement{} for {n_params} parameter{}: the fit is exact and has no uncertainty estimate",
-            if n == 1 { "" } else { "s" },
-            if n_params == 1 { "" } else { "s" }
-        ));
+        notes.push(CalibrationNote::ExactFit {
+            measurements: n,
+            parameters: n_params,
+        });
     }
     if clipped {
-        notes.push("the 95 % interval of γ reaches below 0 and is clipped there (γ ≥ 0)".into());
+        notes.push(CalibrationNote::IntervalClippedAtZero);
     }
     if gamma <= gamma_scale * 1e-15 {
-        notes.push(
-            "γ is at the bottom of the range searched: the data are consistent with no adhesion"
-                .into(),
-        );
+        notes.push(CalibrationNote::NoAdhesion);
     }
     if !converged {
-        notes.push("the Gauss–Newton iteration did not meet its tolerance; the estimate is the best point found".into());
+        notes.push(CalibrationNote::NotConverged);
     }
 
     let comparison = settings.quoted.as_ref().map(|q| {

@@ -435,5 +435,19 @@ fn exact_fit_has_no_interval() {
     assert_eq!(c.degrees_of_freedom, 0);
     assert_eq!(c.confidence_interval, None);
     assert!(rel(c.work_of_adhesion, 0.01) < 1e-8);
-    assert!(c.notes.iter().any(|n| n.contains("assumed")));
+    assert!(c
+        .notes
+        .iter()
+        .any(|n| matches!(n, wearopt::calibrate::CalibrationNote::FrictionCoefficientAssumed { value } if *value == 0.1)));
+    assert!(c
+        .notes
+        .iter()
+        .any(|n| wearopt::report::calibrate::note(n).contains("assumed")));
+    // One measurement, one parameter (γ; μ held): the exact-fit note, as a value.
+    assert!(c
+        .notes
+        .contains(&wearopt::calibrate::CalibrationNote::ExactFit {
+            measurements: 1,
+            parameters: 1
+        }));
 }

@@ -3,16 +3,22 @@
 use serde_json::{json, Value};
 
 use super::{si, sig};
-use crate::calibrate::{Calibration, FrictionCoefficient, CONFIDENCE_LEVEL};
+use crate::calibrate::{Calibration, CalibrationNote, FrictionCoefficient, CONFIDENCE_LEVEL};
 
 /// The formats `wearopt fit-adhesion` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
 
-/// One JSON object, SI units (N, m, N/m, Pa). Keys: those of [`Calibration`] plus
-/// `confidence_level` and `model`.
+/// One JSON object, SI units (N, m, N/m, Pa). Keys: those of [`Calibration`]
+/// (`notes` worded) plus `note_details` (the notes as values), `confidence_level`
+/// and `model`.
 pub fn json(c: &Calibration) -> String {
     let mut v = serde_json::to_value(c).unwrap_or(Value::Null);
     if let Value::Object(obj) = &mut v {
+        obj.insert("note_details".into(), json!(c.notes));
+        obj.insert(
+            "notes".into(),
+            json!(c.notes.iter().map(note).collect::<Vec<_>>()),
+        );
         obj.insert("confidence_level".into(), json!(CONFIDENCE_LEVEL));
         obj.insert(
             "model".into(),
@@ -22,6 +28,34 @@ pub fn json(c: &Calibration) -> String {
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
     s.push('\n');
     s
+}
+
+/// A calibration note in words.
+pub fn note(n: &CalibrationNote) -> String {
+    match *n {
+        CalibrationNote::FrictionCoefficientAssumed { value } => format!(
+            "μ = {value} assumed (the paper's value); give --mu to set it or --fit-mu to fit it"
+        ),
+        CalibrationNote::ExactFit {
+            measurements,
+            parameters,
+        } => format!(
+            "{measurements} measurement{} for {parameters} parameter{}: the fit is exact and has no uncertainty estimate",
+            if measurements == 1 { "" } else { "s" },
+            if parameters == 1 { "" } else { "s" }
+        ),
+        CalibrationNote::IntervalClippedAtZero => {
+            "the 95 % interval of γ reaches below 0 and is clipped there (γ ≥ 0)".into()
+        }
+        CalibrationNote::NoAdhesion => {
+            "γ is at the bottom of the range searched: the data are consistent with no adhesion"
+                .into()
+        }
+        CalibrationNote::NotConverged => {
+            "the Gauss–Newton iteration did not meet its tolerance; the estimate is the best point found"
+                .into()
+        }
+    }
 }
 
 fn gamma(x: f64) -> String {
@@ -240,8 +274,8 @@ pub fn text(c: &Calibration) -> String {
     }
     if !c.notes.is_empty() {
         line(String::new());
-        for note in &c.notes {
-            line(format!("Note: {note}"));
+        for n in &c.notes {
+            line(format!("Note: {}", note(n)));
         }
     }
     out
