@@ -529,7 +529,20 @@ pub struct PointFit {
     /// F / (π r²) (Pa), when E is known.
     pub bond_strength: Option<f64>,
     /// Why `work_of_adhesion` is missing, if it is.
-    pub note: Option<String>,
+    pub note: Option<PointNote>,
+}
+
+/// Why one measurement gives no work of adhesion of its own.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum PointNote {
+    /// F < μP: the friction is below the adhesion-free friction, so no γ ≥ 0 gives it.
+    FrictionBelowSliding {
+        /// μP (N), the friction without adhesion.
+        sliding_friction: f64,
+        /// The μ of the fit.
+        friction_coefficient: f64,
+    },
 }
 
 /// The comparison of a quoted γ with the data.
@@ -1008,12 +1021,9 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
                 apparent_hertz_load: p1,
                 contact_radius,
                 bond_strength: contact_radius.map(|r| p.friction / (PI * r * r)),
-                note: own.is_none().then(|| {
-                    format!(
-                        "F < μP = {} at μ = {}: no γ ≥ 0 gives this friction",
-                        format_quantity(mu * p.load, Dimension::Force),
-                        fmt_sig(mu)
-                    )
+                note: own.is_none().then_some(PointNote::FrictionBelowSliding {
+                    sliding_friction: mu * p.load,
+                    friction_coefficient: mu,
                 }),
             }
         })
@@ -1132,10 +1142,6 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
         iterations,
         notes,
     })
-}
-
-fn fmt_sig(x: f64) -> String {
-    crate::problem::units::format_number(x)
 }
 
 #[cfg(test)]

@@ -249,3 +249,36 @@ fn sensitivities_match_plain_central_differences() {
         assert!(s.error.unwrap() < 1e-6);
     }
 }
+
+/// Where an elasticity is not defined the library says why, as a value: an
+/// infinite hardness and a zero work of adhesion are limits, not points to
+/// differentiate at; a scene without wear has no ln(wear) at all. (The
+/// micro-gear wears over its whole real area, so H = ∞ still wears.)
+#[test]
+fn sensitivities_say_why_they_are_missing() {
+    use wearopt::model::{sensitivities, Quadrature, SensitivityGap, SensitivityParameter};
+    let p = wearopt::problem::load(std::path::Path::new("problems/micro-gear.toml")).unwrap();
+    let gap = |scene: &wearopt::model::Scene, which: SensitivityParameter| {
+        let s = sensitivities(scene, Quadrature::default());
+        let s = s.iter().find(|s| s.parameter == which).unwrap();
+        assert_eq!(s.elasticity.is_none(), s.note.is_some(), "{s:?}");
+        s.note
+    };
+    let mut limits = p.scene.clone();
+    limits.hardness = f64::INFINITY;
+    limits.work_of_adhesion = 0.0;
+    assert_eq!(
+        gap(&limits, SensitivityParameter::Hardness),
+        Some(SensitivityGap::InfiniteParameter)
+    );
+    assert_eq!(
+        gap(&limits, SensitivityParameter::WorkOfAdhesion),
+        Some(SensitivityGap::ZeroParameter)
+    );
+    assert_eq!(gap(&limits, SensitivityParameter::Sigma), None);
+    let mut no_wear = p.scene.clone();
+    no_wear.wear_coefficient = 0.0;
+    for which in SensitivityParameter::ALL {
+        assert_eq!(gap(&no_wear, which), Some(SensitivityGap::NoWear));
+    }
+}

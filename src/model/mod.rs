@@ -29,7 +29,7 @@ pub use law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};
 pub use load_curve::{load_curve, LoadCurve};
 pub use scaled::Scaled;
 pub use scene::{InputError, Requirements, Scene, WearArea};
-pub use sensitivity::{sensitivities, Sensitivity, SensitivityParameter};
+pub use sensitivity::{sensitivities, Sensitivity, SensitivityGap, SensitivityParameter};
 pub use separation::{
     find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_from,
     solve_separation_with, CriticalPoint, Landscape, PullOff, SeparationOutcome,

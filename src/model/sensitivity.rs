@@ -100,7 +100,21 @@ pub struct Sensitivity {
     /// Estimated absolute error of the elasticity.
     pub error: Option<f64>,
     /// Why there is no value, when there is none.
-    pub note: Option<String>,
+    pub note: Option<SensitivityGap>,
+}
+
+/// Why an elasticity has no value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SensitivityGap {
+    /// The scene itself has no wear (separated, or zero wear).
+    NoWear,
+    /// The parameter is infinite in the scene.
+    InfiniteParameter,
+    /// The parameter is zero in the scene (its limit).
+    ZeroParameter,
+    /// The contact separates within the finite-difference step.
+    SeparatesWithinStep,
 }
 
 /// The elasticities of the wear rate with respect to E1, H, γ, σ and R.
@@ -119,20 +133,20 @@ pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensit
         .iter()
         .map(|&p| {
             let x = p.get(scene);
-            let none = |why: &str| Sensitivity {
+            let none = |why: SensitivityGap| Sensitivity {
                 parameter: p,
                 elasticity: None,
                 error: None,
-                note: Some(why.to_string()),
+                note: Some(why),
             };
             if !base_ok {
-                return none("no wear at the scene (separated or zero wear)");
+                return none(SensitivityGap::NoWear);
             }
             if x.is_infinite() {
-                return none("the parameter is infinite in this scene");
+                return none(SensitivityGap::InfiniteParameter);
             }
             if x == 0.0 {
-                return none("the parameter is zero in this scene (its limit)");
+                return none(SensitivityGap::ZeroParameter);
             }
             let at = |j: f64| {
                 let mut sc = scene.clone();
@@ -156,7 +170,7 @@ pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensit
                         note: None,
                     }
                 }
-                _ => none("the contact separates within the finite-difference step"),
+                _ => none(SensitivityGap::SeparatesWithinStep),
             }
         })
         .collect()

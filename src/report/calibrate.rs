@@ -3,7 +3,10 @@
 use serde_json::{json, Value};
 
 use super::{si, sig};
-use crate::calibrate::{Calibration, CalibrationNote, FrictionCoefficient, CONFIDENCE_LEVEL};
+use crate::calibrate::{
+    Calibration, CalibrationNote, FrictionCoefficient, PointNote, CONFIDENCE_LEVEL,
+};
+use crate::problem::units::{format_number, format_quantity, Dimension};
 
 /// The formats `wearopt fit-adhesion` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
@@ -15,6 +18,14 @@ pub fn json(c: &Calibration) -> String {
     let mut v = serde_json::to_value(c).unwrap_or(Value::Null);
     if let Value::Object(obj) = &mut v {
         obj.insert("note_details".into(), json!(c.notes));
+        if let Some(Value::Array(points)) = obj.get_mut("per_point") {
+            for (v, p) in points.iter_mut().zip(&c.per_point) {
+                if let (Value::Object(o), Some(n)) = (v, &p.note) {
+                    o.insert("note_detail".into(), json!(n));
+                    o.insert("note".into(), json!(point_note(n)));
+                }
+            }
+        }
         obj.insert(
             "notes".into(),
             json!(c.notes.iter().map(note).collect::<Vec<_>>()),
@@ -28,6 +39,20 @@ pub fn json(c: &Calibration) -> String {
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".into());
     s.push('\n');
     s
+}
+
+/// Why a measurement has no γ of its own, in words.
+pub fn point_note(n: &PointNote) -> String {
+    match *n {
+        PointNote::FrictionBelowSliding {
+            sliding_friction,
+            friction_coefficient,
+        } => format!(
+            "F < μP = {} at μ = {}: no γ ≥ 0 gives this friction",
+            format_quantity(sliding_friction, Dimension::Force),
+            format_number(friction_coefficient)
+        ),
+    }
 }
 
 /// A calibration note in words.
@@ -179,8 +204,8 @@ pub fn text(c: &Calibration) -> String {
             ));
         }
         line(row);
-        if let Some(note) = &p.note {
-            line(format!("      line {}: {note}", p.line));
+        if let Some(n) = &p.note {
+            line(format!("      line {}: {}", p.line, point_note(n)));
         }
     }
     line("  residual = measured − fitted; γ (this point) solves eq. 14 exactly for that point at the fit's μ".into());

@@ -82,7 +82,8 @@ pub fn json_value(r: &EvalReport) -> Value {
                 json!({
                     "elasticity": opt(s.elasticity),
                     "error": opt(s.error),
-                    "note": s.note,
+                    "note": s.note.map(super::words::sensitivity_gap),
+                    "note_kind": s.note,
                 }),
             );
         }
@@ -423,8 +424,7 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
                 vec![
                     s.parameter.as_str().to_string(),
                     s.elasticity.map_or("—".into(), |e| format!("{e:+.6}")),
-                    s.error
-                        .map_or(s.note.clone().unwrap_or_default(), |e| sig_exp(e, 2)),
+                    s.error.map_or(gap(s).to_string(), |e| sig_exp(e, 2)),
                 ]
             })
             .collect();
@@ -732,15 +732,16 @@ pub fn text(r: &EvalReport) -> String {
                 (Some(e), Some(err)) => {
                     line(format!("  {name:<17} {:>+12.6}  ± {}", e, sig_exp(err, 2)))
                 }
-                _ => line(format!(
-                    "  {name:<17} {:>12}  ({})",
-                    "—",
-                    s.note.as_deref().unwrap_or("")
-                )),
+                _ => line(format!("  {name:<17} {:>12}  ({})", "—", gap(s))),
             }
         }
     }
     o
+}
+
+/// Why a sensitivity has no value, in words ("" when it has one).
+fn gap(s: &crate::model::Sensitivity) -> &'static str {
+    s.note.map_or("", super::words::sensitivity_gap)
 }
 
 #[cfg(test)]

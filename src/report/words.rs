@@ -5,7 +5,7 @@
 use serde_json::{json, Value};
 
 use super::units::{format_number, format_quantity, sig_exp};
-use crate::model::{Evaluation, Note, ScalarInput, Warning};
+use crate::model::{Evaluation, Note, ScalarInput, SensitivityGap, Warning};
 use crate::problem::units::Dimension;
 use crate::problem::{CatalogueProperty, InputNote};
 
@@ -207,6 +207,18 @@ pub fn input_note(n: &InputNote) -> String {
             format_quantity(*hardness_b, Dimension::Pressure),
             format_quantity(*hardness_a, Dimension::Pressure)
         ),
+    }
+}
+
+/// Why a sensitivity has no value, in words.
+pub fn sensitivity_gap(g: SensitivityGap) -> &'static str {
+    match g {
+        SensitivityGap::NoWear => "no wear at the scene (separated or zero wear)",
+        SensitivityGap::InfiniteParameter => "the parameter is infinite in this scene",
+        SensitivityGap::ZeroParameter => "the parameter is zero in this scene (its limit)",
+        SensitivityGap::SeparatesWithinStep => {
+            "the contact separates within the finite-difference step"
+        }
     }
 }
 
