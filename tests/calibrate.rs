@@ -2,18 +2,16 @@
 //! parameters, the per-point closed form, the paper's table, interval coverage, the
 //! command line and every kind of bad data.
 
+mod common;
+use common::wearopt;
+
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
-use assert_cmd::Command;
 use wearopt::calibrate::{
     self, fit, jkr_friction, work_of_adhesion_from_point, FitSettings, FrictionCoefficient,
     FrictionData, Quoted,
 };
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").expect("binary builds")
-}
 
 fn settings(radius: f64, mu: FrictionCoefficient) -> FitSettings {
     FitSettings {
@@ -221,20 +219,17 @@ fn confidence_intervals_cover_the_true_values() {
 
 #[test]
 fn cli_reports_the_papers_table_and_the_disagreement() {
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "fit-adhesion",
             "problems/ando-friction.csv",
             "--radius",
             "0.3 mm",
             "--materials",
             "steel,silicon",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        0,
+    );
     let text = String::from_utf8(out).unwrap();
     assert!(
         text.contains("γ from single points: 1.09 mN/m to 4.72 mN/m"),
@@ -244,8 +239,8 @@ fn cli_reports_the_papers_table_and_the_disagreement() {
     assert!(text.contains("does NOT follow from these data"), "{text}");
     assert!(text.contains("65.0 MPa"), "{text}");
 
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "fit-adhesion",
             "problems/ando-friction.csv",
             "--radius",
@@ -256,12 +251,9 @@ fn cli_reports_the_papers_table_and_the_disagreement() {
             "99 GPa",
             "--format",
             "json",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        0,
+    );
     let v: serde_json::Value = serde_json::from_slice(&out).expect("valid JSON");
     for key in [
         "work_of_adhesion",
@@ -296,20 +288,17 @@ fn cli_reports_the_papers_table_and_the_disagreement() {
     assert_eq!(v["comparison"]["bond_strength"]["agrees"], false);
 
     // A quoted value on other data is compared when asked for.
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "fit-adhesion",
             "problems/ando-friction.csv",
             "--radius",
             "0.3mm",
             "--quoted-gamma",
             "2 mJ/m^2",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        0,
+    );
     let text = String::from_utf8(out).unwrap();
     assert!(
         text.contains("The quoted γ is consistent with these data."),
@@ -324,15 +313,7 @@ fn data_file(name: &str, text: &str) -> PathBuf {
 }
 
 fn fails_with(args: &[&str], path: &PathBuf, needles: &[&str]) {
-    let out = wearopt()
-        .arg("fit-adhesion")
-        .arg(path)
-        .args(args)
-        .assert()
-        .code(2)
-        .get_output()
-        .stderr
-        .clone();
+    let out = common::stderr(wearopt().arg("fit-adhesion").arg(path).args(args), 2);
     let err = String::from_utf8(out).unwrap();
     for n in needles {
         assert!(err.contains(n), "stderr lacks {n:?}: {err}");

@@ -1,21 +1,15 @@
 //! The command line end to end: outputs, contracts of JSON/CSV keys, exit codes.
 
-use assert_cmd::Command;
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").expect("binary builds")
-}
+mod common;
+use common::wearopt;
 
 #[test]
 fn eval_json_has_the_contract_keys() {
     for name in ["micro-gear", "dlc-contact", "gold-switch"] {
-        let out = wearopt()
-            .args(["eval", &format!("problems/{name}.toml"), "--format", "json"])
-            .assert()
-            .success()
-            .get_output()
-            .stdout
-            .clone();
+        let out = common::stdout(
+            wearopt().args(["eval", &format!("problems/{name}.toml"), "--format", "json"]),
+            0,
+        );
         let v: serde_json::Value = serde_json::from_slice(&out).expect("valid JSON");
         for key in [
             "status",
@@ -57,13 +51,7 @@ fn eval_json_has_the_contract_keys() {
 
 #[test]
 fn eval_text_reports_the_sections() {
-    let out = wearopt()
-        .args(["eval", "problems/micro-gear.toml"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(wearopt().args(["eval", "problems/micro-gear.toml"]), 0);
     let text = String::from_utf8(out).unwrap();
     for part in [
         "Indices and regime",
@@ -79,16 +67,13 @@ fn eval_text_reports_the_sections() {
 
 #[test]
 fn curve_csv_and_json() {
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "curve", "--theta", "inf", "--lambda", "inf", "--from", "0", "--to", "2", "--points",
             "3",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        0,
+    );
     let csv = String::from_utf8(out).unwrap();
     let mut lines = csv.lines();
     assert_eq!(
@@ -107,16 +92,13 @@ fn curve_csv_and_json() {
     assert!((first[2] - 1.0).abs() < 1e-15);
     assert_eq!(csv.lines().count(), 4);
 
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "curve", "--theta", "10", "--lambda", "0.125", "--from", "-1", "--to", "-1",
             "--points", "1", "--format", "json",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        0,
+    );
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 1);
@@ -137,13 +119,7 @@ fn bad_input_exits_2_with_a_message() {
             .replacen("load = \"800 uN\"", "load = \"800 uQ\"", 1),
     )
     .unwrap();
-    let out = wearopt()
-        .args(["eval", f.to_str().unwrap()])
-        .assert()
-        .code(2)
-        .get_output()
-        .stderr
-        .clone();
+    let out = common::stderr(wearopt().args(["eval", f.to_str().unwrap()]), 2);
     let msg = String::from_utf8(out).unwrap();
     assert!(
         msg.contains("contact.load") && msg.contains("uQ") && msg.contains("bad.toml"),
@@ -187,13 +163,10 @@ fn tensile_beyond_pull_off_is_an_outcome() {
             .replacen("load = \"800 uN\"", "load = \"-1 mN\"", 1),
     )
     .unwrap();
-    let out = wearopt()
-        .args(["eval", f.to_str().unwrap(), "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(
+        wearopt().args(["eval", f.to_str().unwrap(), "--format", "json"]),
+        0,
+    );
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(v["status"], "separated");
     assert_eq!(v["wear_rate"], 0.0);
@@ -201,18 +174,15 @@ fn tensile_beyond_pull_off_is_an_outcome() {
 
 #[test]
 fn optimize_json_contract_and_exit_codes() {
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "optimize",
             "problems/micro-gear-study.toml",
             "--format",
             "json",
-        ])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        0,
+    );
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for key in [
         "status",
@@ -246,30 +216,21 @@ fn optimize_json_contract_and_exit_codes() {
     assert!(v["objective"].as_f64().unwrap() < v["baseline_objective"].as_f64().unwrap());
 
     // Infeasible: exit 1, status and the conflicting constraint named.
-    let out = wearopt()
-        .args([
+    let out = common::stdout(
+        wearopt().args([
             "optimize",
             "problems/infeasible-study.toml",
             "--format",
             "json",
-        ])
-        .assert()
-        .code(1)
-        .get_output()
-        .stdout
-        .clone();
+        ]),
+        1,
+    );
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(v["status"], "infeasible");
     assert_eq!(v["conflicting_constraints"][0], "plasticity_index");
 
     // No [design]: bad input, exit 2, the file named.
-    let out = wearopt()
-        .args(["optimize", "problems/dlc-contact.toml"])
-        .assert()
-        .code(2)
-        .get_output()
-        .stderr
-        .clone();
+    let out = common::stderr(wearopt().args(["optimize", "problems/dlc-contact.toml"]), 2);
     let msg = String::from_utf8(out).unwrap();
     assert!(
         msg.contains("dlc-contact.toml") && msg.contains("[design]"),

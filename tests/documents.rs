@@ -5,17 +5,15 @@
 //! its own writer, so the Pareto comparison checks two independent assemblies of
 //! the same object.
 
+mod common;
+use common::wearopt;
+
 use std::path::Path;
 
-use assert_cmd::Command;
 use serde_json::Value;
 
 use wearopt::documents::{self, DocumentError, RoughnessOptions};
 use wearopt::surface::Levelling;
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").expect("binary builds")
-}
 
 /// The CLI's stdout for `args`, parsed, and its exit code.
 fn cli_json(args: &[&str]) -> (Value, i32) {

@@ -5,11 +5,11 @@
 //! does not depend on the thread count.
 
 mod common;
+use common::wearopt;
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
 use common::{parse_xml, Element};
 use wearopt::figures::{
     assess_claims, compute_curve, compute_figures, least_squares, paper_figures, Curve, Figure,
@@ -17,10 +17,6 @@ use wearopt::figures::{
 };
 use wearopt::model::{Coefficients, Model};
 use wearopt::report::svg::{Axis, LinePlot, Marker, Series};
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").expect("binary builds")
-}
 
 /// A fresh, empty directory for one test.
 fn temp_dir(name: &str) -> PathBuf {
@@ -342,14 +338,12 @@ fn cli_writes_the_figures_and_reports_the_claims() {
     let dir = temp_dir("cli");
     let out = dir.join("nested/figs");
     let points = 11;
-    let output = wearopt()
-        .args(["figures", "--points", "11", "--out"])
-        .arg(&out)
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let output = common::stdout(
+        wearopt()
+            .args(["figures", "--points", "11", "--out"])
+            .arg(&out),
+        0,
+    );
     let text = String::from_utf8(output).unwrap();
 
     let names: Vec<String> = (1..=4)
@@ -455,14 +449,12 @@ fn cli_writes_the_figures_and_reports_the_claims() {
 #[test]
 fn cli_json_report_carries_claims_and_slopes() {
     let dir = temp_dir("json");
-    let output = wearopt()
-        .args(["figures", "--points", "5", "--format", "json", "--out"])
-        .arg(&dir)
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let output = common::stdout(
+        wearopt()
+            .args(["figures", "--points", "5", "--format", "json", "--out"])
+            .arg(&dir),
+        0,
+    );
     let v: serde_json::Value = serde_json::from_slice(&output).expect("valid JSON");
     assert_eq!(v["claims"].as_array().unwrap().len(), 4);
     for c in v["claims"].as_array().unwrap() {
@@ -486,15 +478,13 @@ fn cli_output_is_the_same_on_one_thread_and_on_several() {
     let mut outputs = Vec::new();
     for threads in ["1", "4"] {
         let out = dir.join(threads);
-        let stdout = wearopt()
-            .env("RAYON_NUM_THREADS", threads)
-            .args(["figures", "--points", "7", "--format", "json", "--out"])
-            .arg(&out)
-            .assert()
-            .success()
-            .get_output()
-            .stdout
-            .clone();
+        let stdout = common::stdout(
+            wearopt()
+                .env("RAYON_NUM_THREADS", threads)
+                .args(["figures", "--points", "7", "--format", "json", "--out"])
+                .arg(&out),
+            0,
+        );
         let files: Vec<String> = ["figure1.csv", "figure3.svg", "slopes.csv"]
             .iter()
             .map(|f| read(&out.join(f)))

@@ -2,7 +2,9 @@
 //! material's study run on its own, is sorted by wear rate, does not depend on the
 //! thread count, and excludes or evaluates where the module docs say.
 
-use assert_cmd::Command;
+mod common;
+use common::wearopt;
+
 use wearopt::model::AdhesionModel;
 use wearopt::optimize::materials::{
     rank_materials, Exclusion, MaterialOutcome, MaterialRanking, MaterialStatus,
@@ -187,14 +189,7 @@ fn disjoint_gamma_ranges_exclude_and_fixed_designs_are_evaluated() {
 
 #[test]
 fn cli_ranks_the_shipped_study() {
-    let out = Command::cargo_bin("wearopt")
-        .unwrap()
-        .args(["optimize", FILE, "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(wearopt().args(["optimize", FILE, "--format", "json"]), 0);
     let v: serde_json::Value = serde_json::from_slice(&out).expect("valid JSON");
     let rows = v["ranking"].as_array().unwrap();
     assert_eq!(rows.len(), 5);
@@ -221,14 +216,7 @@ fn cli_ranks_the_shipped_study() {
     assert_eq!(rows[4]["material"], "nickel");
     assert_eq!(rows[4]["status"], "infeasible");
 
-    let out = Command::cargo_bin("wearopt")
-        .unwrap()
-        .args(["optimize", FILE])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(wearopt().args(["optimize", FILE]), 0);
     let text = String::from_utf8(out).unwrap();
     assert!(text.contains("material ranking"), "{text}");
     assert!(text.contains("active constraints"), "{text}");

@@ -1,11 +1,8 @@
 //! Reports as a user meets them: units, small defects of the command line, and the
 //! numbers a designer decides on. Each test runs the binary on a problem file.
 
-use assert_cmd::Command;
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").unwrap()
-}
+mod common;
+use common::wearopt;
 
 fn stdout_of(args: &[&str]) -> String {
     let out = wearopt().args(args).output().unwrap();

@@ -1,19 +1,17 @@
 //! `[roughness] topography` in problem files, and `wearopt roughness` end to end on the
 //! shipped scan.
 
+mod common;
+use common::wearopt;
+
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
 use wearopt::problem::{self, ProblemError};
 use wearopt::surface::read::{self, Overrides};
 use wearopt::surface::{analyse, Levelling, Settings};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").expect("binary builds")
 }
 
 /// micro-gear-scan.toml with its [roughness] table replaced, written next to the scans.
@@ -169,13 +167,7 @@ fn refusals_name_the_key_and_the_fix() {
 #[test]
 fn eval_reports_the_scan() {
     let file = "problems/micro-gear-scan.toml";
-    let out = wearopt()
-        .args(["eval", file])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(wearopt().args(["eval", file]), 0);
     let text = String::from_utf8(out).unwrap();
     assert!(
         text.contains("σ, R and N come from the scan scans/self-affine.gsf"),
@@ -185,13 +177,7 @@ fn eval_reports_the_scan() {
         text.contains("bandwidth α = ") && text.contains("cut-off 100.0 nm"),
         "{text}"
     );
-    let out = wearopt()
-        .args(["eval", file, "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(wearopt().args(["eval", file, "--format", "json"]), 0);
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     let s = &v["roughness_source"];
     assert_eq!(s["topography"], "scans/self-affine.gsf");
@@ -209,13 +195,10 @@ fn eval_reports_the_scan() {
 #[test]
 fn roughness_json_has_the_contract_keys_and_the_text_block_round_trips() {
     let file = "problems/scans/self-affine.gsf";
-    let out = wearopt()
-        .args(["roughness", file, "--cutoff", "100nm", "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(
+        wearopt().args(["roughness", file, "--cutoff", "100nm", "--format", "json"]),
+        0,
+    );
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     for key in [
         "nx",
@@ -253,24 +236,12 @@ fn roughness_json_has_the_contract_keys_and_the_text_block_round_trips() {
     assert_eq!(v["cutoff"], 100e-9);
     let m2 = v["m2"].as_f64().unwrap();
     assert!((v["rms_slope"].as_f64().unwrap() - (2.0 * m2).sqrt()).abs() < 1e-15);
-    let no_cut = wearopt()
-        .args(["roughness", file, "--format", "json"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let no_cut = common::stdout(wearopt().args(["roughness", file, "--format", "json"]), 0);
     let w: serde_json::Value = serde_json::from_slice(&no_cut).unwrap();
     assert!(w["cutoff"].is_null());
 
     // The text ends with a [roughness] table that loads to the same scene (4 digits).
-    let out = wearopt()
-        .args(["roughness", file, "--cutoff", "100nm"])
-        .assert()
-        .success()
-        .get_output()
-        .stdout
-        .clone();
+    let out = common::stdout(wearopt().args(["roughness", file, "--cutoff", "100nm"]), 0);
     let text = String::from_utf8(out).unwrap();
     let block = &text[text.rfind("[roughness]").unwrap()..];
     let path = with_roughness(block, "paste");

@@ -2,9 +2,11 @@
 //! zipfile, by hand from the published formats: scripts/make_scans.py), malformed files of
 //! each kind, arbitrary bytes, and the CLI's refusals (exit code 2).
 
+mod common;
+use common::wearopt;
+
 use std::path::Path;
 
-use assert_cmd::Command;
 use proptest::prelude::*;
 use wearopt::surface::read::{self, read_bytes, Format, Overrides, ReadError};
 
@@ -270,10 +272,6 @@ proptest! {
             let _ = scan.resolve(&Overrides { pixel_size: Some(1e-8), height_unit: Some(1e-9) }, "fuzz");
         }
     }
-}
-
-fn wearopt() -> Command {
-    Command::cargo_bin("wearopt").expect("binary builds")
 }
 
 #[test]

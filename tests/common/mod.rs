@@ -183,3 +183,18 @@ pub fn parse_xml(doc: &str) -> Result<Vec<Element>, String> {
     }
     Ok(elements)
 }
+
+/// The `wearopt` binary of this build.
+pub fn wearopt() -> assert_cmd::Command {
+    assert_cmd::Command::cargo_bin("wearopt").expect("binary builds")
+}
+
+/// Runs `cmd`, checks that it exits with `code`, and returns its stdout.
+pub fn stdout(cmd: &mut assert_cmd::Command, code: i32) -> Vec<u8> {
+    cmd.assert().code(code).get_output().stdout.clone()
+}
+
+/// Runs `cmd`, checks that it exits with `code`, and returns its stderr.
+pub fn stderr(cmd: &mut assert_cmd::Command, code: i32) -> Vec<u8> {
+    cmd.assert().code(code).get_output().stderr.clone()
+}
