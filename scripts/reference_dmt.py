@@ -48,7 +48,8 @@ HOW / PRECISION
 USAGE
     python3 scripts/reference_dmt.py --out tests/data        # both tables
     options: --dps D (default 40), --quick (a few rows, smoke test),
-             --only points|extrema (write just that table)
+             --only points|extrema|weak (write just that table; weak: reference_dmt_weak.csv,
+             run with --dps 60: its minima cancel to 1e-10 of their parts)
 """
 
 import argparse
@@ -453,12 +454,77 @@ def extrema(quick):
     return rows
 
 
+# ------------------------------------------------- weak adhesion (Dugdale, far minima)
+
+# theta, c_h ("inf" for H = inf), Dugdale range: minima at h ~ 1e2 .. 2e5, where
+# e^{-h^2/2} is far below any double (the two failures of the million-case run first).
+WEAK = [
+    ("6.45e7", "inf", "1.97e-5"),
+    ("3.9e8", "1.9e-3", "3.5e-6"),
+    ("1e8", "inf", "1e-6"),
+    ("1e7", "inf", "0.1"),
+    ("1e6", "0.05", "1e-3"),
+]
+
+
+def weak_laplace(c0, ch, dh, h):
+    """Method (3): e^{h^2/2} P(h) and e^{h^2/2} dP/dh in Laplace form, x = h D (contact)
+    and y = h d (attracted gap), split at x, y = 1, 4, 16, 64 and at h Delta_c; cut at
+    x = 400 (e^-400 of the weight's largest value)."""
+    dc = ch * ch if ch != mp.inf else mp.inf
+    cp = 2 * ch
+
+    def p(d):
+        return d ** mpf(1.5) - c0 if d <= dc else cp * d - c0
+
+    cuts = [mpf(0), mpf(1), mpf(4), mpf(16), mpf(64), mpf(400)]
+    if dc != mp.inf and 0 < h * dc < 400:
+        cuts.append(h * dc)
+    cuts = sorted(set(cuts))
+    wt = lambda x: mp.exp(-x - x * x / (2 * h * h)) / h
+    f = gq(lambda x: p(x / h) * wt(x), cuts)
+    s = gq(lambda x: -p(x / h) * (h + x / h) * wt(x), cuts)
+    # attracted: -c0 int_0^dh (1 - d/dh) e^{h d - d^2/2} dd, y = h d in [0, h dh]
+    top = h * dh
+    ys = sorted({mpf(0), top} | {top - t for t in (mpf(1), mpf(4), mpf(16), mpf(64)) if 0 < top - t < top})
+    ys = [y for y in ys if y >= top - 400]
+    if ys[0] > 0:
+        ys = [ys[0]] + ys[1:]
+    g = lambda y: (1 - y / top) * mp.exp(y - y * y / (2 * h * h)) / h
+    f += -c0 * gq(g, ys)
+    s += c0 * gq(lambda y: g(y) * (h - y / h), ys)
+    return f, s
+
+
+def weak(quick):
+    rows = []
+    for th, chs, rg in WEAK[:1] if quick else WEAK:
+        theta = dbl(th)
+        c0 = 2 * mp.pi / theta
+        ch = mp.inf if chs == "inf" else dbl(chs)
+        dh = dbl(rg)
+        slope = lambda x: weak_laplace(c0, ch, dh, x)[1]
+        a = mpf(1)
+        while slope(a * mpf("1.5")) < 0:
+            a *= mpf("1.5")
+        hmin = mp.findroot(slope, (a, a * mpf("1.5")), solver="anderson")
+        f3 = weak_laplace(c0, ch, dh, hmin)[0]
+        p1 = total_load(c0, ch, "dugdale", dh, hmin, 1)[0]
+        lnp = mp.log(-f3) - hmin * hmin / 2
+        dg = digits(mp.log(-p1), lnp, 0)
+        rel = digits(p1 * mp.exp(hmin * hmin / 2), f3, 0)
+        if min(dg, rel) < AGREE_DIGITS:
+            sys.exit(f"weak {th} {chs} {rg}: {dg} / {rel} digits")
+        rows.append([th, chs, "dugdale", rg, sci(hmin), sci(lnp), sci(f3)])
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
     ap.add_argument("--dps", type=int, default=40)
     ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--only", choices=["points", "extrema"], help="write just one of the two tables")
+    ap.add_argument("--only", choices=["points", "extrema", "weak"], help="write just one of the two tables")
     args = ap.parse_args()
     mp.mp.dps = max(40, args.dps)
     os.makedirs(args.out, exist_ok=True)
@@ -469,6 +535,18 @@ def main():
         "# contact columns scaled by exp(kappa), kappa = h^2/2 for h > 0 else 0; noncontact columns by exp(noncontact_exponent)",
         "# methods: (1) closed forms + s = D^(1/2) (Hertz) + t = z0/(z0-D) (van der Waals); (2) mpmath.quad over D for every part",
     ]
+    if args.only == "weak":
+        rows = weak(args.quick)
+        with open(os.path.join(args.out, "reference_dmt_weak.csv"), "w") as f:
+            for line in head:
+                f.write(line.replace("--out tests/data", "--only weak --dps 60 --out tests/data") + "\n")
+            f.write("# weak adhesion, Dugdale: the pull-off minimum far out; (3) Laplace form e^{h^2/2} P (x = h D), findroot on its slope;\n")
+            f.write("# P there by (3) and by (1) agree >= 25 digits; ln_abs_load_min = ln|P_min| (P_min = scaled_load_min e^{-h_min^2/2})\n")
+            f.write("theta,c_h,attraction,range,h_min,ln_abs_load_min,scaled_load_min\n")
+            for r in rows:
+                f.write(",".join(r) + "\n")
+        print(f"{len(rows)} weak-adhesion minima")
+        return
     if args.only == "extrema":
         rows, worst = [], None
     else:

@@ -15,7 +15,12 @@
 use super::coefficients::{Coefficients, Transition};
 use super::dmt::{noncontact, Noncontact};
 use super::gauss;
-use super::law::AsperityLaw;
+use super::law::{AsperityLaw, Attraction};
+
+/// The largest scale difference κ - E at which [`Integrals`] adds the shares at
+/// the contact scale (the non-contact mantissa times e^{κ-E} ≤ e^{300} stays finite;
+/// beyond it the contact share is below e^{-300} of the other).
+const NONCONTACT_GAP_LIMIT: f64 = 300.0;
 use super::scaled::Scaled;
 use super::special::{gauss_scaled, kappa, tail0, tail1};
 
@@ -190,6 +195,10 @@ pub struct Integrals {
     /// The scale exponent of the non-contact mantissas: the van der Waals term
     /// decays as a power of h, not like e^{-h²/2}, so it keeps its own scale.
     pub noncontact_exponent: f64,
+    /// `scale_exponent - noncontact_exponent` computed without rounding either
+    /// (Dugdale beyond its reach, where both are large: Δ_h (h - Δ_h/2)); None
+    /// where the difference of the two fields is exact enough.
+    pub noncontact_gap: Option<f64>,
 }
 
 impl Integrals {
@@ -199,9 +208,14 @@ impl Integrals {
     fn with_noncontact(&self, contact: f64, noncontact: f64) -> Scaled {
         let c = self.scaled(contact);
         if noncontact == 0.0 {
-            c
-        } else {
-            c.plus(Scaled::new(noncontact, self.noncontact_exponent))
+            return c;
+        }
+        match self.noncontact_gap {
+            Some(gap) if gap <= NONCONTACT_GAP_LIMIT => {
+                // Both shares at the contact scale, with the exact difference.
+                self.scaled(contact + noncontact * gap.exp())
+            }
+            _ => c.plus(Scaled::new(noncontact, self.noncontact_exponent)),
         }
     }
     /// P̄(h), contact and non-contact shares together.
@@ -352,6 +366,15 @@ impl Model {
             out.dload_dh_noncontact = n.dload_dh;
             out.d2load_dh2_noncontact = n.d2load_dh2;
             out.noncontact_exponent = n.exponent;
+            // Dugdale beyond its reach (h > Δ_h): κ = h²/2 and E = (h - Δ_h)²/2 are
+            // each rounded to an ulp of themselves, 1e-7 absolute at h = 4e4 — far
+            // more than the shares' difference near a weak-adhesion minimum
+            // (h ~ 1e4–1e5). The sums use the exact κ - E = Δ_h (h - Δ_h/2) instead.
+            if let Attraction::Dugdale { range } = attraction {
+                if h > range && n.exponent > 0.0 {
+                    out.noncontact_gap = Some(range * (h - 0.5 * range));
+                }
+            }
         }
         out
     }
@@ -377,6 +400,7 @@ impl Model {
             dload_dh_noncontact: 0.0,
             d2load_dh2_noncontact: 0.0,
             noncontact_exponent: 0.0,
+            noncontact_gap: None,
         };
         if c.has_plasticity() {
             // Closed forms at u_c = h + Δc, rescaled from e^{κ(u_c)} to e^{κ(h)}.

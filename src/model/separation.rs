@@ -36,6 +36,21 @@
 //! maximum and minimum; there the critical points are isolated by a sign scan of
 //! P̄' (step 1/8 across the bump, growing away from it, on an interval outside which the
 //! sign of P̄' is proven), and roots are then found on monotone pieces.
+//!
+//! **Weak adhesion (DMT, θ ≳ 1e6).** With a short Dugdale range the minimum moves
+//! out to where the contacts' Hertz load balances their adhesive offset,
+//! e^{h²/2} P̄ ≈ Γ(5/2) h^{-5/2} - c_0/h - c_0 Δ_h/2 = 0, i.e. h ≈ (Γ(5/2)/c_0)^{2/3}
+//! (4e4 at θ = 6.45e7), or c_p/c_0 when plastic junctions dominate. There the shares
+//! of P̄ cancel to ~1/h² of their size, and P̄'s contact and attracted shares, each
+//! scaled by its own e^{κ} with κ ≈ h²/2 a double, must be added at one exactly
+//! known scale (`Integrals::noncontact_gap`), or the rounding of κ (1e-7 at
+//! h = 4e4) is a bogus slope. Then the Newton walk below finds the minimum from the
+//! usual start in 20–35 evaluations: its location to ~ε relative (a point δ off it
+//! has P̄' ~ δ·(parts), rounding ε·h·(parts)), P̄ there to ~ε h² relative in its
+//! mantissa (and to the rounding of κ in its logarithm). tests/dmt_weak.rs checks
+//! both against a 60-digit table, the closed-form limit and JKR. Beyond |h| = 1e6
+//! the mantissa is no longer resolved; `evaluate` then reports no pull-off with a
+//! warning (the force is below 10^{-1e11} N), never a silent null.
 
 use std::cmp::Ordering;
 

@@ -157,6 +157,21 @@ pub enum Warning {
         /// The plausible range (SI).
         plausible_max: f64,
     },
+    /// The scene has adhesion but the pull-off search found no minimum of P̄(h)
+    /// (not expected: docs/model.md §4 proves there is one; reported, not hidden).
+    PullOffNotFound {
+        /// Model evaluations spent.
+        evaluations: usize,
+    },
+    /// The pull-off minimum lies beyond |h| = 1e6 (adhesion so weak that P̄ there is
+    /// ~e^{-h²/2} < e^{-5e11}): outside the separations the model resolves, so no
+    /// pull-off force is reported; it is far below any force a double can hold.
+    PullOffBeyondModel {
+        /// The minimum's h as found (over σ).
+        separation: f64,
+        /// The largest |h| the model resolves.
+        limit: f64,
+    },
     /// A result came out non-finite (status out_of_range).
     NonFiniteResult {
         /// The result's JSON key.

@@ -422,7 +422,25 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         && (options.pull_off || scene.load <= 0.0 || model.transition.jump < 0.0);
     let land = need_landscape.then(|| landscape_from(&model, hints.pull_off));
     let mut evaluations = land.as_ref().map_or(0, |l| l.evaluations);
-    let pull_off: Option<PullOff> = land.as_ref().and_then(pull_off_of);
+    let mut pull_off: Option<PullOff> = land.as_ref().and_then(pull_off_of);
+    if coeffs.has_adhesion() && (options.pull_off || scene.load <= 0.0) {
+        // No accepted scene reports a silent null: a minimum the model cannot
+        // resolve (|h| > 1e6, where P̄'s shares cancel below ε) or none at all is a warning.
+        let limit = super::coefficients::MAX_SEPARATION;
+        match pull_off {
+            Some(p) if p.separation.abs() > limit => {
+                warnings.push(Warning::PullOffBeyondModel {
+                    separation: p.separation,
+                    limit,
+                });
+                pull_off = None;
+            }
+            None => warnings.push(Warning::PullOffNotFound {
+                evaluations: land.as_ref().map_or(0, |l| l.evaluations),
+            }),
+            Some(_) => {}
+        }
+    }
     let outcome = solve_separation_from(&model, target, land.as_ref(), hints.separation);
     let (status, h) = match outcome {
         SeparationOutcome::Contact {

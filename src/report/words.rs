@@ -126,6 +126,13 @@ pub fn warning(w: &Warning) -> String {
                 }
             )
         }
+        Warning::PullOffNotFound { evaluations } => format!(
+            "the pull-off search found no minimum of the load curve after {evaluations} evaluations: no pull-off force is reported (a defect of the search, not of the scene: please report it)"
+        ),
+        Warning::PullOffBeyondModel { separation, limit } => format!(
+            "adhesion is negligible: the load curve's minimum lies at h ≈ {} σ, beyond the {limit:.0e} σ the model resolves, where the pull-off force is below 10^-1e11 N; no pull-off force is reported",
+            sig_exp(*separation, 3)
+        ),
         Warning::NonFiniteResult { quantity } => format!(
             "{quantity} came out non-finite: the scene is beyond what the evaluator can represent (status out_of_range)"
         ),
