@@ -12,7 +12,8 @@
 //! * [`design`]: variables in log space, scaled to the unit box.
 //! * [`functions`]: a study as a [`NonlinearProgram`] (ln objective, constraint rows).
 //! * [`optimize`]: deterministic low-discrepancy multistart in parallel, with a
-//!   search for starts in contact.
+//!   search for starts in contact, then a search of the vertices adjacent to the
+//!   best local optimum ([`vertices`]).
 
 pub mod design;
 pub(crate) mod fd;
@@ -24,6 +25,7 @@ pub mod program;
 pub(crate) mod qp;
 pub mod sqp;
 pub mod study;
+pub mod vertices;
 
 use std::time::{Duration, Instant};
 
@@ -126,6 +128,14 @@ pub struct StartsSummary {
     pub converged: usize,
     /// Starts whose result agrees with the best to 1e-6 relative.
     pub reached_best: usize,
+    /// Edges of the best local optima's active sets followed by the vertex
+    /// search (the second phase, [`vertices`]).
+    pub edges: usize,
+    /// Solves the vertex search ran from ends of edges where the objective
+    /// is below the optimum's (indices after the `total` starts).
+    pub vertex_starts: usize,
+    /// Of those, the solves whose result agrees with the best to 1e-6 relative.
+    pub vertex_reached_best: usize,
 }
 
 /// The result of a study.
@@ -380,12 +390,101 @@ pub fn optimize_observed(
     if starts.is_empty() {
         return Err(OptimizeError::NoContact);
     }
-    let outcomes: Vec<StartOutcome> = starts
+    let mut outcomes: Vec<StartOutcome> = starts
         .into_par_iter()
         .enumerate()
         .map(|(i, x0)| run_start(&functions, i, x0, study.settings, deadline, observers))
         .collect();
-    assemble(study, &functions, objective, outcomes, drawn, t0)
+    let total = outcomes.len();
+    let search = vertex_search(
+        &functions,
+        &mut outcomes,
+        study.settings,
+        deadline,
+        observers,
+    );
+    assemble(
+        study,
+        &functions,
+        objective,
+        outcomes,
+        Multistart {
+            total,
+            drawn,
+            search,
+        },
+        t0,
+    )
+}
+
+/// What the vertex search added to the starts' outcomes.
+#[derive(Debug, Clone, Copy, Default)]
+struct VertexSearch {
+    edges: usize,
+    evaluations: usize,
+}
+
+struct Multistart {
+    total: usize,
+    drawn: usize,
+    search: VertexSearch,
+}
+
+/// Relative (ln objective) improvement below which a new optimum is the same one.
+const IMPROVEMENT: f64 = 1e-7;
+
+/// The second phase: from the best feasible optimal end, solve from the ends
+/// of its active set's edges that look better ([`vertices::edge_starts`]);
+/// repeat from a better optimum found so, at most n rounds. The solves are
+/// appended to `outcomes` (indices after the starts).
+fn vertex_search(
+    functions: &StudyFunctions,
+    outcomes: &mut Vec<StartOutcome>,
+    settings: &OptimizerSettings,
+    deadline: Instant,
+    observers: Option<ObserverFactory>,
+) -> VertexSearch {
+    let mut search = VertexSearch::default();
+    let mut searched = f64::INFINITY;
+    for _ in 0..functions.dim() {
+        let Some(best) = outcomes
+            .iter()
+            .filter(|o| o.status == OptimizationStatus::Optimal)
+            .filter(|o| {
+                o.point
+                    .as_ref()
+                    .is_some_and(|p| p.max_violation() <= FEASIBILITY_TOLERANCE)
+            })
+            .min_by(|a, b| {
+                let (pa, pb) = (a.point.as_ref().unwrap(), b.point.as_ref().unwrap());
+                pa.objective
+                    .total_cmp(&pb.objective)
+                    .then(a.index.cmp(&b.index))
+            })
+        else {
+            break;
+        };
+        let point = best.point.as_ref().unwrap();
+        if point.objective >= searched - IMPROVEMENT || Instant::now() >= deadline {
+            break;
+        }
+        searched = point.objective;
+        let found = vertices::edge_starts(functions, point, &best.multipliers);
+        search.edges += found.edges;
+        search.evaluations += found.evaluations;
+        let first = outcomes.len();
+        let solved: Vec<StartOutcome> = found
+            .starts
+            .into_par_iter()
+            .enumerate()
+            .map(|(k, x0)| run_start(functions, first + k, x0, settings, deadline, observers))
+            .collect();
+        if solved.is_empty() {
+            break;
+        }
+        outcomes.extend(solved);
+    }
+    search
 }
 
 /// The study's result from its starts' outcomes.
@@ -394,11 +493,12 @@ fn assemble(
     functions: &StudyFunctions,
     objective: Objective,
     outcomes: Vec<StartOutcome>,
-    drawn: usize,
+    multistart: Multistart,
     t0: Instant,
 ) -> Result<Optimum, OptimizeError> {
     let baseline_x = functions.space.baseline_unit();
-    let evaluations = outcomes.iter().map(|o| o.evaluations).sum();
+    let evaluations =
+        outcomes.iter().map(|o| o.evaluations).sum::<usize>() + multistart.search.evaluations;
 
     // The best: lowest objective among feasible ends (optimal first), else the least violating.
     let feasible = |o: &&StartOutcome| {
@@ -447,15 +547,14 @@ fn assemble(
             s => s,
         }
     };
-    let reached_best = outcomes
-        .iter()
-        .filter(feasible)
-        .filter(|o| {
-            let f = o.point.as_ref().unwrap().objective;
-            (f - best_point.objective).abs() <= 1e-6 * (1.0 + best_point.objective.abs())
-        })
-        .count();
-    let converged = outcomes
+    let reaches_best = |o: &&StartOutcome| {
+        let f = o.point.as_ref().unwrap().objective;
+        (f - best_point.objective).abs() <= 1e-6 * (1.0 + best_point.objective.abs())
+    };
+    let (starts, vertex) = outcomes.split_at(multistart.total);
+    let reached_best = starts.iter().filter(feasible).filter(reaches_best).count();
+    let vertex_reached_best = vertex.iter().filter(feasible).filter(reaches_best).count();
+    let converged = starts
         .iter()
         .filter(|o| o.status == OptimizationStatus::Optimal)
         .filter(feasible)
@@ -531,10 +630,13 @@ fn assemble(
         gradient_error: best.gradient_error,
         evaluations,
         starts: StartsSummary {
-            total: outcomes.len(),
-            drawn,
+            total: multistart.total,
+            drawn: multistart.drawn,
             converged,
             reached_best,
+            edges: multistart.search.edges,
+            vertex_starts: outcomes.len() - multistart.total,
+            vertex_reached_best,
         },
         time_seconds: t0.elapsed().as_secs_f64(),
         evaluation,

@@ -300,10 +300,45 @@ pub fn text(name: &str, o: &Optimum) -> String {
         sig(o.time_seconds, 3)
     ));
     line(format!(
-        "starts: {} run, {} converged, {} reached the best (start {} reported)",
-        o.starts.total, o.starts.converged, o.starts.reached_best, o.best_start
+        "starts: {} run, {} converged, {} reached the best ({} {} reported)",
+        o.starts.total,
+        o.starts.converged,
+        o.starts.reached_best,
+        if o.best_start < o.starts.total {
+            "start"
+        } else {
+            "vertex-search solve"
+        },
+        o.best_start
     ));
+    line(vertex_search_line(o));
     out
+}
+
+/// How the vertex search (second phase of the multistart) went, in one sentence.
+fn vertex_search_line(o: &Optimum) -> String {
+    let s = &o.starts;
+    let found_by = if o.best_start >= s.total {
+        "; it found the reported design, better than every start"
+    } else {
+        ""
+    };
+    if s.vertex_starts == 0 {
+        format!(
+            "vertex search: {} edge{} of the optimum's active set followed; none leads to a lower objective",
+            s.edges,
+            if s.edges == 1 { "" } else { "s" }
+        )
+    } else {
+        format!(
+            "vertex search: {} edge{} of the best optima's active sets followed; {} solve{} from edge ends with a lower objective, {} reached the best{found_by}",
+            s.edges,
+            if s.edges == 1 { "" } else { "s" },
+            s.vertex_starts,
+            if s.vertex_starts == 1 { "" } else { "s" },
+            s.vertex_reached_best,
+        )
+    }
 }
 
 /// The convergence of every start: KKT residual against iteration (log scale).
@@ -436,7 +471,7 @@ pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String 
     }
     p.paragraph(
         &format!(
-            "KKT residual {} (finite-difference gradient error ≈ {}); {} model evaluations; {} s; starts: {} run, {} converged, {} reached the best (start {} reported).",
+            "KKT residual {} (finite-difference gradient error ≈ {}); {} model evaluations; {} s; starts: {} run, {} converged, {} reached the best (start {} reported); {}.",
             sig_exp(o.kkt_residual, 3),
             sig_exp(o.gradient_error, 2),
             o.evaluations,
@@ -444,7 +479,8 @@ pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String 
             o.starts.total,
             o.starts.converged,
             o.starts.reached_best,
-            o.best_start
+            o.best_start,
+            vertex_search_line(o)
         ),
         None,
     );
