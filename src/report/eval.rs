@@ -599,11 +599,20 @@ pub fn text(r: &EvalReport) -> String {
         (Some(f), Some(l)) => line(format!(
             "  pull-off force {} (10^{} N) at d = {}; one asperity (JKR 1.5πγR): {}",
             si(f, "N", 4),
-            sig(l, 5),
+            // Five significant digits would round 10^-310658.7 to 10^-310660.
+            if l.abs() < 1e4 {
+                sig(l, 5)
+            } else {
+                format!("{l:.1}")
+            },
             ev.pull_off_separation.map_or("-".into(), |d| si(d, "m", 4)),
             si(ev.asperity_pull_off_force, "N", 3)
         )),
         (Some(f), None) => line(format!("  pull-off force {} (no adhesion)", si(f, "N", 3))),
+        // γ > 0 but no pull-off: a warning above says why.
+        (None, _) if ev.asperity_pull_off_force > 0.0 => {
+            line("  pull-off force: none reported (see the warning above)".to_string())
+        }
         _ => {}
     }
     if let Some(om) = &ev.other_model {
