@@ -430,13 +430,15 @@ struct Multistart {
     search: VertexSearch,
 }
 
-/// Relative (ln objective) improvement below which a new optimum is the same one.
-const IMPROVEMENT: f64 = 1e-7;
+/// Relative (ln objective) improvement below which a new optimum is the same
+/// one: the 1e-6 of the global-optimum contract and of `reached_best`.
+const IMPROVEMENT: f64 = 1e-6;
 
-/// The second phase: from the best feasible optimal end, solve from the ends
-/// of its active set's edges that look better ([`vertices::edge_starts`]);
-/// repeat from a better optimum found so, at most n rounds. The solves are
-/// appended to `outcomes` (indices after the starts).
+/// The second phase: from each distinct feasible optimal end, solve from the
+/// ends of its active set's edges that look better than the best end
+/// ([`vertices::edge_starts`]); repeat from the optima those solves find that
+/// improve on the best, at most n rounds. The solves are appended to
+/// `outcomes` (indices after the starts).
 fn vertex_search(
     functions: &StudyFunctions,
     outcomes: &mut Vec<StartOutcome>,
@@ -445,39 +447,44 @@ fn vertex_search(
     observers: Option<ObserverFactory>,
 ) -> VertexSearch {
     let mut search = VertexSearch::default();
-    let mut searched = f64::INFINITY;
+    let mut searched: Vec<f64> = Vec::new();
+    let mut from = 0;
     for _ in 0..functions.dim() {
-        let Some(best) = outcomes
-            .iter()
-            .filter(|o| o.status == OptimizationStatus::Optimal)
-            .filter(|o| {
-                o.point
-                    .as_ref()
-                    .is_some_and(|p| p.max_violation() <= FEASIBILITY_TOLERANCE)
-            })
-            .min_by(|a, b| {
-                let (pa, pb) = (a.point.as_ref().unwrap(), b.point.as_ref().unwrap());
-                pa.objective
-                    .total_cmp(&pb.objective)
-                    .then(a.index.cmp(&b.index))
-            })
+        let ends = distinct_optima(&outcomes[from..]);
+        let Some(best) = distinct_optima(outcomes)
+            .first()
+            .map(|o| o.point.as_ref().unwrap().objective)
         else {
             break;
         };
-        let point = best.point.as_ref().unwrap();
-        if point.objective >= searched - IMPROVEMENT || Instant::now() >= deadline {
+        let known = |f: f64| searched.iter().any(|&s| (f - s).abs() <= IMPROVEMENT);
+        let record = searched.iter().copied().fold(f64::INFINITY, f64::min);
+        // The first round searches every optimum the starts found; later
+        // rounds only new optima better than every one searched.
+        let to_search: Vec<&StartOutcome> = ends
+            .into_iter()
+            .filter(|o| {
+                let f = o.point.as_ref().unwrap().objective;
+                !known(f) && (searched.is_empty() || f < record - IMPROVEMENT)
+            })
+            .collect();
+        if to_search.is_empty() || Instant::now() >= deadline {
             break;
         }
-        searched = point.objective;
-        let found = vertices::edge_starts(functions, point, &best.multipliers);
-        search.edges += found.edges;
-        search.evaluations += found.evaluations;
-        let first = outcomes.len();
-        let solved: Vec<StartOutcome> = found
-            .starts
+        let mut starts = Vec::new();
+        for o in to_search {
+            let point = o.point.as_ref().unwrap();
+            searched.push(point.objective);
+            let found = vertices::edge_starts(functions, point, &o.multipliers, best);
+            search.edges += found.edges;
+            search.evaluations += found.evaluations;
+            starts.extend(found.starts);
+        }
+        from = outcomes.len();
+        let solved: Vec<StartOutcome> = starts
             .into_par_iter()
             .enumerate()
-            .map(|(k, x0)| run_start(functions, first + k, x0, settings, deadline, observers))
+            .map(|(k, x0)| run_start(functions, from + k, x0, settings, deadline, observers))
             .collect();
         if solved.is_empty() {
             break;
@@ -485,6 +492,37 @@ fn vertex_search(
         outcomes.extend(solved);
     }
     search
+}
+
+/// The feasible `optimal` ends, best first, one per objective value (within
+/// [`IMPROVEMENT`]); ties go to the lower index.
+fn distinct_optima(outcomes: &[StartOutcome]) -> Vec<&StartOutcome> {
+    let mut ends: Vec<&StartOutcome> = outcomes
+        .iter()
+        .filter(|o| o.status == OptimizationStatus::Optimal)
+        .filter(|o| {
+            o.point
+                .as_ref()
+                .is_some_and(|p| p.max_violation() <= FEASIBILITY_TOLERANCE)
+        })
+        .collect();
+    ends.sort_by(|a, b| {
+        let (pa, pb) = (a.point.as_ref().unwrap(), b.point.as_ref().unwrap());
+        pa.objective
+            .total_cmp(&pb.objective)
+            .then(a.index.cmp(&b.index))
+    });
+    let mut out: Vec<&StartOutcome> = Vec::new();
+    for o in ends {
+        let f = o.point.as_ref().unwrap().objective;
+        if out
+            .last()
+            .is_none_or(|l| (f - l.point.as_ref().unwrap().objective).abs() > IMPROVEMENT)
+        {
+            out.push(o);
+        }
+    }
+    out
 }
 
 /// The study's result from its starts' outcomes.

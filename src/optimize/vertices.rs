@@ -14,9 +14,10 @@
 //! (the tangent from the active rows' Jacobian, 2n model evaluations),
 //! evaluates its end and midpoint (2 evaluations per edge), and solves from an
 //! end only where the objective there, plus the rows it breaks weighted by the
-//! optimum's multipliers (an exact-penalty merit), is below the optimum's: the
-//! edges along which the objective only rises cost no solve. A better optimum found this
-//! way is searched in turn (at most n rounds). Everything is counted in the
+//! optimum's multipliers (an exact-penalty merit), is below the best objective
+//! known: the edges along which the objective only rises cost no solve. Every
+//! distinct local optimum the starts found is searched so; a better optimum
+//! found this way is searched in turn (at most n rounds). Everything is counted in the
 //! study's evaluations; the order of results does not depend on threads.
 
 use nalgebra::{DMatrix, DVector};
@@ -38,7 +39,7 @@ pub struct EdgeStarts {
     /// Edges followed (one per active bound or row).
     pub edges: usize,
     /// Start points: ends (or midpoints) of edges where the merit is below
-    /// the optimum's objective, in edge order.
+    /// the incumbent's objective, in edge order.
     pub starts: Vec<Vec<f64>>,
     /// Model evaluations spent.
     pub evaluations: usize,
@@ -55,7 +56,14 @@ enum Released {
 
 /// The edges of the active set at `optimum` (with row multipliers
 /// `multipliers`), followed to their linearised ends; see the module docs.
-pub fn edge_starts(functions: &StudyFunctions, optimum: &Point, multipliers: &[f64]) -> EdgeStarts {
+/// An end is proposed only where its merit is below `incumbent` (an ln
+/// objective: that of the optimum itself, or a better design known).
+pub fn edge_starts(
+    functions: &StudyFunctions,
+    optimum: &Point,
+    multipliers: &[f64],
+    incumbent: f64,
+) -> EdgeStarts {
     let x = &optimum.x;
     let n = x.len();
     let on_bound = |u: f64| u <= ON_BOUND || u >= 1.0 - ON_BOUND;
@@ -145,7 +153,7 @@ pub fn edge_starts(functions: &StudyFunctions, optimum: &Point, multipliers: &[f
         .collect();
     out.evaluations += probes.len();
     for (pair, value) in probes.chunks(2).zip(values.chunks(2)) {
-        let below = |v: &Option<f64>| v.is_some_and(|f| f < optimum.objective);
+        let below = |v: &Option<f64>| v.is_some_and(|f| f < incumbent.min(optimum.objective));
         if below(&value[0]) {
             out.starts.push(pair[0].clone());
         } else if below(&value[1]) {
