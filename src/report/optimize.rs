@@ -299,20 +299,29 @@ pub fn text(name: &str, o: &Optimum) -> String {
         o.evaluations,
         sig(o.time_seconds, 3)
     ));
-    line(format!(
-        "starts: {} run, {} converged, {} reached the best ({} {} reported)",
+    line(starts_line(o));
+    line(vertex_search_line(o));
+    out
+}
+
+/// "start 3", or "vertex-search solve 8" for a solve of the second phase.
+fn run_name(o: &Optimum, index: usize) -> String {
+    if index < o.starts.total {
+        format!("start {index}")
+    } else {
+        format!("vertex-search solve {index}")
+    }
+}
+
+/// The multistart's counts, in one sentence.
+fn starts_line(o: &Optimum) -> String {
+    format!(
+        "starts: {} run, {} converged, {} reached the best ({} reported)",
         o.starts.total,
         o.starts.converged,
         o.starts.reached_best,
-        if o.best_start < o.starts.total {
-            "start"
-        } else {
-            "vertex-search solve"
-        },
-        o.best_start
-    ));
-    line(vertex_search_line(o));
-    out
+        run_name(o, o.best_start)
+    )
 }
 
 /// How the vertex search (second phase of the multistart) went, in one sentence.
@@ -325,13 +334,13 @@ fn vertex_search_line(o: &Optimum) -> String {
     };
     if s.vertex_starts == 0 {
         format!(
-            "vertex search: {} edge{} of the optimum's active set followed; none leads to a lower objective",
+            "vertex search: {} edge{} of the active sets of the optima found followed; none leads to a lower objective",
             s.edges,
             if s.edges == 1 { "" } else { "s" }
         )
     } else {
         format!(
-            "vertex search: {} edge{} of the best optima's active sets followed; {} solve{} from edge ends with a lower objective, {} reached the best{found_by}",
+            "vertex search: {} edge{} of the active sets of the optima found followed; {} solve{} from edge ends with a lower objective, {} reached the best{found_by}",
             s.edges,
             if s.edges == 1 { "" } else { "s" },
             s.vertex_starts,
@@ -356,7 +365,7 @@ pub fn convergence_svg(name: &str, o: &Optimum) -> String {
             .map(|r| (r.iteration as f64, r.kkt_residual.max(1e-17)))
             .collect();
         if !pts.is_empty() {
-            plot = plot.with_series(Series::new(format!("start {}", s.index), pts));
+            plot = plot.with_series(Series::new(run_name(o, s.index), pts));
         }
     }
     plot.to_svg()
@@ -471,15 +480,12 @@ pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String 
     }
     p.paragraph(
         &format!(
-            "KKT residual {} (finite-difference gradient error ≈ {}); {} model evaluations; {} s; starts: {} run, {} converged, {} reached the best (start {} reported); {}.",
+            "KKT residual {} (finite-difference gradient error ≈ {}); {} model evaluations; {} s; {}; {}.",
             sig_exp(o.kkt_residual, 3),
             sig_exp(o.gradient_error, 2),
             o.evaluations,
             sig(o.time_seconds, 3),
-            o.starts.total,
-            o.starts.converged,
-            o.starts.reached_best,
-            o.best_start,
+            starts_line(o),
             vertex_search_line(o)
         ),
         None,
