@@ -297,6 +297,7 @@ impl Sqp {
         p: &P,
         x: &[f64],
         v: &Values,
+        same_point: Option<&Gradients>,
     ) -> Option<Gradients> {
         let g = gradients(
             p,
@@ -306,6 +307,7 @@ impl Sqp {
             &self.scale,
             &(self.lower.clone(), self.upper.clone()),
             self.richardson,
+            same_point,
         );
         let per_variable = if self.richardson { 4 } else { 2 };
         self.evaluations += g.as_ref().map_or(per_variable * x.len(), |g| g.evaluations);
@@ -322,19 +324,19 @@ impl Sqp {
         if self.richardson {
             return;
         }
-        let (Some(v), Some(g)) = (self.values.clone(), self.grads.as_ref()) else {
+        let (Some(v), Some(g)) = (self.values.clone(), self.grads.clone()) else {
             return;
         };
         let near = self
             .settings
             .richardson_below
             .max(100.0 * self.settings.tolerance);
-        if !always && self.best_kkt(&v, g, &[]).0.residual > near {
+        if !always && self.best_kkt(&v, &g, &[]).0.residual > near {
             return;
         }
         self.richardson = true;
         let x = self.x.clone();
-        if let Some(g) = self.gradients_at(p, &x, &v) {
+        if let Some(g) = self.gradients_at(p, &x, &v, Some(&g)) {
             self.grads = Some(g);
             self.kkt = None;
         }
@@ -390,6 +392,25 @@ impl Sqp {
                 let l = vec![0.0; v.constraints.len()];
                 (kkt(&d, &l), l)
             })
+    }
+
+    /// As [`Sqp::best_kkt`] with the least-squares pick already made:
+    /// the first estimate of `extra` with the smallest residual, unless
+    /// `least` has a smaller one.
+    fn better_kkt(
+        &self,
+        v: &Values,
+        g: &Gradients,
+        extra: &[Vec<f64>],
+        least: (Kkt, Vec<f64>),
+    ) -> (Kkt, Vec<f64>) {
+        let d = self.kkt_data(v, g);
+        extra
+            .iter()
+            .map(|l| (kkt(&d, l), l.clone()))
+            .min_by(|a, b| a.0.residual.total_cmp(&b.0.residual))
+            .filter(|best| best.0.residual <= least.0.residual)
+            .unwrap_or(least)
     }
 
     fn include(&self, rows: &[f64], jacobian: &[Vec<f64>], radius: f64) -> Vec<bool> {
@@ -607,7 +628,9 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         self.max_radius = norm2(&widths).max(self.radius);
         let x = self.x.clone();
         let values = self.evaluate(prog, &x, &[]);
-        let grads = values.as_ref().and_then(|v| self.gradients_at(prog, &x, v));
+        let grads = values
+            .as_ref()
+            .and_then(|v| self.gradients_at(prog, &x, v, None));
         let (Some(values), Some(grads)) = (values, grads) else {
             self.exit = Some("unevaluable");
             return Ok((state, None));
@@ -641,6 +664,16 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             .grads
             .clone()
             .ok_or_else(|| Error::msg("not initialised"))?;
+        // The least-squares multipliers first: where they already meet the
+        // KKT test the run ends without solving a subproblem.
+        let least = self.best_kkt(&v, &grads, &[]);
+        if self.settings.met(&least.0) {
+            self.last_kkt = least.0.residual;
+            self.kkt = Some(least);
+            self.record(state.get_iter() as usize);
+            self.exit = Some("converged");
+            return Ok((state.cost(v.objective), Some(self.kv())));
+        }
         let step = match self.subproblem(&v.constraints, self.radius) {
             Ok(s) => s,
             Err(fail) => {
@@ -652,15 +685,22 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         };
         // Multipliers: the subproblem's (without the trust region where it
         // binds, since there they are not the KKT multipliers) and the
-        // least-squares ones; the estimate with the smallest residual.
+        // least-squares ones; the estimate with the smallest residual. The
+        // estimate without the trust region serves only the KKT test: it is
+        // solved only where the least-squares one says the point is near a
+        // KKT point (residual within the Richardson threshold).
         let p_len = norm2(&step.p);
         let mut extra = vec![step.multipliers.clone()];
-        if p_len >= 0.99 * self.radius {
+        let near = self
+            .settings
+            .richardson_below
+            .max(100.0 * self.settings.tolerance);
+        if p_len >= 0.99 * self.radius && least.0.residual <= near {
             if let Ok(s) = self.subproblem(&v.constraints, 1e3 * self.max_radius) {
                 extra.push(s.multipliers);
             }
         }
-        self.kkt = Some(self.best_kkt(&v, &grads, &extra));
+        self.kkt = Some(self.better_kkt(&v, &grads, &extra, least));
         self.last_kkt = self.kkt.as_ref().map_or(f64::NAN, |k| k.0.residual);
         self.record(state.get_iter() as usize);
         if self.kkt.as_ref().is_some_and(|k| self.settings.met(&k.0)) {
@@ -733,7 +773,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             return Ok((state.cost(v.objective), Some(self.kv())));
         }
         let trial = trial.expect("accepted steps have values");
-        let Some(new_grads) = self.gradients_at(prog, &trial_x, &trial) else {
+        let Some(new_grads) = self.gradients_at(prog, &trial_x, &trial, None) else {
             self.reject(p_len);
             return Ok((state.cost(v.objective), Some(self.kv())));
         };
