@@ -79,7 +79,11 @@ pub struct SqpSettings {
     /// least-squares multipliers; the estimate with the smallest residual is
     /// kept (default 1e-10, 1e-7, 1e-4).
     pub active_tolerances: Vec<f64>,
-    /// A trial point closer to a bound than this times max(1, |bound|) is put on it (default 1e-8).
+    /// A trial point closer to a bound than this times max(1, |bound|) is put on it
+    /// (default 1e-6, a hundredth of the finite-difference step: closer than that
+    /// the gradients cannot tell the point from the bound, and an iterate left just
+    /// off a bound that is active at the optimum crawls towards it in steps the
+    /// subproblem keeps tiny while the KKT test counts the bound as free).
     pub bound_snap: f64,
 }
 
@@ -115,7 +119,7 @@ impl Default for SqpSettings {
             step_tolerance: 1e-14,
             merit_noise: 1e-12,
             active_tolerances: vec![1e-10, 1e-7, 1e-4],
-            bound_snap: 1e-8,
+            bound_snap: 1e-6,
         }
     }
 }
