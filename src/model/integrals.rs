@@ -16,13 +16,13 @@ use super::coefficients::{Coefficients, Transition};
 use super::dmt::{noncontact, Noncontact};
 use super::gauss;
 use super::law::{AsperityLaw, Attraction};
+use super::scaled::Scaled;
+use super::special::{gauss_scaled, kappa, tail0, tail1};
 
 /// The largest scale difference κ - E at which [`Integrals`] adds the shares at
 /// the contact scale (the non-contact mantissa times e^{κ-E} ≤ e^{300} stays finite;
 /// beyond it the contact share is below e^{-300} of the other).
 const NONCONTACT_GAP_LIMIT: f64 = 300.0;
-use super::scaled::Scaled;
-use super::special::{gauss_scaled, kappa, tail0, tail1};
 
 /// Accuracy settings of the elastic quadrature (the only non-closed-form part).
 ///

@@ -435,9 +435,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
                 });
                 pull_off = None;
             }
-            None => warnings.push(Warning::PullOffNotFound {
-                evaluations: land.as_ref().map_or(0, |l| l.evaluations),
-            }),
+            None => warnings.push(Warning::PullOffNotFound { evaluations }),
             Some(_) => {}
         }
     }

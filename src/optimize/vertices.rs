@@ -23,7 +23,9 @@
 use nalgebra::{DMatrix, DVector};
 use rayon::prelude::*;
 
+use super::fd;
 use super::functions::{Point, StudyFunctions};
+use super::program::NonlinearProgram;
 
 /// A variable within this of 0 or 1 (unit coordinates) is on its bound.
 pub const ON_BOUND: f64 = 1e-6;
@@ -77,43 +79,30 @@ pub fn edge_starts(
         return out;
     }
 
-    // The active rows' Jacobian, central differences (one-sided on a bound).
+    // The active rows' Jacobian: the SQP's own finite differences (central,
+    // one-sided on a bound) at the Jacobian step.
     let jacobian = if rows.is_empty() {
         DMatrix::zeros(0, n)
     } else {
-        let steps: Vec<(f64, f64)> = x
-            .iter()
-            .map(|&u| {
-                if u + JACOBIAN_STEP > 1.0 {
-                    (0.0, -JACOBIAN_STEP)
-                } else if u - JACOBIAN_STEP < 0.0 {
-                    (JACOBIAN_STEP, 0.0)
-                } else {
-                    (JACOBIAN_STEP, -JACOBIAN_STEP)
-                }
-            })
-            .collect();
-        let stencil: Vec<Vec<f64>> = (0..2 * n)
-            .map(|k| {
-                let (i, (a, b)) = (k / 2, steps[k / 2]);
-                let mut y = x.clone();
-                y[i] += if k % 2 == 0 { a } else { b };
-                y
-            })
-            .collect();
-        let values: Vec<Option<Point>> = stencil.par_iter().map(|y| functions.at(y)).collect();
-        out.evaluations += 2 * n;
-        let mut jac = DMatrix::zeros(rows.len(), n);
-        for i in 0..n {
-            let (Some(pa), Some(pb)) = (&values[2 * i], &values[2 * i + 1]) else {
-                return out; // a neighbour out of contact: no linearisation here
-            };
-            let (a, b) = steps[i];
-            for (r, &j) in rows.iter().enumerate() {
-                jac[(r, i)] = (pa.rows[j] - pb.rows[j]) / (a - b);
-            }
-        }
-        jac
+        let Some(at) = functions.evaluate(x, &[]) else {
+            return out;
+        };
+        out.evaluations += 1;
+        let gradients = fd::gradients(
+            functions,
+            x,
+            &at,
+            JACOBIAN_STEP,
+            &functions.scale(),
+            &functions.bounds(),
+            false,
+            None,
+        );
+        let Some(g) = gradients else {
+            return out; // no stencil in contact: no linearisation here
+        };
+        out.evaluations += g.evaluations;
+        DMatrix::from_fn(rows.len(), n, |r, i| g.rows[rows[r]][i])
     };
 
     // Each edge's direction and its linearised end.
