@@ -31,8 +31,9 @@ pub use scaled::Scaled;
 pub use scene::{InputError, Requirements, Scene, WearArea};
 pub use sensitivity::{sensitivities, Sensitivity, SensitivityGap, SensitivityParameter};
 pub use separation::{
-    find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_from,
-    solve_separation_with, CriticalPoint, Landscape, PullOff, SeparationOutcome,
+    find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_at,
+    solve_separation_from, solve_separation_with, CriticalPoint, Landscape, PullOff,
+    SeparationOutcome,
 };
 pub use warnings::{Note, ScalarInput, Warning};
 pub use wear::{

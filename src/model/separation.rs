@@ -51,6 +51,33 @@
 //! both against a 60-digit table, the closed-form limit and JKR. Beyond |h| = 1e6
 //! the mantissa is no longer resolved; `evaluate` then reports no pull-off with a
 //! warning (the force is below 10^{-1e11} N), never a silent null.
+//!
+//! **The searches and their cost.** Each step costs one [`Model::at`] (P̄, P̄',
+//! P̄'' and the areas at one h); the searches spend few of them:
+//! - *Separation, compressive load, J ≥ 0* (every optimizer evaluation):
+//!   Halley's method on ln P̄(h) = ln T (nearly quadratic in h where P̄ ~ e^{-h²/2};
+//!   P̄ - T where P̄ ≤ 0), from the hint or from the root of the Greenwood–Williamson
+//!   tail, kept inside the bracket its iterates build (bisection when a step leaves
+//!   it or does not halve over two steps; widening toward the root while it is open).
+//!   It returns the point whose step is below 2 ulps of h, or, one evaluation
+//!   earlier, the end of a step whose predicted error (|d_k|³/d_{k-1}², from two
+//!   steps converging at least quadratically) is 16 times below that. The model
+//!   at the returned point is the caller's, so the areas cost nothing more.
+//! - *Pull-off, J ≥ 0*: Newton on P̄' (on the balance of the two shares under DMT),
+//!   safeguarded the same way, stopping on the same two rules; an early stop also
+//!   needs the load at the last point to be P̄_min to within ε (½|P̄''| d² ≤ ε|P̄|).
+//! - *Other loads and J < 0*: the sign scan above and the pieces' roots by the
+//!   same safeguarded Halley iteration inside the pieces' known ends, from the
+//!   hint when it lies inside the piece.
+//!
+//! The stopping rules make every result the root (or minimum) to a few ulps of
+//! h whatever the start: hints change the cost only (tests/search_cost.rs checks
+//! 1e-14 relative against cold starts on the shipped scenes, DMT variants,
+//! extremes and 250 pairs of nearby study designs, and pins the counts). Measured
+//! (tests/search_cost.rs's table): the hub costs 11 evaluations cold under JKR and
+//! DMT (pull-off 6–7, solve 4–5, areas included), and 2 + 2 from the hints of a
+//! design 1e-6 away; the five-variable study's designs 3.9 on average warm from
+//! 1e-6 away, 6.1 from 1e-2 away, 10.9 cold.
 
 use std::cmp::Ordering;
 
@@ -190,11 +217,13 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     };
     if neg_jump == 0.0 {
         // One sign change of P̄': Newton on P̄' with P̄'' from the quadrature.
-        let start = hint.filter(|h| h.is_finite()).unwrap_or(guess);
-        if let Some(at) = single_minimum(&mut ev, start) {
+        let start = hint
+            .filter(|h| h.abs() <= super::coefficients::MAX_SEPARATION)
+            .unwrap_or(guess);
+        if let Some((separation, at)) = single_minimum(&mut ev, start) {
             return Landscape {
                 critical_points: vec![CriticalPoint {
-                    separation: at.separation,
+                    separation,
                     load: at.load(),
                     is_minimum: true,
                 }],
@@ -276,16 +305,28 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
 }
 
 /// The zero of P̄' when P̄' changes sign once (J ≥ 0), by Newton's method with
-/// P̄'' safeguarded by the bracket the signs of P̄' build. None if it fails to
+/// P̄'' safeguarded by the bracket the signs of P̄' build: the minimum's
+/// separation and the model at the last point evaluated. None if it fails to
 /// converge (the caller then falls back to bracketing).
-fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
+///
+/// It stops when Newton's step falls below 4 ulps of h (that point is the
+/// minimum), or one evaluation earlier once two Newton steps shrink
+/// quadratically (|d_k| ≤ |d_{k-1}|/10): the step d_k then leaves an error of
+/// about M d_k², M ≈ |d_k|/d_{k-1}², and when 16 times that is below 4 ulps the
+/// step's end is the separation returned, with the load at the point it starts
+/// from. That load is P̄_min to within ½|P̄''| d_k², which must be below ε|P̄|
+/// (a minimum's value moves only to second order): the force to an ulp, the
+/// separation to a few, whatever the start.
+fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Integrals)> {
     let mut at = ev.at(start);
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    // The length of the last step, when it was Newton's.
+    let mut last_newton = f64::NAN;
     for _ in 0..80 {
         let h = at.separation;
         let g = slope(&at);
         if g == 0.0 {
-            return Some(at);
+            return Some((h, at));
         }
         if g < 0.0 {
             lo = lo.max(h);
@@ -313,9 +354,21 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
             Some(next) => (next, true),
             None => (h - d1 / dg, dg > 0.0),
         };
-        if curvature_ok && (newton - h).abs() <= 4.0 * f64::EPSILON * h.abs().max(1.0) {
+        let tol = 4.0 * f64::EPSILON * h.abs().max(1.0);
+        let d = (newton - h).abs();
+        if curvature_ok && d <= tol {
             // Converged: the step is below the spacing of doubles at h.
-            return Some(at);
+            return Some((h, at));
+        }
+        if curvature_ok
+            && newton > lo
+            && newton < hi
+            && d <= 0.1 * last_newton
+            && 16.0 * d * d * d <= tol * last_newton * last_newton
+            && 0.5 * (at.d2load_dh2().ratio(at.load()) * d * d).abs() <= f64::EPSILON
+        {
+            // Quadratic convergence (see above): the step's end is the minimum.
+            return Some((newton, at));
         }
         // Under DMT a far start (the attraction's reach) can see a nearly flat
         // slope and propose a jump far past the minimum (h = 21 → −2e15 for
@@ -342,11 +395,16 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<Integrals> {
             h - (0.5 * h.abs()).max(1.0)
         };
         if (next - h).abs() <= 4.0 * f64::EPSILON * h.abs().max(1.0) {
-            return Some(at);
+            return Some((h, at));
         }
         if lo.is_finite() && hi.is_finite() && hi - lo <= 4.0 * f64::EPSILON * hi.abs().max(1.0) {
-            return Some(at);
+            return Some((h, at));
         }
+        last_newton = if next == newton {
+            (next - h).abs()
+        } else {
+            f64::NAN
+        };
         at = ev.at(next);
     }
     None
@@ -465,13 +523,26 @@ pub fn solve_separation_with(
 }
 
 /// As [`solve_separation_with`], starting from `hint` (e.g. the separation of a
-/// nearby design) where the root is unique (J ≥ 0, compressive load).
+/// nearby design). The result does not depend on the hint beyond a few ulps of h.
 pub fn solve_separation_from(
     model: &Model,
     target: f64,
     known: Option<&Landscape>,
     hint: Option<f64>,
 ) -> SeparationOutcome {
+    solve_separation_at(model, target, known, hint).0
+}
+
+/// As [`solve_separation_from`], also returning the model at the separation found
+/// (for `Contact`): the caller's areas and contact counts come from it without a
+/// second evaluation ([`Model::at`] is a function of h alone, so they are the
+/// very same numbers).
+pub fn solve_separation_at(
+    model: &Model,
+    target: f64,
+    known: Option<&Landscape>,
+    hint: Option<f64>,
+) -> (SeparationOutcome, Option<Integrals>) {
     let mut ev = Counter {
         model,
         evaluations: 0,
@@ -480,51 +551,30 @@ pub fn solve_separation_from(
     if target.is_nan() || target.abs() > MAX_LOAD {
         // Beyond any contact the model describes (h would be below -1e8), or
         // not a number: no search, an honest outcome.
-        return SeparationOutcome::NotConverged {
-            separation: f64::NAN,
-            evaluations: 0,
-        };
+        return (
+            SeparationOutcome::NotConverged {
+                separation: f64::NAN,
+                evaluations: 0,
+            },
+            None,
+        );
     }
     if target <= 0.0 && !c.has_adhesion() {
-        return SeparationOutcome::Separated { evaluations: 0 };
+        return (SeparationOutcome::Separated { evaluations: 0 }, None);
     }
     if target > 0.0 && model.transition.jump >= 0.0 {
-        // One falling branch carries every positive load: any h with P̄ < target
-        // bounds the root from above (module docs).
-        if let Some(h0) = hint.filter(|h| h.is_finite()) {
-            let at = ev.at(h0);
-            if at.load().cmp_f64(target) == Ordering::Less {
-                return bracket_and_solve(&mut ev, target, at, None);
-            }
-            // The root lies right of the hint: Newton-guided steps to bracket it.
-            let mut step = 1e-3_f64.max(1e-3 * h0.abs());
-            let mut h = h0;
-            let lo = at;
-            loop {
-                let newton = newton_step(target, &lo).filter(|d| *d < 0.0 && d.is_finite());
-                let width = newton.map_or(step, |d| (-1.25 * d).max(step));
-                h += width;
-                let hi = ev.at(h);
-                if hi.load().cmp_f64(target) == Ordering::Less || ev.evaluations >= MAX_EVALUATIONS
-                {
-                    return solve_in_bracket(&mut ev, target, lo, hi);
-                }
-                step *= 4.0;
-            }
-        }
-        let mut h = if target < 1.0 {
-            (-2.0 * target.ln()).sqrt()
-        } else {
-            1.0 - (target / 2.0).powf(2.0 / 3.0)
-        };
-        let mut step = 1.0_f64;
-        let mut hi = ev.at(h);
-        while hi.load().cmp_f64(target) != Ordering::Less && ev.evaluations < MAX_EVALUATIONS {
-            h += step.max(0.25 * h.abs());
-            step *= 2.0;
-            hi = ev.at(h);
-        }
-        return bracket_and_solve(&mut ev, target, hi, None);
+        // One falling branch carries every positive load (module docs): Newton
+        // from the hint, or from the root of the Greenwood–Williamson tail
+        // P̄ ≈ e^{-h²/2} (large h) or of P̄ ≈ 2 (1 - h)^{3/2} (h < 0).
+        let start = hint
+            .filter(|h| h.abs() <= super::coefficients::MAX_SEPARATION)
+            .unwrap_or(if target < 1.0 {
+                (-2.0 * target.ln()).sqrt()
+            } else {
+                1.0 - (target / 2.0).powf(2.0 / 3.0)
+            });
+        let at = ev.at(start);
+        return newton_root(&mut ev, target, at, None, None, true);
     }
     let computed;
     let land = match known {
@@ -536,22 +586,24 @@ pub fn solve_separation_from(
         }
     };
     let cps = &land.critical_points;
+    let separated = |ev: &Counter| {
+        (
+            SeparationOutcome::Separated {
+                evaluations: ev.evaluations,
+            },
+            None,
+        )
+    };
     // The largest h bound for the root: +∞ for a compressive target, the
     // pull-off minimum for a tensile one.
     let limit = if target > 0.0 {
         cps.len()
     } else {
         match pull_off_of(land) {
-            None => {
-                return SeparationOutcome::Separated {
-                    evaluations: ev.evaluations,
-                }
-            }
+            None => return separated(&ev),
             Some(po) => {
                 if po.load.cmp_f64(target) == Ordering::Greater {
-                    return SeparationOutcome::Separated {
-                        evaluations: ev.evaluations,
-                    };
+                    return separated(&ev);
                 }
                 cps.iter()
                     .position(|c| c.separation == po.separation)
@@ -572,6 +624,11 @@ pub fn solve_separation_from(
         // A piece falls from its left end to its right end when its right end is
         // a minimum (or there is none and it is the far-left piece).
         let falling = right.is_none_or(|r| r.is_minimum) && left.is_none_or(|l| !l.is_minimum);
+        let end = |p: CriticalPoint| End {
+            h: p.separation,
+            miss: miss_of(target, p.load),
+            at: None,
+        };
         if !falling {
             // Rising pieces run from a minimum to a maximum (or to 0⁻ at +∞): a
             // compressive target cannot lie there, since P̄ < 0 right of the
@@ -580,135 +637,186 @@ pub fn solve_separation_from(
                 let in_range = l.load.cmp_f64(target) != Ordering::Greater
                     && r.load.cmp_f64(target) != Ordering::Less;
                 if in_range {
-                    let a = ev.at(l.separation);
-                    let b = ev.at(r.separation);
-                    return solve_in_bracket(&mut ev, target, b, a);
+                    let start = ev.at(inside(l.separation, r.separation, hint)
+                        .unwrap_or(0.5 * (l.separation + r.separation)));
+                    return newton_root(&mut ev, target, start, Some(end(l)), Some(end(r)), false);
                 }
             }
             continue;
         }
         if below_right && above_left {
-            let hi = match right {
-                Some(r) => ev.at(r.separation),
-                None => ev.at(cps.last().map_or(0.0, |c| c.separation) + 1.0),
-            };
-            let lo = left.map(|l| ev.at(l.separation));
-            return bracket_and_solve(&mut ev, target, hi, lo);
-        }
-    }
-    SeparationOutcome::NotConverged {
-        separation: cps.first().map_or(0.0, |c| c.separation),
-        evaluations: ev.evaluations,
-    }
-}
-
-/// Given hi with P̄(hi) ≤ target on a falling piece (and optionally lo with
-/// P̄(lo) ≥ target), finds lo by stepping left if needed and solves.
-fn bracket_and_solve(
-    ev: &mut Counter,
-    target: f64,
-    hi: Integrals,
-    lo: Option<Integrals>,
-) -> SeparationOutcome {
-    let lo = match lo {
-        Some(lo) => lo,
-        None => {
-            let mut step = 1.0_f64;
-            let mut h = hi.separation;
-            loop {
-                // Newton from hi for a first guess, widened until it brackets.
-                let newton = newton_step(target, &hi).filter(|d| *d > 0.0 && d.is_finite());
-                let width = newton.map_or(step, |d| (1.25 * d).max(step * 1e-3).min(step));
-                h -= width.max(1e-3 * h.abs());
-                let at = ev.at(h);
-                if at.load().cmp_f64(target) != Ordering::Less || ev.evaluations >= MAX_EVALUATIONS
-                {
-                    break at;
+            // Start one unit inside the piece from its right end (a minimum: P̄'
+            // vanishes there), or from its middle when it is narrower.
+            let (lo, hi) = (
+                left.map_or(f64::NEG_INFINITY, |l| l.separation),
+                right.map_or(f64::INFINITY, |r| r.separation),
+            );
+            let start_h = inside(lo, hi, hint).unwrap_or(match (left, right) {
+                (Some(l), Some(r)) if r.separation - l.separation <= 2.0 => {
+                    0.5 * (l.separation + r.separation)
                 }
-                step *= 2.0;
-            }
+                (_, Some(r)) => r.separation - 1.0,
+                (Some(l), None) => l.separation + 1.0,
+                (None, None) => 0.0,
+            });
+            let start = ev.at(start_h);
+            return newton_root(&mut ev, target, start, left.map(end), right.map(end), true);
         }
-    };
-    solve_in_bracket(ev, target, lo, hi)
+    }
+    (
+        SeparationOutcome::NotConverged {
+            separation: cps.first().map_or(0.0, |c| c.separation),
+            evaluations: ev.evaluations,
+        },
+        None,
+    )
 }
 
-/// The root of P̄ = target between `lo` (P̄ ≥ target) and `hi` (P̄ ≤ target) on a
-/// monotone piece (either order of h): safeguarded Newton (in ln P̄ where both
-/// are positive) with bisection, to a few ulps in h.
-fn solve_in_bracket(
+/// The hint when it lies strictly inside (lo, hi) (a piece's ends).
+fn inside(lo: f64, hi: f64, hint: Option<f64>) -> Option<f64> {
+    hint.filter(|h| *h > lo && *h < hi && h.abs() <= super::coefficients::MAX_SEPARATION)
+}
+
+/// One end of the bracket a root search keeps: where, how far its load is from
+/// the target, and the model there when it was evaluated.
+#[derive(Clone, Copy)]
+struct End {
+    h: f64,
+    miss: f64,
+    at: Option<Integrals>,
+}
+
+/// The root of P̄ = target on a monotone piece (falling with h, or rising), from
+/// the evaluated point `start`, with `left` and `right` the known ends of the
+/// bracket (either may be unknown). Newton's method (in ln P̄ where the load and
+/// the target are positive: nearly quadratic in h where P̄ ~ e^{-h²/2}),
+/// safeguarded: a step must stay inside the bracket its iterates build, and a
+/// step longer than half the one before the last is a bisection.
+///
+/// It stops when Newton's step falls below 2 ulps of h (that point is the
+/// root), or, to save the confirming evaluation, one step earlier: once two
+/// Newton steps d_{k-1}, d_k shrink quadratically (|d_k| ≤ |d_{k-1}|/10), the
+/// error after the step d_k is about M d_k² with M ≈ |d_k|/d_{k-1}²; when 16
+/// times that is below the same 2 ulps, the point the step reaches is evaluated
+/// (its areas are needed anyway) and returned. Either way the result is the
+/// root to a few ulps, whatever the start: the hint changes only the cost.
+fn newton_root(
     ev: &mut Counter,
     target: f64,
-    mut lo: Integrals,
-    mut hi: Integrals,
-) -> SeparationOutcome {
-    let mut last_gaps = [f64::INFINITY; 2];
+    start: Integrals,
+    mut left: Option<End>,
+    mut right: Option<End>,
+    falling: bool,
+) -> (SeparationOutcome, Option<Integrals>) {
+    let mut cur = start;
+    // Lengths of the last two steps taken, newest first, and whether the last
+    // one was Newton's.
+    let mut steps = [f64::INFINITY; 2];
+    let mut newton_taken = false;
+    let mut expand = 1.0_f64;
     loop {
-        let (a, b) = (lo.separation, hi.separation);
-        let gap = (b - a).abs();
-        let tol = 2.0 * f64::EPSILON * a.abs().max(b.abs()).max(1.0);
-        let done = |x: &Integrals| x.load().cmp_f64(target) == Ordering::Equal;
-        if gap <= 2.0 * tol || done(&lo) || done(&hi) {
-            let best = if miss(target, &lo) <= miss(target, &hi) {
-                lo
-            } else {
-                hi
+        let contact = |ev: &Counter, at: Integrals| {
+            (
+                SeparationOutcome::Contact {
+                    separation: at.separation,
+                    evaluations: ev.evaluations,
+                },
+                Some(at),
+            )
+        };
+        let x = cur.separation;
+        let order = cur.load().cmp_f64(target);
+        if order == Ordering::Equal {
+            return contact(ev, cur);
+        }
+        let here = End {
+            h: x,
+            miss: miss(target, &cur),
+            at: Some(cur),
+        };
+        // Above the target on a falling piece: the root lies to the right.
+        if (order == Ordering::Greater) == falling {
+            left = Some(here);
+        } else {
+            right = Some(here);
+        }
+        let lo = left.map_or(f64::NEG_INFINITY, |e| e.h);
+        let hi = right.map_or(f64::INFINITY, |e| e.h);
+        let tol = 2.0 * f64::EPSILON * x.abs().max(1.0);
+        let bracketed = lo.is_finite() && hi.is_finite();
+        if bracketed && hi - lo <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(1.0) {
+            // The bracket is a few ulps wide: its better end is the root.
+            let best = match (left, right) {
+                (Some(l), Some(r)) if l.miss <= r.miss => l,
+                (_, Some(r)) => r,
+                (Some(l), None) => l,
+                (None, None) => here,
             };
-            return SeparationOutcome::Contact {
-                separation: best.separation,
-                evaluations: ev.evaluations,
-            };
+            let at = best.at.unwrap_or_else(|| ev.at(best.h));
+            return contact(ev, at);
         }
         if ev.evaluations >= MAX_EVALUATIONS {
-            return SeparationOutcome::NotConverged {
-                separation: 0.5 * (a + b),
-                evaluations: ev.evaluations,
-            };
+            return (
+                SeparationOutcome::NotConverged {
+                    separation: x,
+                    evaluations: ev.evaluations,
+                },
+                None,
+            );
         }
-        let mid = 0.5 * (a + b);
-        let slow = gap > 0.5 * last_gaps[1];
-        last_gaps = [gap, last_gaps[0]];
-        let from = if miss(target, &lo) <= miss(target, &hi) {
-            &lo
-        } else {
-            &hi
-        };
-        let (min, max) = (a.min(b), a.max(b));
-        let x = match newton_step(target, from) {
-            Some(d) if !slow => {
-                let x = from.separation - d;
-                // Brent's rule: move at least `tol` off the current end.
-                if (x - from.separation).abs() < tol {
-                    from.separation + tol * (mid - from.separation).signum()
-                } else {
-                    x
-                }
+        let step = newton_step(target, &cur);
+        if step.is_some_and(|d| d.abs() <= tol) {
+            return contact(ev, cur);
+        }
+        let newton = step
+            .map(|d| x - d)
+            .filter(|n| n.is_finite() && *n > lo && *n < hi);
+        // Not halving over two steps (far from the root, or near a double root
+        // where Newton is linear): bisect what is known.
+        let slow = bracketed && newton.is_some_and(|n| (n - x).abs() > 0.5 * steps[1]);
+        let reach = 4.0 * x.abs().max(1.0);
+        let (next, is_newton) = match newton {
+            Some(n) if !slow && (bracketed || (n - x).abs() <= reach) => (n, true),
+            // One-sided and far: at most `reach` toward the root.
+            Some(n) if !slow => (x + reach.copysign(n - x), false),
+            _ if bracketed => (0.5 * (lo + hi), false),
+            _ => {
+                // Newton points away from the root (past the pull-off minimum,
+                // where P̄ rises) or is undefined: widen from the known end.
+                let e = expand.max(0.25 * x.abs());
+                expand *= 2.0;
+                (if lo.is_finite() { lo + e } else { hi - e }, false)
             }
-            _ => mid,
         };
-        let x = if x > min && x < max { x } else { mid };
-        if x <= min || x >= max {
-            let best = if miss(target, &lo) <= miss(target, &hi) {
-                lo
-            } else {
-                hi
+        if !(next > lo && next < hi) {
+            // Rounding put the midpoint on an end: the bracket is as narrow as h allows.
+            let best = match (left, right) {
+                (Some(l), Some(r)) if l.miss <= r.miss => l,
+                (_, Some(r)) => r,
+                (Some(l), None) => l,
+                (None, None) => here,
             };
-            return SeparationOutcome::Contact {
-                separation: best.separation,
-                evaluations: ev.evaluations,
-            };
+            let at = best.at.unwrap_or_else(|| ev.at(best.h));
+            return contact(ev, at);
         }
-        let at = ev.at(x);
-        if at.load().cmp_f64(target) == Ordering::Less {
-            hi = at;
-        } else {
-            lo = at;
+        // Quadratic convergence: the step's error is about |d|³/d_prev² (see above).
+        let length = (next - x).abs();
+        let accept = is_newton
+            && newton_taken
+            && length <= 0.1 * steps[0]
+            && 16.0 * length * length * length <= tol * steps[0] * steps[0];
+        let at = ev.at(next);
+        if accept {
+            return contact(ev, at);
         }
+        steps = [length, steps[0]];
+        newton_taken = is_newton;
+        cur = at;
     }
 }
 
-/// How far a point's load is from the target (in ln terms when both are positive).
-fn miss(target: f64, at: &Integrals) -> f64 {
-    let l = at.load();
+/// How far a load is from the target (in ln terms when both are positive).
+fn miss_of(target: f64, l: Scaled) -> f64 {
     if target > 0.0 && l.signum() > 0.0 {
         (l.ln_abs() - target.ln()).abs()
     } else {
@@ -716,18 +824,39 @@ fn miss(target: f64, at: &Integrals) -> f64 {
     }
 }
 
-/// Newton's step `(P̄ - T)/P̄'` (in ln P̄ when both are positive, which is nearly
-/// quadratic in h where P̄ ~ e^{-h²/2}); None where it is meaningless.
+/// How far a point's load is from the target (in ln terms when both are positive).
+fn miss(target: f64, at: &Integrals) -> f64 {
+    miss_of(target, at.load())
+}
+
+/// The step to the root of P̄ = T from one point: Halley's (f/f')/(1 - f f''/(2f'²))
+/// for f = ln P̄ - ln T where both are positive (nearly quadratic in h where
+/// P̄ ~ e^{-h²/2}), else for f = P̄ - T; with f'' from P̄'', which every
+/// evaluation carries, it converges cubically. Newton's f/f' where the correction
+/// is large (|f f''/f'²| > 1, far from the root); None where the step is
+/// meaningless.
 fn newton_step(target: f64, at: &Integrals) -> Option<f64> {
     let load = at.load();
     let slope = at.dload_dh();
     if slope.mantissa == 0.0 {
         return None;
     }
-    let step = if target > 0.0 && load.signum() > 0.0 {
-        (load.ln_abs() - target.ln()) / slope.ratio(load)
+    let curvature = at.d2load_dh2();
+    let (newton, correction) = if target > 0.0 && load.signum() > 0.0 {
+        // f' = P̄'/P̄, f'' = P̄''/P̄ - f'².
+        let f = load.ln_abs() - target.ln();
+        let d1 = slope.ratio(load);
+        let d2 = curvature.ratio(load) - d1 * d1;
+        (f / d1, f * d2 / (d1 * d1))
     } else {
-        load.minus(Scaled::from_f64(target)).ratio(slope)
+        let f = load.minus(Scaled::from_f64(target));
+        let newton = f.ratio(slope);
+        (newton, newton * curvature.ratio(slope))
+    };
+    let step = if correction.abs() <= 1.0 {
+        newton / (1.0 - 0.5 * correction)
+    } else {
+        newton
     };
     step.is_finite().then_some(step)
 }

@@ -10,7 +10,7 @@ use super::law::{AdhesionModel, AsperityLaw, AttractionKind};
 use super::scaled::Scaled;
 use super::scene::{Scene, WearArea};
 use super::separation::{
-    landscape_from, pull_off_of, solve_separation_from, PullOff, SeparationOutcome,
+    landscape_from, pull_off_of, solve_separation_at, PullOff, SeparationOutcome,
 };
 use super::special::SQRT_TWO_PI;
 use super::warnings::{self, Note, Warning};
@@ -439,7 +439,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
             Some(_) => {}
         }
     }
-    let outcome = solve_separation_from(&model, target, land.as_ref(), hints.separation);
+    let (outcome, found) = solve_separation_at(&model, target, land.as_ref(), hints.separation);
     let (status, h) = match outcome {
         SeparationOutcome::Contact {
             separation,
@@ -498,7 +498,13 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
     };
 
     let zero = Scaled::ZERO;
-    let at = h.map(|h| model.at(h));
+    // The model at the separation: the solve's last evaluation (for `Contact`),
+    // else evaluated here (a `NotConverged` estimate).
+    let at = h.map(|h| {
+        found
+            .filter(|a| a.separation == h)
+            .unwrap_or_else(|| model.at(h))
+    });
     let area = at.map_or(zero, |a| a.area());
     let plastic_area = at.map_or(zero, |a| a.plastic_area());
     let elastic_area = at.map_or(zero, |a| a.elastic_area());
