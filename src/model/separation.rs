@@ -65,8 +65,9 @@
 //!   at the returned point is the caller's, so the areas cost nothing more.
 //! - *Pull-off, J ≥ 0*: Newton on P̄' (on the balance of the two shares under DMT;
 //!   on h·P̄'e^{h²/2}, nearly linear at large h, under JKR beyond h = 1),
-//!   safeguarded the same way, stopping on the same two rules; an early stop also
-//!   needs the load at the last point to be P̄_min to within ε (½|P̄''| d² ≤ ε|P̄|).
+//!   safeguarded the same way, stopping on the same two rules; an early stop
+//!   takes P̄_min = P̄ - P̄'²/(2P̄'') at the last point (exact to O(P̄'''δ³), required
+//!   below ε|P̄|; see `single_minimum`).
 //! - *Other loads and J < 0*: the sign scan above and the pieces' roots by the
 //!   same safeguarded Halley iteration inside the pieces' known ends, from the
 //!   hint when it lies inside the piece.
@@ -76,10 +77,10 @@
 //! 1e-14 relative against cold starts on the shipped scenes, DMT variants,
 //! extremes and 250 pairs of nearby study designs, and pins the counts). Measured
 //! (tests/search_cost.rs's table): the hub costs 9 evaluations cold under JKR
-//! (pull-off 5, solve 4, areas included), 11 under DMT with van der Waals (6 + 5),
-//! 10 with Dugdale, and 2 + 2 from the hints of a design 1e-6 away; the
-//! five-variable study's designs 3.7 on average warm from 1e-6 away, 5.9 from
-//! 1e-2 away, 9.1 cold.
+//! (pull-off 5, solve 4, areas included), 10 under DMT with either attraction
+//! (5 + 5, 6 + 4), and 2 + 2 from the hints of a design 1e-6 away; the
+//! five-variable study's designs 3.6 on average warm from 1e-6 away, 5.5 from
+//! 1e-2 away, 8.8 cold.
 
 use std::cmp::Ordering;
 
@@ -222,11 +223,11 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         let start = hint
             .filter(|h| h.abs() <= super::coefficients::MAX_SEPARATION)
             .unwrap_or(guess);
-        if let Some((separation, at)) = single_minimum(&mut ev, start) {
+        if let Some((separation, load)) = single_minimum(&mut ev, start) {
             return Landscape {
                 critical_points: vec![CriticalPoint {
                     separation,
-                    load: at.load(),
+                    load,
                     is_minimum: true,
                 }],
                 evaluations: ev.evaluations,
@@ -315,11 +316,14 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
 /// minimum), or one evaluation earlier once two Newton steps shrink
 /// quadratically (|d_k| ≤ |d_{k-1}|/10): the step d_k then leaves an error of
 /// about M d_k², M ≈ |d_k|/d_{k-1}², and when 16 times that is below 4 ulps the
-/// step's end is the separation returned, with the load at the point it starts
-/// from. That load is P̄_min to within ½|P̄''| d_k², which must be below ε|P̄|
-/// (a minimum's value moves only to second order): the force to an ulp, the
-/// separation to a few, whatever the start.
-fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Integrals)> {
+/// step's end is the separation returned. Its load is then P̄ - c at the point
+/// the step starts from, c = P̄'²/(2P̄''): with δ the distance to the minimum,
+/// P̄ = P̄_min + P̄''δ²/2 + O(P̄'''δ³) and P̄'²/(2P̄'') = P̄''δ²/2 + O(P̄'''δ³). The
+/// remainder is ~(2c/|P̄|)^{3/2}|P̄| where P̄ varies on its own length scale (a
+/// Gaussian tail: P̄'' ~ h²P̄, P̄''' ~ h³P̄), below ε|P̄| when |c| ≤ 1e-11 |P̄|, which
+/// the early stop requires. The force to an ulp, the separation to a few,
+/// whatever the start.
+fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Scaled)> {
     let mut at = ev.at(start);
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
     // The length of the last step, when it was Newton's.
@@ -328,7 +332,7 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Integrals)> {
         let h = at.separation;
         let g = slope(&at);
         if g == 0.0 {
-            return Some((h, at));
+            return Some((h, at.load()));
         }
         if g < 0.0 {
             lo = lo.max(h);
@@ -367,17 +371,25 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Integrals)> {
         let d = (newton - h).abs();
         if curvature_ok && d <= tol {
             // Converged: the step is below the spacing of doubles at h.
-            return Some((h, at));
+            return Some((h, at.load()));
         }
         if curvature_ok
             && newton > lo
             && newton < hi
             && d <= 0.1 * last_newton
             && 16.0 * d * d * d <= tol * last_newton * last_newton
-            && 0.5 * (at.d2load_dh2().ratio(at.load()) * d * d).abs() <= f64::EPSILON
         {
-            // Quadratic convergence (see above): the step's end is the minimum.
-            return Some((newton, at));
+            // Quadratic convergence (see above): the step's end is the minimum,
+            // and its load P̄ - P̄'²/(2P̄'') to O(P̄''' δ³).
+            let load = at.load();
+            let (s1, s2) = (at.dload_dh(), at.d2load_dh2());
+            let correction = Scaled::new(
+                0.5 * s1.mantissa * s1.mantissa / s2.mantissa,
+                2.0 * s1.exponent - s2.exponent,
+            );
+            if s2.mantissa > 0.0 && correction.ratio(load).abs() <= 1e-11 {
+                return Some((newton, load.minus(correction)));
+            }
         }
         // Under DMT a far start (the attraction's reach) can see a nearly flat
         // slope and propose a jump far past the minimum (h = 21 → −2e15 for
@@ -404,10 +416,10 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Integrals)> {
             h - (0.5 * h.abs()).max(1.0)
         };
         if (next - h).abs() <= 4.0 * f64::EPSILON * h.abs().max(1.0) {
-            return Some((h, at));
+            return Some((h, at.load()));
         }
         if lo.is_finite() && hi.is_finite() && hi - lo <= 4.0 * f64::EPSILON * hi.abs().max(1.0) {
-            return Some((h, at));
+            return Some((h, at.load()));
         }
         last_newton = if next == newton {
             (next - h).abs()
