@@ -208,10 +208,11 @@ fn cli_ranks_the_shipped_study() {
     }
     assert_eq!(v["best"], rows[0]["material"]);
     // A DMT ranking: each row's pull-off is the DMT one (the constraint binds at 1 µN or
-    // holds below it for the ranked films).
+    // holds below it for the ranked films), to the solver's feasibility tolerance 1e-7
+    // relative (`optimal` allows a row that far over its limit).
     for row in rows.iter().filter(|r| r["rank"].is_u64()) {
         let pull_off = row["pull_off_force"].as_f64().unwrap();
-        assert!(pull_off <= 1e-6 * (1.0 + 1e-9), "{row}");
+        assert!(pull_off <= 1e-6 * (1.0 + 1e-7), "{row}");
     }
     assert_eq!(rows[4]["material"], "nickel");
     assert_eq!(rows[4]["status"], "infeasible");

@@ -218,5 +218,73 @@ fn tolerance_is_honoured() {
     );
     assert_status_matches_residual(&loose, 1e-3);
     assert_status_matches_residual(&tight, 1e-10);
-    assert!(loose.evaluations < tight.evaluations);
+    assert!(
+        loose.evaluations < tight.evaluations,
+        "{} evaluations at 1e-3, {} at 1e-10",
+        loose.evaluations,
+        tight.evaluations
+    );
+}
+
+/// f = e^{10 (x₀ - 1)} + (x₁ - 0.3)² on [0, 1]²: the slope in x₀ fades
+/// exponentially towards its lower bound, where the minimum lies (closed
+/// form: f* = e^-10 at (0, 0.3), since ∂f/∂x₀ > 0 everywhere). A Newton-like
+/// step there is 1/10 whatever x₀ is, so from x₀ = 0.9 the SQP used to crawl
+/// towards the bound, each step reducing f about twice as much as its model
+/// predicted. Extended steps (`extend_ratio`) reach the bound in fewer
+/// evaluations; the result is the same optimum either way.
+#[test]
+fn a_fading_slope_towards_a_bound_does_not_crawl() {
+    use wearopt::optimize::{minimize, NonlinearProgram, SqpSettings, SqpStatus};
+    struct Fading;
+    impl NonlinearProgram for Fading {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn bounds(&self) -> (Vec<f64>, Vec<f64>) {
+            (vec![0.0; 2], vec![1.0; 2])
+        }
+        fn objective(&self, x: &[f64]) -> Option<f64> {
+            Some((10.0 * (x[0] - 1.0)).exp() + (x[1] - 0.3).powi(2))
+        }
+        fn constraints(&self, x: &[f64]) -> Option<Vec<f64>> {
+            Some(vec![x[0] + x[1] - 1.5])
+        }
+    }
+    let x0 = [0.9, 0.8];
+    let extended = minimize(&Fading, &x0, &SqpSettings::default());
+    let plain = minimize(
+        &Fading,
+        &x0,
+        &SqpSettings {
+            extend_ratio: f64::INFINITY,
+            ..SqpSettings::default()
+        },
+    );
+    for r in [&extended, &plain] {
+        assert_eq!(
+            r.status,
+            SqpStatus::Optimal,
+            "{:?} f = {} KKT {} after {} iterations, {} evaluations",
+            r.x,
+            r.objective,
+            r.kkt_residual,
+            r.iterations,
+            r.evaluations
+        );
+        let fstar = (-10.0f64).exp();
+        assert!(
+            (r.objective - fstar).abs() <= 1e-8 * fstar,
+            "{}",
+            r.objective
+        );
+        assert_eq!(r.x[0], 0.0);
+        assert!((r.x[1] - 0.3).abs() <= 1e-6, "{:?}", r.x);
+    }
+    assert!(
+        extended.evaluations < plain.evaluations,
+        "{} extended vs {} plain evaluations",
+        extended.evaluations,
+        plain.evaluations
+    );
 }

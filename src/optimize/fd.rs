@@ -1,8 +1,11 @@
 //! Finite-difference gradients of a [`NonlinearProgram`], with error estimates.
 //!
 //! Step rule: for variable i, `h = fd_step · max(|x_i|, scale_i)` (the
-//! problem's own scale, never the width of the box). Two accuracies:
+//! problem's own scale, never the width of the box). Three accuracies:
 //!
+//! * **forward** (one evaluation per variable): `(f(x+h) - f(x))/h` (error
+//!   ~ f″h/2, about 1e-4 relative at the default step): enough to steer the
+//!   first steps from a start far from a solution;
 //! * **central** (two evaluations per variable): `D_h`, the central difference
 //!   with h (error ~ f‴h²/6, about 1e-9 relative at the default step): what a
 //!   step far from a solution needs;
@@ -15,7 +18,8 @@
 //! a scale ℓ; the estimate reported is `|D_h - D_2h|/3 · (fd_step/0.01)² +
 //! 3 η (1 + |f|)/h` with η = 1e-13 for the evaluation noise. Where a bound is
 //! closer than 2h the stencil moves inside the box (one-sided second-order
-//! differences `(-3f₀ + 4f₁ - f₂)/(2h)` with h and 2h); where a stencil point
+//! differences `(-3f₀ + 4f₁ - f₂)/(2h)` with h and 2h; the forward difference
+//! then points into the box); where a stencil point
 //! cannot be evaluated the other side, then halved steps, are tried. Every
 //! stencil point lies inside the bounds. Evaluations run in parallel (rayon);
 //! the result does not depend on the thread count.
@@ -26,6 +30,28 @@ use super::program::{NonlinearProgram, Values};
 
 /// Accuracy of one evaluation relative to 1 + |value|, used in the estimate.
 pub const EVALUATION_NOISE: f64 = 1e-13;
+
+/// How many stencil points per variable a gradient uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Accuracy {
+    /// Forward (or, on a bound, backward) differences: one point per variable.
+    Forward,
+    /// Central (or one-sided second-order) differences: two points.
+    Central,
+    /// Richardson-extrapolated central differences: four points.
+    Richardson,
+}
+
+impl Accuracy {
+    /// Evaluations per variable.
+    pub fn points(self) -> usize {
+        match self {
+            Accuracy::Forward => 1,
+            Accuracy::Central => 2,
+            Accuracy::Richardson => 4,
+        }
+    }
+}
 
 /// Gradients of the objective and every row at one point.
 #[derive(Debug, Clone, PartialEq)]
@@ -38,12 +64,11 @@ pub struct Gradients {
     pub error: f64,
     /// Evaluations spent.
     pub evaluations: usize,
-    /// Richardson-extrapolated (four points per variable), not plain central
-    /// differences (two).
-    pub richardson: bool,
+    /// The accuracy they were computed with.
+    pub accuracy: Accuracy,
     /// The values at each variable's preferred stencil when it was used
-    /// (None where a fallback stencil was needed): Richardson gradients at the
-    /// same point reuse the first two instead of evaluating them again.
+    /// (None where a fallback stencil was needed): more accurate gradients
+    /// at the same point reuse these points instead of evaluating them again.
     pub stencils: Vec<Option<Vec<Values>>>,
 }
 
@@ -62,9 +87,9 @@ fn stencil(x: f64, lo: f64, hi: f64, h: f64, flip: bool) -> Option<[f64; 4]> {
 }
 
 /// Gradients at `x` (whose values `at` are known), with steps scaled by
-/// `fd_step`, Richardson-extrapolated when `richardson` (else plain central
-/// or one-sided second-order differences with h: the first two points of the
-/// same stencil). None when no stencil of any tried step can be evaluated.
+/// `fd_step`, to the `accuracy` asked (forward, central or one-sided
+/// second-order, and Richardson differences use the first one, two and four
+/// points of the same stencil). None when no stencil of any tried step can be evaluated.
 /// `same_point`: gradients computed earlier at this very x (same `at`, step
 /// and bounds), whose stencil values are reused rather than evaluated again
 /// (evaluations are deterministic, so the result is the same either way).
@@ -76,10 +101,10 @@ pub(crate) fn gradients<P: NonlinearProgram + Sync + ?Sized>(
     fd_step: f64,
     scale: &[f64],
     bounds: &(Vec<f64>, Vec<f64>),
-    richardson: bool,
+    accuracy: Accuracy,
     same_point: Option<&Gradients>,
 ) -> Option<Gradients> {
-    let used = if richardson { 4 } else { 2 };
+    let used = accuracy.points();
     let n = x.len();
     let m = at.constraints.len();
     let mut objective = vec![0.0; n];
@@ -168,7 +193,12 @@ pub(crate) fn gradients<P: NonlinearProgram + Sync + ?Sized>(
         let component = |get: &dyn Fn(&Values) -> f64| -> (f64, f64) {
             let f0 = get(at);
             let noise = 3.0 * EVALUATION_NOISE * (1.0 + f0.abs()) / h;
-            if !richardson {
+            if accuracy == Accuracy::Forward {
+                // The first stencil point is x + h, or x ∓ h inside the box.
+                let d = sign * (get(&pts[0]) - f0) / h;
+                return (d, noise);
+            }
+            if accuracy == Accuracy::Central {
                 let d_h = if centred {
                     (get(&pts[0]) - get(&pts[1])) / (2.0 * h)
                 } else {
@@ -211,7 +241,7 @@ pub(crate) fn gradients<P: NonlinearProgram + Sync + ?Sized>(
         rows,
         error,
         evaluations,
-        richardson,
+        accuracy,
         stencils,
     })
 }
@@ -250,11 +280,31 @@ mod tests {
         for x in [[0.7, -0.3], [1.9999, 0.4]] {
             let at = p.evaluate(&x, &[]).unwrap();
             let scale = [1.0, 1.0];
-            let central = gradients(&p, &x, &at, 1e-4, &scale, &bounds, false, None).unwrap();
+            let central =
+                gradients(&p, &x, &at, 1e-4, &scale, &bounds, Accuracy::Central, None).unwrap();
             assert_eq!(central.evaluations, 4);
-            let fresh = gradients(&p, &x, &at, 1e-4, &scale, &bounds, true, None).unwrap();
-            let reused =
-                gradients(&p, &x, &at, 1e-4, &scale, &bounds, true, Some(&central)).unwrap();
+            let fresh = gradients(
+                &p,
+                &x,
+                &at,
+                1e-4,
+                &scale,
+                &bounds,
+                Accuracy::Richardson,
+                None,
+            )
+            .unwrap();
+            let reused = gradients(
+                &p,
+                &x,
+                &at,
+                1e-4,
+                &scale,
+                &bounds,
+                Accuracy::Richardson,
+                Some(&central),
+            )
+            .unwrap();
             assert_eq!(fresh.evaluations, 8);
             assert_eq!(reused.evaluations, 4);
             assert_eq!(fresh.objective, reused.objective);
@@ -271,6 +321,70 @@ mod tests {
                     assert!((a - b).abs() <= reused.error.max(1e-12), "{e:?} {g:?}");
                 }
             }
+        }
+    }
+
+    /// Forward differences cost one evaluation per variable and are within
+    /// their truncation bound h/2 · max|∂²/∂x_i²| (over [x, x ± h]; the
+    /// closed-form second derivatives 2x₁ and eˣ¹ of f, 0 of g₁ and −sin x₀ of
+    /// g₂ are bounded by their values at the stencil's ends) of the closed
+    /// form; at 1.9999 the difference for x₀ points into the box. Central
+    /// gradients at the same point reuse the forward point: the very numbers
+    /// of a fresh central evaluation, for one more evaluation per variable.
+    #[test]
+    fn forward_differences_and_their_reuse() {
+        let p = Smooth;
+        let bounds = p.bounds();
+        let h = 1e-4;
+        for x in [[0.7, -0.3], [1.9999, 0.4]] {
+            let at = p.evaluate(&x, &[]).unwrap();
+            let scale = [1.0, 1.0];
+            let forward =
+                gradients(&p, &x, &at, h, &scale, &bounds, Accuracy::Forward, None).unwrap();
+            assert_eq!(forward.evaluations, 2);
+            // Steps h·max(|x_i|, 1).
+            let hs = [h * x[0].abs().max(1.0), h * x[1].abs().max(1.0)];
+            let curvature = |i: usize, k: usize| -> f64 {
+                // Largest |second derivative| of component k along x_i near x.
+                let ends = [x[i] - hs[i], x[i] + hs[i]];
+                ends.iter()
+                    .map(|&e| match (k, i) {
+                        (0, 0) => 2.0 * x[1].abs(),
+                        (0, _) => e.exp(),
+                        (1, _) => 0.0,
+                        (_, 0) => e.sin().abs(),
+                        _ => 0.0,
+                    })
+                    .fold(0.0, f64::max)
+            };
+            let exact = [
+                vec![2.0 * x[0] * x[1], x[0] * x[0] + x[1].exp()],
+                vec![x[1], x[0]],
+                vec![x[0].cos(), 0.0],
+            ];
+            let got = [&forward.objective, &forward.rows[0], &forward.rows[1]];
+            for (k, (e, g)) in exact.iter().zip(got).enumerate() {
+                for i in 0..2 {
+                    let bound = 0.5 * hs[i] * curvature(i, k) * 1.001 + 1e-11;
+                    assert!((e[i] - g[i]).abs() <= bound, "{k} {i}: {e:?} {g:?} {bound}");
+                }
+            }
+            let fresh =
+                gradients(&p, &x, &at, h, &scale, &bounds, Accuracy::Central, None).unwrap();
+            let reused = gradients(
+                &p,
+                &x,
+                &at,
+                h,
+                &scale,
+                &bounds,
+                Accuracy::Central,
+                Some(&forward),
+            )
+            .unwrap();
+            assert_eq!(reused.evaluations, 2);
+            assert_eq!(fresh.objective, reused.objective);
+            assert_eq!(fresh.rows, reused.rows);
         }
     }
 }

@@ -703,6 +703,11 @@ struct Slot {
     solved: Option<Solved>,
     warm_started: bool,
     evaluations: usize,
+    /// The designs this point was solved from with a single start (the warm
+    /// start, then the refinement's neighbours). A solve is deterministic: the
+    /// same target from the same design gives the same result, so none is
+    /// solved twice.
+    tried: Vec<Vec<f64>>,
 }
 
 /// `a` is better than `b` by more than the relative tolerance: feasible where
@@ -720,38 +725,34 @@ fn improves(a: &Solved, b: Option<&Solved>, tolerance: f64) -> bool {
 /// Re-solves the ε-points until none improves (at most [`MAX_REFINE_ROUNDS`]
 /// rounds): each point from both neighbours' designs; the better design is
 /// kept. (Every point already holds the result of the study's multistart,
-/// see [`Sweep::solve_point`].) A pair whose designs did not change in the
-/// last round is not solved again: the same solve would give the same
-/// design. Each round reads the previous round's designs only, so the result
+/// see [`Sweep::solve_point`].) A point is never solved again from a design
+/// it was already solved from ([`Slot::tried`]): the same solve would give
+/// the same design. Each round reads the previous round's designs only, so the result
 /// does not depend on the thread count.
 fn refine(sweep: &Sweep, slots: &mut [Slot]) {
     let tolerance = sweep.study.settings.tolerance.max(WEAR_TOLERANCE * 1e-3);
-    let mut changed = vec![true; slots.len()];
     for _ in 0..MAX_REFINE_ROUNDS {
-        let designs: Vec<Option<Scene>> = slots
+        let designs: Vec<Option<&Solved>> = slots
             .iter()
-            .map(|s| {
-                s.solved
-                    .as_ref()
-                    .filter(|r| r.feasible && r.log10 > -300.0)
-                    .map(|r| r.scene.clone())
-            })
+            .map(|s| s.solved.as_ref().filter(|r| r.feasible && r.log10 > -300.0))
             .collect();
-        let updates: Vec<(Option<Solved>, usize)> = (0..slots.len())
+        let updates: Vec<(Option<Solved>, usize, Vec<Vec<f64>>)> = (0..slots.len())
             .into_par_iter()
             .map(|i| {
                 let current = slots[i].solved.as_ref();
                 let mut best: Option<Solved> = None;
                 let mut evaluations = 0;
+                let mut tried = Vec::new();
                 let neighbours = [i.checked_sub(1), Some(i + 1)];
                 for k in neighbours.into_iter().flatten() {
-                    let Some(Some(scene)) = designs.get(k) else {
+                    let Some(Some(from)) = designs.get(k) else {
                         continue;
                     };
-                    if !changed[i] && !changed[k] {
+                    if slots[i].tried.contains(&from.design) || tried.contains(&from.design) {
                         continue;
                     }
-                    let r = sweep.solve(slots[i].target, scene, &sweep.warm_settings);
+                    tried.push(from.design.clone());
+                    let r = sweep.solve(slots[i].target, &from.scene, &sweep.warm_settings);
                     evaluations += r.as_ref().map_or(0, |r| r.evaluations);
                     if let Some(r) = r {
                         if improves(&r, best.as_ref().or(current), tolerance) {
@@ -759,13 +760,13 @@ fn refine(sweep: &Sweep, slots: &mut [Slot]) {
                         }
                     }
                 }
-                (best, evaluations)
+                (best, evaluations, tried)
             })
             .collect();
         let mut improved = false;
-        for ((slot, (best, evaluations)), c) in slots.iter_mut().zip(updates).zip(&mut changed) {
+        for (slot, (best, evaluations, tried)) in slots.iter_mut().zip(updates) {
             slot.evaluations += evaluations;
-            *c = best.is_some();
+            slot.tried.extend(tried);
             if let Some(b) = best {
                 slot.solved = Some(b);
                 slot.warm_started = false;
@@ -935,6 +936,7 @@ fn sweep_waves(
                     solved,
                     warm_started,
                     evaluations,
+                    tried: warm.map(|w| sweep.design_at(w)).into_iter().collect(),
                 }
             })
             .collect();

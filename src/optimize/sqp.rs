@@ -17,7 +17,7 @@ use argmin::core::{
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-use super::fd::{gradients, Gradients};
+use super::fd::{gradients, Accuracy, Gradients};
 use super::multipliers::{kkt, least_squares, Kkt, KktData};
 use super::program::{NonlinearProgram, Values};
 use super::qp::{self, Subproblem};
@@ -64,12 +64,18 @@ pub struct SqpSettings {
     pub penalty_max: f64,
     /// Finite-difference step relative to max(|x_i|, scale_i) (default 1e-4).
     pub fd_step: f64,
-    /// Gradients are plain central differences (two evaluations per variable)
+    /// Gradients are forward differences (one evaluation per variable) until
+    /// the KKT residual with least-squares multipliers falls to this; from
+    /// then on they are central (default 1e-3: a forward difference's error,
+    /// ~fd_step/2 times the curvature, is then still about a tenth of what the
+    /// residual measures; 0 or less: never forward).
+    pub central_below: f64,
+    /// Gradients are central differences (two evaluations per variable)
     /// until the KKT residual with least-squares multipliers falls to this or
-    /// to 100 × `tolerance`, whichever is larger; from then on, and at the
-    /// reported point, they are Richardson-extrapolated (four per variable),
-    /// accurate enough for the KKT test (default 1e-4; 0 or less: always
-    /// Richardson).
+    /// to 100 × `tolerance`, whichever is larger (but not above
+    /// `central_below`); from then on, and at the reported point, they are
+    /// Richardson-extrapolated (four per variable), accurate enough for the
+    /// KKT test (default 1e-4; 0 or less: always Richardson).
     pub richardson_below: f64,
     /// A step this short relative to max(1, ‖x‖∞) is no step (default 1e-14).
     pub step_tolerance: f64,
@@ -85,9 +91,30 @@ pub struct SqpSettings {
     /// off a bound that is active at the optimum crawls towards it in steps the
     /// subproblem keeps tiny while the KKT test counts the bound as free).
     pub bound_snap: f64,
+    /// An accepted step that stayed inside the trust region and reduced the
+    /// merit at least this many times as much as the model predicted (the
+    /// function is flatter than the model, as where a slope fades
+    /// exponentially towards a bound) is extended: doubled, up to the trust
+    /// radius or the box, while each doubling lowers the merit further, one
+    /// evaluation per doubling (default 1.25; infinite: never).
+    pub extend_ratio: f64,
 }
 
 impl SqpSettings {
+    /// The KKT residual below which gradients are Richardson-extrapolated:
+    /// `richardson_below` or 100 × `tolerance`, whichever is larger, but not
+    /// above the end of the forward phase (`central_below`, when there is
+    /// one): a loose tolerance is met with the cheap gradients of the approach
+    /// and checked with accurate ones.
+    pub(crate) fn richardson_threshold(&self) -> f64 {
+        let near = self.richardson_below.max(100.0 * self.tolerance);
+        if self.central_below > 0.0 {
+            near.min(self.central_below.max(self.richardson_below))
+        } else {
+            near
+        }
+    }
+
     /// The test for `optimal`: KKT residual ≤ `tolerance` and no row or bound
     /// violated by more than `feasibility_tolerance`.
     pub(crate) fn met(&self, k: &Kkt) -> bool {
@@ -115,11 +142,13 @@ impl Default for SqpSettings {
             penalty_growth: 10.0,
             penalty_max: 1e10,
             fd_step: 1e-4,
+            central_below: 1e-3,
             richardson_below: 1e-4,
             step_tolerance: 1e-14,
             merit_noise: 1e-12,
             active_tolerances: vec![1e-10, 1e-7, 1e-4],
             bound_snap: 1e-6,
+            extend_ratio: 1.25,
         }
     }
 }
@@ -236,6 +265,9 @@ pub(crate) struct Sqp {
     penalty: f64,
     qp_multipliers: Vec<f64>,
     kkt: Option<(Kkt, Vec<f64>)>,
+    /// The least-squares estimate at the current values and gradients, once
+    /// computed (it is asked for more than once per iteration).
+    least: Option<(Kkt, Vec<f64>)>,
     evaluations: usize,
     rejections: usize,
     started: Option<Instant>,
@@ -245,7 +277,7 @@ pub(crate) struct Sqp {
     last_step: f64,
     last_ratio: f64,
     last_kkt: f64,
-    richardson: bool,
+    accuracy: Accuracy,
 }
 
 fn norm2(v: &[f64]) -> f64 {
@@ -272,6 +304,7 @@ impl Sqp {
             penalty: settings.penalty_initial,
             qp_multipliers: Vec::new(),
             kkt: None,
+            least: None,
             evaluations: 0,
             rejections: 0,
             started: None,
@@ -281,7 +314,13 @@ impl Sqp {
             last_step: f64::NAN,
             last_ratio: f64::NAN,
             last_kkt: f64::NAN,
-            richardson: settings.richardson_below <= 0.0,
+            accuracy: if settings.richardson_below <= 0.0 {
+                Accuracy::Richardson
+            } else if settings.central_below <= 0.0 {
+                Accuracy::Central
+            } else {
+                Accuracy::Forward
+            },
         }
     }
 
@@ -310,10 +349,10 @@ impl Sqp {
             self.settings.fd_step,
             &self.scale,
             &(self.lower.clone(), self.upper.clone()),
-            self.richardson,
+            self.accuracy,
             same_point,
         );
-        let per_variable = if self.richardson { 4 } else { 2 };
+        let per_variable = self.accuracy.points();
         self.evaluations += g.as_ref().map_or(per_variable * x.len(), |g| g.evaluations);
         g.filter(|g| {
             g.objective.iter().all(|d| d.is_finite())
@@ -321,28 +360,40 @@ impl Sqp {
         })
     }
 
-    /// Switches to Richardson gradients for good, recomputing them at the
-    /// current point, once the KKT residual with least-squares multipliers is
-    /// at most `richardson_below` (or 100 × `tolerance`), or when `always`.
+    /// Makes the gradients more accurate for good, recomputing them at the
+    /// current point (reusing the stencil points already evaluated there):
+    /// Richardson once the KKT residual with least-squares multipliers is at
+    /// most `richardson_below` (or 100 × `tolerance`), or when `always`;
+    /// central once it is at most `central_below`.
     fn sharpen<P: NonlinearProgram + Sync + ?Sized>(&mut self, p: &P, always: bool) {
-        if self.richardson {
+        if self.accuracy == Accuracy::Richardson {
             return;
         }
         let (Some(v), Some(g)) = (self.values.clone(), self.grads.clone()) else {
             return;
         };
-        let near = self
-            .settings
-            .richardson_below
-            .max(100.0 * self.settings.tolerance);
-        if !always && self.best_kkt(&v, &g, &[]).0.residual > near {
+        let near = self.settings.richardson_threshold();
+        let wanted = if always {
+            Accuracy::Richardson
+        } else {
+            let residual = self.least_kkt().0.residual;
+            if residual <= near {
+                Accuracy::Richardson
+            } else if residual <= self.settings.central_below {
+                Accuracy::Central
+            } else {
+                return;
+            }
+        };
+        if wanted <= self.accuracy {
             return;
         }
-        self.richardson = true;
+        self.accuracy = wanted;
         let x = self.x.clone();
         if let Some(g) = self.gradients_at(p, &x, &v, Some(&g)) {
             self.grads = Some(g);
             self.kkt = None;
+            self.least = None;
         }
     }
 
@@ -381,11 +432,34 @@ impl Sqp {
         }
     }
 
+    /// The least-squares estimate at the current point ([`Sqp::best_kkt`]
+    /// without extras), computed once per point.
+    fn least_kkt(&mut self) -> (Kkt, Vec<f64>) {
+        if let Some(l) = &self.least {
+            return l.clone();
+        }
+        let (v, g) = (
+            self.values.as_ref().expect("initialised"),
+            self.grads.as_ref().expect("initialised"),
+        );
+        let l = self.best_kkt(v, g, &[]);
+        self.least = Some(l.clone());
+        l
+    }
+
     /// The best multiplier estimate among `extra` and the least-squares ones.
+    /// Active tolerances that select the same rows give the same estimate:
+    /// it is computed once.
     fn best_kkt(&self, v: &Values, g: &Gradients, extra: &[Vec<f64>]) -> (Kkt, Vec<f64>) {
         let d = self.kkt_data(v, g);
         let mut candidates: Vec<Vec<f64>> = extra.to_vec();
+        let mut selections: Vec<Vec<bool>> = Vec::new();
         for &t in &self.settings.active_tolerances {
+            let rows: Vec<bool> = v.constraints.iter().map(|&r| r >= -t).collect();
+            if selections.contains(&rows) {
+                continue;
+            }
+            selections.push(rows);
             candidates.push(least_squares(&d, t));
         }
         candidates
@@ -545,6 +619,41 @@ impl Sqp {
         )
     }
 
+    /// Doubles the accepted step from `x` to `to` (values `at`), up to the
+    /// trust radius and into the box, while that lowers the merit by more
+    /// than `noise` (see [`SqpSettings::extend_ratio`]).
+    fn extend<P: NonlinearProgram + ?Sized>(
+        &mut self,
+        p: &P,
+        x: &[f64],
+        mut to: Vec<f64>,
+        mut at: Values,
+        noise: f64,
+    ) -> (Vec<f64>, Values) {
+        loop {
+            let s: Vec<f64> = to.iter().zip(x).map(|(a, b)| a - b).collect();
+            let len = norm2(&s);
+            if len >= 0.99 * self.radius || len == 0.0 {
+                break;
+            }
+            let factor = (self.radius / len).min(2.0);
+            let target: Vec<f64> = x.iter().zip(&s).map(|(a, d)| a + factor * d).collect();
+            let next = self.project(&target);
+            if next == to {
+                break;
+            }
+            let near = at.warm_start.clone();
+            match self.evaluate(p, &next, &near) {
+                Some(v) if self.merit(&v) < self.merit(&at) - noise => {
+                    to = next;
+                    at = v;
+                }
+                _ => break,
+            }
+        }
+        (to, at)
+    }
+
     /// Damped BFGS update (Powell) of the Lagrangian Hessian.
     fn update_hessian(&mut self, s: &[f64], old: &Gradients, new: &Gradients, lambda: &[f64]) {
         let n = s.len();
@@ -643,7 +752,9 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         self.qp_multipliers = vec![0.0; values.constraints.len()];
         let cost = values.objective;
         let gradient = grads.objective.clone();
-        self.kkt = Some(self.best_kkt(&values, &grads, &[]));
+        let least = self.best_kkt(&values, &grads, &[]);
+        self.kkt = Some(least.clone());
+        self.least = Some(least);
         self.values = Some(values);
         self.grads = Some(grads);
         Ok((state.cost(cost).gradient(gradient), None))
@@ -670,7 +781,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             .ok_or_else(|| Error::msg("not initialised"))?;
         // The least-squares multipliers first: where they already meet the
         // KKT test the run ends without solving a subproblem.
-        let least = self.best_kkt(&v, &grads, &[]);
+        let least = self.least_kkt();
         if self.settings.met(&least.0) {
             self.last_kkt = least.0.residual;
             self.kkt = Some(least);
@@ -695,10 +806,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         // KKT point (residual within the Richardson threshold).
         let p_len = norm2(&step.p);
         let mut extra = vec![step.multipliers.clone()];
-        let near = self
-            .settings
-            .richardson_below
-            .max(100.0 * self.settings.tolerance);
+        let near = self.settings.richardson_threshold();
         if p_len >= 0.99 * self.radius && least.0.residual <= near {
             if let Ok(s) = self.subproblem(&v.constraints, 1e3 * self.max_radius) {
                 extra.push(s.multipliers);
@@ -776,7 +884,10 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             self.reject(p_len);
             return Ok((state.cost(v.objective), Some(self.kv())));
         }
-        let trial = trial.expect("accepted steps have values");
+        let mut trial = trial.expect("accepted steps have values");
+        if ratio >= self.settings.extend_ratio && p_len < 0.99 * self.radius {
+            (trial_x, trial) = self.extend(prog, &x_old, trial_x, trial, noise);
+        }
         let Some(new_grads) = self.gradients_at(prog, &trial_x, &trial, None) else {
             self.reject(p_len);
             return Ok((state.cost(v.objective), Some(self.kv())));
@@ -799,6 +910,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         let cost = trial.objective;
         let gradient = new_grads.objective.clone();
         self.kkt = None;
+        self.least = None;
         self.values = Some(trial);
         self.grads = Some(new_grads);
         Ok((
@@ -903,7 +1015,8 @@ fn finish<P: NonlinearProgram + Sync + ?Sized>(
     };
     if solver.kkt.is_none() {
         let extra = vec![solver.qp_multipliers.clone()];
-        solver.kkt = Some(solver.best_kkt(&v, &g, &extra));
+        let least = solver.least_kkt();
+        solver.kkt = Some(solver.better_kkt(&v, &g, &extra, least));
         solver.record(iterations as usize);
     }
     let (k, lambda) = solver.kkt.clone().expect("set above");

@@ -95,7 +95,7 @@ pub fn edge_starts(
             JACOBIAN_STEP,
             &functions.scale(),
             &functions.bounds(),
-            false,
+            fd::Accuracy::Central,
             None,
         );
         let Some(g) = gradients else {
