@@ -20,7 +20,8 @@
 //! breakpoints are (a) the points where the log-weight u²/2 has risen by the
 //! layout's step (12 for van der Waals, 8 for Dugdale) above its smallest value on
 //! [0, d_max], up to [`LOG_WEIGHT_CUT`] (e^{-46} ≈ 1e-20), and, for van der Waals, (b) the geometric
-//! points d = z0 (4^k - 1), across each of which w changes by at most 16 and whose
+//! points d = z0 (4^k - 1) wherever a panel would otherwise span more than a factor 4
+//! in z0 + d: then every panel spans at most 4, so that w changes by at most 16 across it and its
 //! length is at most 3/2 of the distance to the pole of w at d = -z0: every panel
 //! integrand is then analytic in a Bernstein ellipse of parameter ρ ≥ 3 (order 20:
 //! error ≲ 3^{-40} ≈ 1e-19 of the panel's size, times the Gaussian's growth off the
@@ -116,14 +117,24 @@ fn exp_fast(x: f64) -> f64 {
     let shifted = x * INV_LN2 + SHIFT;
     let k = shifted - SHIFT;
     let r = (x - k * LN2_HI) - k * LN2_LO;
-    let mut q = Q[0];
-    for &c in &Q[1..] {
-        q = q * r + c;
-    }
+    // Q by Estrin's scheme (Q[10 - i] is the coefficient of r^i): a dependency
+    // chain of 4 multiply–adds instead of Horner's 10.
+    let r2 = r * r;
+    let r4 = r2 * r2;
+    let r8 = r4 * r4;
+    let p01 = Q[10] + Q[9] * r;
+    let p23 = Q[8] + Q[7] * r;
+    let p45 = Q[6] + Q[5] * r;
+    let p67 = Q[4] + Q[3] * r;
+    let p89 = Q[2] + Q[1] * r;
+    let p0_3 = p01 + p23 * r2;
+    let p4_7 = p45 + p67 * r2;
+    let p8_10 = p89 + Q[0] * r2;
+    let q = (p0_3 + p4_7 * r4) + p8_10 * r8;
     // k + 1023 in [1, 2046] lands in the exponent field; the higher bits of
     // `shifted` are shifted out.
     let scale = f64::from_bits(shifted.to_bits().wrapping_add(1023) << 52);
-    (1.0 + (r + r * r * q)) * scale
+    (1.0 + (r + r2 * q)) * scale
 }
 
 /// The non-contact load and its first two h-derivatives, as mantissas scaled
@@ -335,7 +346,9 @@ fn quadrature_with(layout: &Layout, attraction: Attraction, c_0: f64, h: f64) ->
         walk[n_walk] = d;
         n_walk += 1;
     }
-    // Merge the geometric points (ascending) into the walk.
+    // Merge the geometric points (ascending) into the walk, each only where the
+    // panel from the last breakpoint to the next walk point spans more than the
+    // ratio in z0 + d: every panel then spans at most that ratio.
     let mut breaks = [0.0f64; 2 * MAX_WALK + 1 + MAX_GEOMETRIC];
     let mut n = 0;
     let mut k_walk = 0;
@@ -348,8 +361,12 @@ fn quadrature_with(layout: &Layout, attraction: Attraction, c_0: f64, h: f64) ->
                     n += 1;
                     k_walk += 1;
                 }
-                breaks[n] = g;
-                n += 1;
+                // walk[0] = lo < g was pushed, and walk[n_walk - 1] = hi > g.
+                let next = walk[k_walk.min(n_walk - 1)];
+                if range + next > GEOMETRIC_RATIO * (range + breaks[n - 1]) {
+                    breaks[n] = g;
+                    n += 1;
+                }
             }
             g = range * (GEOMETRIC_RATIO * (g / range + 1.0) - 1.0);
         }
