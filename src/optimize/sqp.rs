@@ -98,6 +98,14 @@ pub struct SqpSettings {
     /// radius or the box, while each doubling lowers the merit further, one
     /// evaluation per doubling (default 1.25; infinite: never).
     pub extend_ratio: f64,
+    /// Duality-gap tolerance (absolute and relative) of clarabel's solve of
+    /// each subproblem (default 1e-12: near convergence the model's changes
+    /// are ~1e-12).
+    pub qp_tolerance: f64,
+    /// The same while the gradients are forward differences, far from a
+    /// solution, where a step need not be exact (default 1e-8: about two
+    /// interior-point iterations fewer per subproblem).
+    pub far_qp_tolerance: f64,
 }
 
 impl SqpSettings {
@@ -149,6 +157,8 @@ impl Default for SqpSettings {
             active_tolerances: vec![1e-10, 1e-7, 1e-4],
             bound_snap: 1e-6,
             extend_ratio: 1.25,
+            qp_tolerance: 1e-12,
+            far_qp_tolerance: 1e-8,
         }
     }
 }
@@ -512,7 +522,18 @@ impl Sqp {
             jacobian: &g.rows,
             radius,
             penalty: self.penalty,
+            gap_tolerance: self.gap_tolerance(),
         })
+    }
+
+    /// The subproblem's duality-gap tolerance: loose while the gradients are
+    /// forward differences, tight from then on.
+    fn gap_tolerance(&self) -> f64 {
+        if self.accuracy == Accuracy::Forward {
+            self.settings.far_qp_tolerance
+        } else {
+            self.settings.qp_tolerance
+        }
     }
 
     /// Σ_j max(0, g_j + ∇g_jᵀp): the linearised violation after step p.
@@ -542,6 +563,7 @@ impl Sqp {
             jacobian: &g.rows,
             radius,
             penalty: 1.0,
+            gap_tolerance: self.gap_tolerance(),
         };
         qp::solve(&sp)
             .ok()
