@@ -61,7 +61,8 @@
 //!   it or does not halve over two steps; widening toward the root while it is open).
 //!   It returns the point whose step is below 2 ulps of h, or, one evaluation
 //!   earlier, the end of a step whose predicted error (|d_k|³/d_{k-1}², from two
-//!   steps converging at least quadratically) is 16 times below that. The model
+//!   steps converging at least quadratically, and Halley's |d_k|³(f''/f')²) is 16
+//!   times below that. The model
 //!   at the returned point is the caller's, so the areas cost nothing more.
 //! - *Pull-off, J ≥ 0*: Newton on P̄' (on the balance of the two shares under DMT;
 //!   on h·P̄'e^{h²/2}, nearly linear at large h, under JKR beyond h = 1),
@@ -326,8 +327,9 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
 fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Scaled)> {
     let mut at = ev.at(start);
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    // The length of the last step, when it was Newton's.
+    // The lengths of the last two steps, when they were Newton's.
     let mut last_newton = f64::NAN;
+    let mut before_last = f64::NAN;
     for _ in 0..80 {
         let h = at.separation;
         let g = slope(&at);
@@ -378,6 +380,7 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Scaled)> {
             && newton < hi
             && d <= 0.1 * last_newton
             && 16.0 * d * d * d <= tol * last_newton * last_newton
+            && steady(before_last, last_newton, d)
         {
             // Quadratic convergence (see above): the step's end is the minimum,
             // and its load P̄ - P̄'²/(2P̄'') to O(P̄''' δ³).
@@ -421,14 +424,31 @@ fn single_minimum(ev: &mut Counter, start: f64) -> Option<(f64, Scaled)> {
         if lo.is_finite() && hi.is_finite() && hi - lo <= 4.0 * f64::EPSILON * hi.abs().max(1.0) {
             return Some((h, at.load()));
         }
+        before_last = last_newton;
         last_newton = if next == newton {
             (next - h).abs()
         } else {
             f64::NAN
         };
+        if last_newton.is_nan() {
+            before_last = f64::NAN;
+        }
         at = ev.at(next);
     }
     None
+}
+
+/// Whether three Newton steps a, b, c (newest last) show one quadratic rate:
+/// M = c/b² within a factor 10 of b/a². A step of a function that bends on a
+/// length shorter than the steps (a log near a zero of its argument) shows a
+/// jump in M instead, and its steps' ratio alone would look converged. With
+/// only two steps known (a is NaN: a warm start) the pair decides.
+fn steady(a: f64, b: f64, c: f64) -> bool {
+    if a.is_nan() {
+        return true;
+    }
+    let (earlier, later) = (b / (a * a), c / (b * b));
+    later <= 10.0 * earlier && earlier <= 10.0 * later
 }
 
 /// Newton's step for the minimum under DMT where the contacts' share of P̄' is
@@ -718,9 +738,11 @@ struct End {
 /// root), or, to save the confirming evaluation, one step earlier: once two
 /// Newton steps d_{k-1}, d_k shrink quadratically (|d_k| ≤ |d_{k-1}|/10), the
 /// error after the step d_k is about M d_k² with M ≈ |d_k|/d_{k-1}²; when 16
-/// times that is below the same 2 ulps, the point the step reaches is evaluated
-/// (its areas are needed anyway) and returned. Either way the result is the
-/// root to a few ulps, whatever the start: the hint changes only the cost.
+/// times that is below the same 2 ulps, and so is 16 |d_k|³ (f''/f')² (Halley's
+/// cubic term, which the steps' ratio misses where f bends on a short length:
+/// ln P̄ 1e-7 from a zero of P̄), the point the step reaches is evaluated (its
+/// areas are needed anyway) and returned. Either way the result is the root to
+/// a few ulps, whatever the start: the hint changes only the cost.
 fn newton_root(
     ev: &mut Counter,
     target: f64,
@@ -785,7 +807,10 @@ fn newton_root(
                 None,
             );
         }
-        let step = newton_step(target, &cur);
+        let (step, bend) = match newton_step(target, &cur) {
+            Some((d, bend)) => (Some(d), bend),
+            None => (None, f64::INFINITY),
+        };
         if step.is_some_and(|d| d.abs() <= tol) {
             return contact(ev, cur);
         }
@@ -820,12 +845,16 @@ fn newton_root(
             let at = best.at.unwrap_or_else(|| ev.at(best.h));
             return contact(ev, at);
         }
-        // Quadratic convergence: the step's error is about |d|³/d_prev² (see above).
+        // Quadratic convergence: the step's error is about |d|³/d_prev² (see
+        // above), and the step is short against the length 1/|f''/f'| over which
+        // f bends (ln P̄ a few 1e-8 from a zero of P̄: the steps' ratio alone
+        // looked converged there, found by the million-case run).
         let length = (next - x).abs();
         let accept = is_newton
             && newton_taken
             && length <= 0.1 * steps[0]
-            && 16.0 * length * length * length <= tol * steps[0] * steps[0];
+            && 16.0 * length * length * length <= tol * steps[0] * steps[0]
+            && 16.0 * length * length * length * bend * bend <= tol;
         let at = ev.at(next);
         if accept {
             return contact(ev, at);
@@ -856,28 +885,34 @@ fn miss(target: f64, at: &Integrals) -> f64 {
 /// evaluation carries, it converges cubically. Newton's f/f' where the correction
 /// is large (|f f''/f'²| > 1, far from the root); None where the step is
 /// meaningless.
-fn newton_step(target: f64, at: &Integrals) -> Option<f64> {
+///
+/// Also |f''/f'|, the inverse of the length over which the step's function
+/// bends: Halley's error after a step d is about C d³ with C of order
+/// (f''/f')² (and f'''/f', of the same order where f has a singularity nearby,
+/// e.g. ln P̄ near a zero of P̄).
+fn newton_step(target: f64, at: &Integrals) -> Option<(f64, f64)> {
     let load = at.load();
     let slope = at.dload_dh();
     if slope.mantissa == 0.0 {
         return None;
     }
     let curvature = at.d2load_dh2();
-    let (newton, correction) = if target > 0.0 && load.signum() > 0.0 {
+    let (newton, correction, bend) = if target > 0.0 && load.signum() > 0.0 {
         // f' = P̄'/P̄, f'' = P̄''/P̄ - f'².
         let f = load.ln_abs() - target.ln();
         let d1 = slope.ratio(load);
         let d2 = curvature.ratio(load) - d1 * d1;
-        (f / d1, f * d2 / (d1 * d1))
+        (f / d1, f * d2 / (d1 * d1), (d2 / d1).abs())
     } else {
         let f = load.minus(Scaled::from_f64(target));
         let newton = f.ratio(slope);
-        (newton, newton * curvature.ratio(slope))
+        let bend = curvature.ratio(slope);
+        (newton, newton * bend, bend.abs())
     };
     let step = if correction.abs() <= 1.0 {
         newton / (1.0 - 0.5 * correction)
     } else {
         newton
     };
-    step.is_finite().then_some(step)
+    step.is_finite().then_some((step, bend))
 }
