@@ -727,6 +727,17 @@ struct End {
     at: Option<Integrals>,
 }
 
+/// The end of a bracket whose load misses the target least (the left one on a
+/// tie), or `here` when neither end is known.
+fn closer_end(left: Option<End>, right: Option<End>, here: End) -> End {
+    match (left, right) {
+        (Some(l), Some(r)) if l.miss <= r.miss => l,
+        (_, Some(r)) => r,
+        (Some(l), None) => l,
+        (None, None) => here,
+    }
+}
+
 /// The root of P̄ = target on a monotone piece (falling with h, or rising), from
 /// the evaluated point `start`, with `left` and `right` the known ends of the
 /// bracket (either may be unknown). Newton's method (in ln P̄ where the load and
@@ -789,12 +800,7 @@ fn newton_root(
         let bracketed = lo.is_finite() && hi.is_finite();
         if bracketed && hi - lo <= 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(1.0) {
             // The bracket is a few ulps wide: its better end is the root.
-            let best = match (left, right) {
-                (Some(l), Some(r)) if l.miss <= r.miss => l,
-                (_, Some(r)) => r,
-                (Some(l), None) => l,
-                (None, None) => here,
-            };
+            let best = closer_end(left, right, here);
             let at = best.at.unwrap_or_else(|| ev.at(best.h));
             return contact(ev, at);
         }
@@ -836,12 +842,7 @@ fn newton_root(
         };
         if !(next > lo && next < hi) {
             // Rounding put the midpoint on an end: the bracket is as narrow as h allows.
-            let best = match (left, right) {
-                (Some(l), Some(r)) if l.miss <= r.miss => l,
-                (_, Some(r)) => r,
-                (Some(l), None) => l,
-                (None, None) => here,
-            };
+            let best = closer_end(left, right, here);
             let at = best.at.unwrap_or_else(|| ev.at(best.h));
             return contact(ev, at);
         }
