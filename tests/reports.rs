@@ -313,3 +313,38 @@ fn input_notes_are_words_and_values() {
     let text = stdout_of(&["eval", "problems/micro-gear.toml"]);
     assert!(text.contains("note: hardness taken from catalogue: polysilicon, 10 GPa"));
 }
+
+/// A hard DLC-like slider pad whose wear counts plastic junctions only: with
+/// H = 20 GPa the critical interference is Δc·σ = 1.9 µm against σ = 1.5 nm, so a
+/// plastic asperity would stand ~1270 σ tall (weight e^{-8e5}): the model gives no
+/// plastic area and zero wear. The text says why in words, never "10^-inf", and
+/// JSON has `wear_rate` 0 with `log10_wear_rate` null.
+#[test]
+fn zero_wear_is_said_in_words() {
+    let text = "name = \"slider pad\"\n\
+        [contact]\nload = \"20 uN\"\nnominal_area = \"2000 um^2\"\nsliding_distance = \"100 m\"\n\
+        wear_coefficient = 1e-6\nwear_area = \"plastic\"\n\
+        [bodies]\na = { youngs_modulus = \"170 GPa\", poisson_ratio = 0.25 }\n\
+        b = { youngs_modulus = \"120 GPa\", poisson_ratio = 0.3 }\n\
+        [interface]\nhardness = \"20 GPa\"\nwork_of_adhesion = \"0.06 J/m^2\"\n\
+        interatomic_distance = \"0.3 nm\"\nadhesion_model = \"dmt\"\n\
+        [roughness]\nsigma = \"1.5 nm\"\nasperity_radius = \"5 um\"\nasperity_density = \"2 um^-2\"\n";
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("reports-zero-wear.toml");
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let t = stdout_of(&["eval", p]);
+    assert!(
+        t.contains("wear rate V/L = 0 m³/m  (zero: only plastic junctions wear, and no asperity is tall enough to turn plastic)"),
+        "{t}"
+    );
+    assert!(!t.contains("-inf") && !t.contains("NaN"), "{t}");
+    let out = wearopt()
+        .args(["eval", p, "--format", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["status"], "ok", "{v}");
+    assert_eq!(v["wear_rate"].as_f64(), Some(0.0), "{v}");
+    assert!(v["log10_wear_rate"].is_null(), "{v}");
+}

@@ -642,11 +642,28 @@ pub fn text(r: &EvalReport) -> String {
         si(ev.wear_volume, "m³", 4),
         si(sc.sliding_distance, "m", 3)
     ));
-    line(format!(
-        "  wear rate V/L = {}  (10^{} m³/m)",
-        si(ev.wear_rate, "m³/m", 4),
-        sig(ev.log10_wear_rate, 5)
-    ));
+    if ev.log10_wear_rate.is_finite() {
+        line(format!(
+            "  wear rate V/L = {}  (10^{} m³/m)",
+            si(ev.wear_rate, "m³/m", 4),
+            sig(ev.log10_wear_rate, 5)
+        ));
+    } else {
+        // No wearing area at all (its logarithm is -∞): no wear coefficient, or
+        // only plastic junctions wear and the plastic ones lie beyond the
+        // Gaussian's reach (the model sets them to zero, not a rounded tiny number).
+        let why = if sc.wear_coefficient == 0.0 {
+            "the wear coefficient k is 0"
+        } else if sc.wear_area == WearArea::Plastic {
+            "only plastic junctions wear, and no asperity is tall enough to turn plastic"
+        } else {
+            "no contact wears"
+        };
+        line(format!(
+            "  wear rate V/L = {}  (zero: {why})",
+            si(ev.wear_rate, "m³/m", 4)
+        ));
+    }
     line(format!(
         "  wear depth rate V/(A_n L) = {} per m slid ({} per km)",
         si(ev.wear_depth_rate, "m", 4),
