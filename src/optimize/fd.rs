@@ -280,31 +280,13 @@ mod tests {
         for x in [[0.7, -0.3], [1.9999, 0.4]] {
             let at = p.evaluate(&x, &[]).unwrap();
             let scale = [1.0, 1.0];
-            let central =
-                gradients(&p, &x, &at, 1e-4, &scale, &bounds, Accuracy::Central, None).unwrap();
+            let stencil = |accuracy, reuse| {
+                gradients(&p, &x, &at, 1e-4, &scale, &bounds, accuracy, reuse).unwrap()
+            };
+            let central = stencil(Accuracy::Central, None);
             assert_eq!(central.evaluations, 4);
-            let fresh = gradients(
-                &p,
-                &x,
-                &at,
-                1e-4,
-                &scale,
-                &bounds,
-                Accuracy::Richardson,
-                None,
-            )
-            .unwrap();
-            let reused = gradients(
-                &p,
-                &x,
-                &at,
-                1e-4,
-                &scale,
-                &bounds,
-                Accuracy::Richardson,
-                Some(&central),
-            )
-            .unwrap();
+            let fresh = stencil(Accuracy::Richardson, None);
+            let reused = stencil(Accuracy::Richardson, Some(&central));
             assert_eq!(fresh.evaluations, 8);
             assert_eq!(reused.evaluations, 4);
             assert_eq!(fresh.objective, reused.objective);
@@ -339,8 +321,10 @@ mod tests {
         for x in [[0.7, -0.3], [1.9999, 0.4]] {
             let at = p.evaluate(&x, &[]).unwrap();
             let scale = [1.0, 1.0];
-            let forward =
-                gradients(&p, &x, &at, h, &scale, &bounds, Accuracy::Forward, None).unwrap();
+            let stencil = |accuracy, reuse| {
+                gradients(&p, &x, &at, h, &scale, &bounds, accuracy, reuse).unwrap()
+            };
+            let forward = stencil(Accuracy::Forward, None);
             assert_eq!(forward.evaluations, 2);
             // Steps h·max(|x_i|, 1).
             let hs = [h * x[0].abs().max(1.0), h * x[1].abs().max(1.0)];
@@ -369,19 +353,8 @@ mod tests {
                     assert!((e[i] - g[i]).abs() <= bound, "{k} {i}: {e:?} {g:?} {bound}");
                 }
             }
-            let fresh =
-                gradients(&p, &x, &at, h, &scale, &bounds, Accuracy::Central, None).unwrap();
-            let reused = gradients(
-                &p,
-                &x,
-                &at,
-                h,
-                &scale,
-                &bounds,
-                Accuracy::Central,
-                Some(&forward),
-            )
-            .unwrap();
+            let fresh = stencil(Accuracy::Central, None);
+            let reused = stencil(Accuracy::Central, Some(&forward));
             assert_eq!(reused.evaluations, 2);
             assert_eq!(fresh.objective, reused.objective);
             assert_eq!(fresh.rows, reused.rows);
