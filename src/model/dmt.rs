@@ -12,9 +12,10 @@
 //! ```
 //!
 //! The contact terms of the law (Hertz load Δ^{3/2} - c_0 up to Δc = c_h², the
-//! plastic c_p Δ - c_0 beyond) are the JKR machinery of `integrals.rs` with
-//! c_a = c_d = 0 and the constant -c_0 inside the elastic integrand, so they
-//! need nothing here.
+//! plastic c_p Δ - c_0 beyond) are the contact machinery of `integrals.rs` with
+//! c_a = c_d = 0: the same panels, the plastic share and every -c_0 in closed form
+//! (erfc), and only the Hertz integral ∫ Δ^{3/2} φ̄ by quadrature, in [`hertz`]
+//! here (in t = Δ^{1/2}, where JKR needs Δ^{1/4}).
 //!
 //! **Method.** Every integral is composite Gauss–Legendre in d, on panels whose
 //! breakpoints are (a) the points where the log-weight u²/2 has risen by the
@@ -66,6 +67,7 @@
 //! h = 40 or 60 is this power law, not an underflow; it decays like b^{-2}.
 
 use super::gauss;
+use super::integrals::Quadrature;
 use super::law::Attraction;
 use super::special::SQRT_TWO_PI;
 
@@ -89,6 +91,13 @@ const MAX_GEOMETRIC: usize = 48;
 
 /// The largest Gauss–Legendre order a panel uses ([`ORDER`]).
 const MAX_ORDER: usize = ORDER;
+
+/// A Hertz panel that starts near t = 0 (below half its end) and spans a
+/// log-weight change above this is halved in t ([`hertz`]).
+const SPLIT_ABOVE: f64 = 4.0;
+
+/// The largest order a [`Quadrature`] may ask for (the last of [`gauss::ORDERS`]).
+const MAX_CONTACT_ORDER: usize = gauss::ORDERS[gauss::ORDERS.len() - 1];
 
 /// e^x for x in [-708, 709] (clamped outside, so never Inf or NaN), to about
 /// 1 ulp, without branches (so that loops over nodes vectorize): x = k ln 2 + r,
@@ -450,6 +459,105 @@ fn quadrature_with(layout: &Layout, attraction: Attraction, c_0: f64, h: f64) ->
         d2load_dh2: -c_0 * d2load,
         exponent: 0.5 * u_n * u_n,
     }
+}
+
+/// The Hertz part of the DMT law's elastic contact integral and its first two
+/// h-derivatives, scaled by e^{κ(h)}:
+///
+/// ```text
+/// H(h) = ∫_0^{Δc} Δ^{3/2} φ̄ dΔ,  H' = ∫ Δ^{3/2} (-u) φ̄ dΔ,  H'' = ∫ Δ^{3/2} (u² - 1) φ̄ dΔ,  u = h + Δ
+/// ```
+///
+/// (the constant -c_0 of the elastic asperity load is closed form, added by the
+/// caller) on the contact integral's panels `bounds` (ascending in Δ, each spanning
+/// a log-weight change ≤ the quadrature's step), each taken by Gauss–Legendre in
+/// t = Δ^{1/2}: there the integrand 2t⁴ e^{-(h + t²)²/2} is a polynomial times an
+/// entire weight whose exponent is quartic in t (the JKR coordinate Δ^{1/4}, which
+/// c_d ≠ 0 needs, makes it octic and needs twice the panels). For h ≤ 0,
+/// u = h + t² is formed about the weight's peak t_r = (min(-h, Δc))^{1/2} as
+/// u_r + δ(2 t_r + δ), δ = t - t_r, so that far left (h ≈ -3e7) the nodes carry no
+/// ε|h| of rounding in u, only a common shift u_r.
+///
+/// Near t = 0 the exponent is quartic in t rather than quadratic: one 20-point rule
+/// on a panel from 0 across a log-weight change of 12 errs by 1e-12 (h = 0), so a
+/// panel that starts below half its end in t and spans a change above
+/// [`SPLIT_ABOVE`] is halved in t; then every panel agrees with a fine layout to
+/// 1e-15 (`hertz_matches_fine_layout` in `integrals.rs`). The nodes' exponentials
+/// are [`exp_fast`], in the same three passes as the non-contact quadrature.
+pub(super) fn hertz(quadrature: &Quadrature, h: f64, dc: f64, bounds: &[f64]) -> (f64, f64, f64) {
+    // The log-weight's minimum over [0, Δc], and a panel's level above it.
+    let peak = (-h).max(0.0).min(dc);
+    let level_of = |a: f64, b: f64| -> f64 {
+        if h >= 0.0 {
+            a * (h + 0.5 * a)
+        } else {
+            let x = (-h).max(a).min(b);
+            0.5 * ((h + x) * (h + x) - (h + peak) * (h + peak))
+        }
+    };
+    let t_ref = peak.sqrt();
+    let u_ref = h + t_ref * t_ref;
+    let (mut load, mut dload, mut d2load) = (0.0, 0.0, 0.0);
+    let (mut weight, mut arg, mut us) = (
+        [0.0; MAX_CONTACT_ORDER],
+        [0.0; MAX_CONTACT_ORDER],
+        [0.0; MAX_CONTACT_ORDER],
+    );
+    let Some((&first, rest)) = bounds.split_first() else {
+        return (0.0, 0.0, 0.0);
+    };
+    let mut panel = |t_lo: f64, t_hi: f64, level: f64| {
+        let rule = gauss::rule(quadrature.panel_order(level));
+        let (dt_lo, dt_hi) = (t_lo - t_ref, t_hi - t_ref);
+        let to_mid = 0.5 * (dt_lo + dt_hi);
+        let half = 0.5 * (dt_hi - dt_lo);
+        let count = rule.nodes.len().min(MAX_CONTACT_ORDER);
+        for i in 0..count {
+            let dt = to_mid + half * rule.nodes[i];
+            let t = t_ref + dt;
+            let u = u_ref + dt * (2.0 * t_ref + dt);
+            us[i] = u;
+            // e^{-u²/2} e^{κ(h)}: for h > 0 (t_r = 0) that is e^{-Δ(h + Δ/2)}.
+            let t2 = t * t;
+            arg[i] = if h > 0.0 {
+                -t2 * (h + 0.5 * t2)
+            } else {
+                -0.5 * u * u
+            };
+            // Δ^{3/2} dΔ = 2t⁴ dt.
+            weight[i] = rule.weights[i] * 2.0 * (t2 * t2);
+        }
+        for x in &mut arg[..count] {
+            *x = exp_fast(*x);
+        }
+        let (mut pl, mut pd, mut pdd) = (0.0, 0.0, 0.0);
+        for i in 0..count {
+            let f = weight[i] * arg[i];
+            let u = us[i];
+            pl += f;
+            pd -= f * u;
+            pdd += f * (u * u - 1.0);
+        }
+        load += pl * half;
+        dload += pd * half;
+        d2load += pdd * half;
+    };
+    let (mut d_lo, mut t_lo) = (first, first.sqrt());
+    for &d_hi in rest {
+        let t_hi = d_hi.sqrt();
+        let level = level_of(d_lo, d_hi);
+        let change = (level_of(d_hi, d_hi) - level).abs();
+        if 4.0 * d_lo < d_hi && change > SPLIT_ABOVE {
+            let t_mid = 0.5 * t_hi;
+            let d_mid = t_mid * t_mid;
+            panel(t_lo, t_mid, level);
+            panel(t_mid, t_hi, level_of(d_mid, d_hi));
+        } else {
+            panel(t_lo, t_hi, level);
+        }
+        (d_lo, t_lo) = (d_hi, t_hi);
+    }
+    (load, dload, d2load)
 }
 
 #[cfg(test)]
