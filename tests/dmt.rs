@@ -88,22 +88,38 @@ fn van_der_waals_tail_is_the_whole_load_far_out() {
     }
 }
 
-/// dP̄/dh from the model against a central difference of P̄ (the derivative the
-/// Newton steps use), for both attractions.
+/// dP̄/dh and d²P̄/dh² from the model against central differences of P̄ and of
+/// dP̄/dh (the derivatives the Newton and Halley steps use), for both attractions,
+/// with and without plasticity (step 1e-5: truncation ~1e-11, rounding ~1e-11 of
+/// the scale).
 #[test]
-fn slope_matches_central_differences() {
-    for (theta, lambda) in [(184.0, 1.309e5), (1.0, 1.0), (1e-3, 1e-2)] {
-        let c = Coefficients::from_indices(theta, lambda);
+fn slope_and_curvature_match_central_differences() {
+    let mut cases: Vec<Coefficients> = [(184.0, 1.309e5), (1.0, 1.0), (1e-3, 1e-2), (10.0, 1.0)]
+        .iter()
+        .map(|&(theta, lambda)| Coefficients::from_indices(theta, lambda))
+        .collect();
+    cases.push(Coefficients::new(1.0, f64::INFINITY));
+    for c in cases {
         for a in ATTRACTIONS {
             let m = dmt(c, a);
-            for h in [-2.0, 0.0, 1.0, 3.0, 10.0] {
+            for h in [-2.0, -0.5, 0.0, 0.7, 1.0, 3.0, 10.0] {
                 let d = 1e-5;
-                let fd = (m.at(h + d).load().value() - m.at(h - d).load().value()) / (2.0 * d);
-                let got = m.at(h).dload_dh().value();
-                let scale = got.abs().max(m.at(h).load().value().abs()).max(1e-300);
+                let (lo, at, hi) = (m.at(h - d), m.at(h), m.at(h + d));
+                let fd = (hi.load().value() - lo.load().value()) / (2.0 * d);
+                let got = at.dload_dh().value();
+                let scale = got.abs().max(at.load().value().abs()).max(1e-300);
                 assert!(
                     (fd - got).abs() <= 1e-7 * scale,
-                    "θ={theta} {a:?} h={h}: {got} vs {fd}"
+                    "P̄' θ={} {a:?} h={h}: {got} vs {fd}",
+                    c.elastic_adhesion_index()
+                );
+                let fd2 = (hi.dload_dh().value() - lo.dload_dh().value()) / (2.0 * d);
+                let got2 = at.d2load_dh2().value();
+                let scale2 = got2.abs().max(scale);
+                assert!(
+                    (fd2 - got2).abs() <= 1e-7 * scale2,
+                    "P̄'' θ={} {a:?} h={h}: {got2} vs {fd2}",
+                    c.elastic_adhesion_index()
                 );
             }
         }

@@ -433,12 +433,12 @@ impl Model {
         if offset != 0.0 {
             // DMT: the constant -c_0 of the elastic asperity load in closed form,
             // -c_0 ∫_0^{Δc} {1, -u, u² - 1} φ̄ dΔ = -c_0 {T_0(h) - T_0(u_c),
-            // φ̄(u_c) - φ̄(h), u_c φ̄(u_c) - h φ̄(h)}: exact, where the quadrature of
+            // φ̄(u_c) - φ̄(h), h φ̄(h) - u_c φ̄(u_c)}: exact, where the quadrature of
             // c_0 u φ̄ across the weight's peak cancels (by e^{h²/2} at h < 0).
             let gh = gauss_scaled(h);
             load -= offset * (out.contacts - t0);
             dload -= offset * (g - gh);
-            d2load -= offset * (ug - h * gh);
+            d2load -= offset * (h * gh - ug);
         }
         out.d2load_dh2 += d2load;
         out.load_elastic = load;
