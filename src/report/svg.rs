@@ -324,11 +324,13 @@ fn axis_layout(axis: &Axis, values: impl Iterator<Item = f64>) -> ((f64, f64), V
             Scale::Log => (0.0, 1.0),
         };
     }
-    if lo == hi {
+    if lo == hi && lo == 0.0 && axis.scale == Scale::Linear {
+        // Every value is zero (e.g. a front that never wears): the axis starts at
+        // the data, with no negative ticks for what may be a quantity ≥ 0.
+        hi = 1.0;
+    } else if lo == hi {
         let pad = match axis.scale {
-            Scale::Linear => (lo.abs() * 0.1)
-                .max(1e-300)
-                .max(if lo == 0.0 { 1.0 } else { 0.0 }),
+            Scale::Linear => (lo.abs() * 0.1).max(1e-300),
             Scale::Log => 0.5,
         };
         lo -= pad;
@@ -914,5 +916,20 @@ mod tests {
         let line = svg.lines().find(|l| l.starts_with("<polyline")).unwrap();
         assert_eq!(line.matches(',').count(), 3);
         assert!(svg.contains(">1</text>") && svg.contains(">100</text>"));
+    }
+
+    /// Data that are all zero (a front that never wears) get an axis from 0 to 1,
+    /// not -1 to 1: no negative ticks for a quantity that may not be negative. A
+    /// constant non-zero value keeps a ±10 % band around it.
+    #[test]
+    fn all_zero_data_start_the_axis_at_zero() {
+        let zeros = Axis::linear("wear");
+        let ((lo, hi), ticks) = axis_layout(&zeros, [0.0, 0.0, 0.0].into_iter());
+        assert_eq!((lo, hi), (0.0, 1.0));
+        assert!(ticks
+            .iter()
+            .all(|t| t.at >= 0.0 && !t.label.starts_with('-')));
+        let ((lo, hi), _) = axis_layout(&zeros, [5.0, 5.0].into_iter());
+        assert!(lo < 5.0 && hi > 5.0 && lo >= 4.0 && hi <= 6.0, "{lo} {hi}");
     }
 }
