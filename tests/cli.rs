@@ -374,3 +374,67 @@ fn every_command_names_the_formats_it_writes() {
         assert_eq!(listed.join(", "), *accepted, "{command}: {help}");
     }
 }
+
+/// The text report's single-asperity pull-off follows the scene's law: JKR's
+/// 1.5πγR (the micro-gear, γ = 0.1 J/m², R = 1 µm: 471 nN) and DMT's 2πγR, 4/3 of it
+/// (the DLC contact, γ = 50 mJ/m², R = 2 µm: 628 nN); the JSON key
+/// `asperity_pull_off_force` keeps JKR's value whatever the law.
+#[test]
+fn eval_text_names_the_single_asperity_pull_off_of_the_law() {
+    let text = |name: &str| {
+        let out = common::stdout(
+            wearopt().args(["eval", &format!("problems/{name}.toml")]),
+            0,
+        );
+        String::from_utf8(out).unwrap()
+    };
+    let gear = text("micro-gear");
+    assert!(gear.contains("one asperity (JKR 1.5πγR): 471 nN"), "{gear}");
+    let dlc = text("dlc-contact");
+    assert!(dlc.contains("one asperity (DMT 2πγR): 628 nN"), "{dlc}");
+    let out = common::stdout(
+        wearopt().args(["eval", "problems/dlc-contact.toml", "--format", "json"]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let f = v["asperity_pull_off_force"].as_f64().unwrap();
+    assert!(
+        (f / (1.5 * std::f64::consts::PI * 0.05 * 2e-6) - 1.0).abs() < 1e-12,
+        "{f}"
+    );
+}
+
+/// An optimum that wears exactly nothing (only plastic junctions wear, and none
+/// forms at the optimum's hardness) is said in words, not as "improvement ×inf";
+/// the JSON `improvement_factor` is then null, never Inf.
+#[test]
+fn optimize_says_why_an_optimum_wears_nothing() {
+    let out = common::stdout(
+        wearopt().args(["optimize", "tests/data/study_zero_wear.toml"]),
+        0,
+    );
+    let text = String::from_utf8(out).unwrap();
+    assert!(text.contains("Status: optimal"), "{text}");
+    assert!(
+        text.contains("(zero at the optimum: only plastic junctions wear, and no asperity is tall enough to turn plastic; every design where that holds wears nothing"),
+        "{text}"
+    );
+    assert!(!text.contains("inf"), "{text}");
+    let out = common::stdout(
+        wearopt().args([
+            "optimize",
+            "tests/data/study_zero_wear.toml",
+            "--format",
+            "json",
+        ]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["objective"].as_f64(), Some(0.0));
+    assert!(
+        v["improvement_factor"].is_null(),
+        "{}",
+        v["improvement_factor"]
+    );
+    assert!(v["baseline_objective"].as_f64().unwrap() > 0.0);
+}

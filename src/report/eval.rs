@@ -597,7 +597,7 @@ pub fn text(r: &EvalReport) -> String {
     }
     match (ev.pull_off_force, ev.log10_pull_off_force) {
         (Some(f), Some(l)) => line(format!(
-            "  pull-off force {} (10^{} N) at d = {}; one asperity (JKR 1.5πγR): {}",
+            "  pull-off force {} (10^{} N) at d = {}; one asperity ({}): {}",
             si(f, "N", 4),
             // Five significant digits would round 10^-310658.7 to 10^-310660.
             if l.abs() < 1e4 {
@@ -606,7 +606,20 @@ pub fn text(r: &EvalReport) -> String {
                 format!("{l:.1}")
             },
             ev.pull_off_separation.map_or("-".into(), |d| si(d, "m", 4)),
-            si(ev.asperity_pull_off_force, "N", 3)
+            // One sphere's pull-off under the scene's law: JKR 1.5πγR (the JSON
+            // key), DMT 2πγR (Derjaguin: 4/3 of it).
+            match ev.adhesion_model {
+                AdhesionModel::Jkr => "JKR 1.5πγR",
+                AdhesionModel::Dmt => "DMT 2πγR",
+            },
+            si(
+                match ev.adhesion_model {
+                    AdhesionModel::Jkr => ev.asperity_pull_off_force,
+                    AdhesionModel::Dmt => ev.asperity_pull_off_force * 4.0 / 3.0,
+                },
+                "N",
+                3
+            )
         )),
         (Some(f), None) => line(format!("  pull-off force {} (no adhesion)", si(f, "N", 3))),
         // γ > 0 but no pull-off: a warning above says why.
@@ -649,16 +662,8 @@ pub fn text(r: &EvalReport) -> String {
             sig(ev.log10_wear_rate, 5)
         ));
     } else {
-        // No wearing area at all (its logarithm is -∞): no wear coefficient, or
-        // only plastic junctions wear and the plastic ones lie beyond the
-        // Gaussian's reach (the model sets them to zero, not a rounded tiny number).
-        let why = if sc.wear_coefficient == 0.0 {
-            "the wear coefficient k is 0"
-        } else if sc.wear_area == WearArea::Plastic {
-            "only plastic junctions wear, and no asperity is tall enough to turn plastic"
-        } else {
-            "no contact wears"
-        };
+        // No wearing area at all (its logarithm is -∞).
+        let why = super::zero_wear_reason(sc);
         line(format!(
             "  wear rate V/L = {}  (zero: {why})",
             si(ev.wear_rate, "m³/m", 4)

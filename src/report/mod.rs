@@ -44,6 +44,19 @@ pub(crate) fn objective_unit(name: &str) -> &'static str {
     }
 }
 
+/// Why a scene's wear is exactly zero (its logarithm -∞), in words: no wear
+/// coefficient, or only plastic junctions wear and none lies within the Gaussian's
+/// reach (the model sets their share to zero, not to a rounded tiny number).
+pub(crate) fn zero_wear_reason(sc: &crate::model::Scene) -> &'static str {
+    if sc.wear_coefficient == 0.0 {
+        "the wear coefficient k is 0"
+    } else if sc.wear_area == crate::model::WearArea::Plastic {
+        "only plastic junctions wear, and no asperity is tall enough to turn plastic"
+    } else {
+        "no contact wears"
+    }
+}
+
 /// The dimension of a design variable (by its problem-file name).
 pub(crate) fn design_dimension(name: &str) -> crate::problem::units::Dimension {
     use crate::optimize::{DesignQuantity, Named};

@@ -218,7 +218,14 @@ pub fn text(name: &str, o: &Optimum) -> String {
             o.objective_name,
             si(o.objective, unit, 4),
             si(o.baseline_objective, unit, 4),
-            if broken.is_empty() {
+            if o.objective == 0.0 && o.baseline_objective > 0.0 && unit.starts_with("m³") {
+                // A ratio would be ×inf: say why nothing wears, and that the
+                // optimum is then one of many designs.
+                format!(
+                    "\n  (zero at the optimum: {}; every design where that holds wears nothing, and this is one of them)",
+                    super::zero_wear_reason(&o.scene)
+                )
+            } else if broken.is_empty() {
                 format!(
                     " (improvement ×{})",
                     sig(o.baseline_objective / o.objective, 4)

@@ -249,16 +249,13 @@ fn linear_ticks(lo: f64, hi: f64) -> ((f64, f64), Vec<Tick>) {
         .into_iter()
         .find(|m| m * mag >= raw * (1.0 - 1e-9))
         .unwrap_or(10.0);
-    // step = m · 10^exp; tick k is k·m·10^exp, computed as an integer times a
-    // power of ten (or divided by one) so 0.1 steps print as 0.3, not 0.30000000000000004.
+    // step = m · 10^exp; tick k is the double nearest k·m·10^exp, read from its
+    // decimal form so that 0.1 steps print as 0.3, not 0.30000000000000004, and
+    // 5e-146 steps as 1.5e-145, not 1.4999999999999994e-145 (10^146 is not exact).
     let step = m * mag;
     let value = |k: i64| -> f64 {
-        let n = k as f64 * m;
-        if exp >= 0 {
-            n * 10f64.powi(exp)
-        } else {
-            n / 10f64.powi(-exp)
-        }
+        let n = k * m as i64;
+        format!("{n}e{exp}").parse().unwrap_or(n as f64 * mag)
     };
     let k0 = (lo / step + 1e-9).floor() as i64;
     let k1 = (hi / step - 1e-9).ceil() as i64;
@@ -903,6 +900,15 @@ mod tests {
         assert_eq!(labels, ["-0.3", "-0.2", "-0.1", "0", "0.1", "0.2", "0.3"]);
         let ((lo, hi), _) = linear_ticks(2.0e-9, 7.5e-9);
         assert_eq!((lo, hi), (2e-9, 8e-9));
+        // Far from 1 the ticks are the decimal values themselves (10^146 is not a
+        // double: dividing by it printed 1.4999999999999994e-145).
+        let ((lo, hi), ticks) = linear_ticks(0.0, 1.309e-145);
+        assert_eq!((lo, hi), (0.0, 1.5e-145));
+        let labels: Vec<&str> = ticks.iter().map(|t| t.label.as_str()).collect();
+        assert_eq!(labels, ["0", "5e-146", "1e-145", "1.5e-145"]);
+        let ((_, hi), ticks) = linear_ticks(0.0, 2.7e200);
+        assert_eq!(hi, 3e200);
+        assert_eq!(ticks[1].label, "1e200");
     }
 
     #[test]
