@@ -17,7 +17,7 @@ use super::dmt::{hertz, noncontact, Noncontact};
 use super::gauss;
 use super::law::{AsperityLaw, Attraction};
 use super::scaled::Scaled;
-use super::special::{gauss_scaled, kappa, tail0, tail1};
+use super::special::{gauss_scaled, kappa, tail0, tail1_given};
 
 /// The largest scale difference κ - E at which [`Integrals`] adds the shares at
 /// the contact scale (the non-contact mantissa times e^{κ-E} ≤ e^{300} stays finite;
@@ -385,6 +385,7 @@ impl Model {
         let c = &self.contact;
         let dc = self.transition.critical_interference;
         let scale_exponent = kappa(h);
+        let t0_h = tail0(h);
         let mut out = Integrals {
             separation: h,
             scale_exponent,
@@ -393,9 +394,9 @@ impl Model {
             dload_dh_elastic: 0.0,
             dload_dh_plastic: 0.0,
             d2load_dh2: 0.0,
-            area: tail1(h),
+            area: tail1_given(h, t0_h),
             plastic_area: 0.0,
-            contacts: tail0(h),
+            contacts: t0_h,
             plastic_contacts: 0.0,
             load_noncontact: 0.0,
             dload_dh_noncontact: 0.0,
@@ -417,8 +418,9 @@ impl Model {
             // When the rescale underflows, the plastic asperities lie beyond the
             // weight's range (and c_p Δc may overflow): they carry nothing.
             if rescale != 0.0 {
-                t0 = tail0(u_c) * rescale;
-                let t1 = tail1(u_c) * rescale;
+                let t0_c = tail0(u_c);
+                t0 = t0_c * rescale;
+                let t1 = tail1_given(u_c, t0_c) * rescale;
                 g = gauss_scaled(u_c) * rescale;
                 ug = u_c * g;
                 out.plastic_contacts = t0;
