@@ -71,7 +71,7 @@
 //! h = 40 or 60 is this power law, not an underflow; it decays like b^{-2}.
 
 use super::gauss;
-use super::integrals::Quadrature;
+use super::integrals::{contact_level, Quadrature};
 use super::law::Attraction;
 use super::special::SQRT_TWO_PI;
 
@@ -153,6 +153,24 @@ fn exp_fast(x: f64) -> f64 {
     // `shifted` are shifted out.
     let scale = f64::from_bits(shifted.to_bits().wrapping_add(1023) << 52);
     (1.0 + (r + r2 * q)) * scale
+}
+
+/// The last two passes of a panel: the exponentials of the log-weights `arg` (in
+/// place, a branch-free loop that vectorizes), then Σ f, Σ -f u, Σ f (u² - 1)
+/// with f = w e^{arg}, summed serially in node order.
+#[inline(always)]
+fn panel_sums(w: &[f64], arg: &mut [f64], u: &[f64]) -> (f64, f64, f64) {
+    for x in arg.iter_mut() {
+        *x = exp_fast(*x);
+    }
+    let (mut s0, mut s1, mut s2) = (0.0, 0.0, 0.0);
+    for ((&w, &e), &u) in w.iter().zip(arg.iter()).zip(u) {
+        let f = w * e;
+        s0 += f;
+        s1 -= f * u;
+        s2 += f * (u * u - 1.0);
+    }
+    (s0, s1, s2)
 }
 
 /// The non-contact load and its first two h-derivatives, as mantissas scaled
@@ -459,17 +477,7 @@ fn quadrature_body(layout: &Layout, attraction: Attraction, c_0: f64, h: f64) ->
                 }
             }
         }
-        for x in &mut arg[..count] {
-            *x = exp_fast(*x);
-        }
-        let (mut pl, mut pd, mut pdd) = (0.0, 0.0, 0.0);
-        for i in 0..count {
-            let f = weight[i] * arg[i];
-            let u = us[i];
-            pl += f;
-            pd -= f * u;
-            pdd += f * (u * u - 1.0);
-        }
+        let (pl, pd, pdd) = panel_sums(&weight[..count], &mut arg[..count], &us[..count]);
         load += pl * half;
         dload += pd * half;
         d2load += pdd * half;
@@ -527,14 +535,7 @@ fn hertz_avx2(quadrature: &Quadrature, h: f64, dc: f64, bounds: &[f64]) -> (f64,
 fn hertz_body(quadrature: &Quadrature, h: f64, dc: f64, bounds: &[f64]) -> (f64, f64, f64) {
     // The log-weight's minimum over [0, Δc], and a panel's level above it.
     let peak = (-h).max(0.0).min(dc);
-    let level_of = |a: f64, b: f64| -> f64 {
-        if h >= 0.0 {
-            a * (h + 0.5 * a)
-        } else {
-            let x = (-h).max(a).min(b);
-            0.5 * ((h + x) * (h + x) - (h + peak) * (h + peak))
-        }
-    };
+    let level_of = |a: f64, b: f64| contact_level(h, peak, a, b);
     let t_ref = peak.sqrt();
     let u_ref = h + t_ref * t_ref;
     let (mut load, mut dload, mut d2load) = (0.0, 0.0, 0.0);
@@ -582,17 +583,7 @@ fn hertz_body(quadrature: &Quadrature, h: f64, dc: f64, bounds: &[f64]) -> (f64,
                 // Δ^{3/2} dΔ = 2t⁴ dt.
                 weight[i] = rule.weights[i] * 2.0 * (t2 * t2);
             }
-            for x in &mut arg[..count] {
-                *x = exp_fast(*x);
-            }
-            let (mut pl, mut pd, mut pdd) = (0.0, 0.0, 0.0);
-            for i in 0..count {
-                let f = weight[i] * arg[i];
-                let u = us[i];
-                pl += f;
-                pd -= f * u;
-                pdd += f * (u * u - 1.0);
-            }
+            let (pl, pd, pdd) = panel_sums(&weight[..count], &mut arg[..count], &us[..count]);
             load += pl * half;
             dload += pd * half;
             d2load += pdd * half;

@@ -478,14 +478,7 @@ impl Model {
         let c_a = self.contact.c_a;
         // The log-weight's minimum over [0, Δc]: panels are graded from it.
         let peak = (-h).max(0.0).min(dc);
-        let level_of = |a: f64, b: f64| -> f64 {
-            if h >= 0.0 {
-                a * (h + 0.5 * a)
-            } else {
-                let x = (-h).max(a).min(b);
-                0.5 * ((h + x) * (h + x) - (h + peak) * (h + peak))
-            }
-        };
+        let level_of = |a: f64, b: f64| contact_level(h, peak, a, b);
         let s0 = self.s_touch;
         let s0_3 = self.c_d_cubed;
         let mut load = 0.0;
@@ -608,6 +601,20 @@ impl Model {
             out[..n].reverse();
             n
         }
+    }
+}
+
+/// The level of the contact panel [a, b] (in Δ) at separation h: how far the
+/// log-weight (h + Δ)²/2 at the panel's point nearest its minimum over [0, Δc]
+/// (at Δ = `peak` = min(max(-h, 0), Δc)) lies above that minimum; for h ≥ 0,
+/// a (h + a/2) without cancellation.
+#[inline]
+pub(super) fn contact_level(h: f64, peak: f64, a: f64, b: f64) -> f64 {
+    if h >= 0.0 {
+        a * (h + 0.5 * a)
+    } else {
+        let x = (-h).max(a).min(b);
+        0.5 * ((h + x) * (h + x) - (h + peak) * (h + peak))
     }
 }
 
