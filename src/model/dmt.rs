@@ -297,11 +297,15 @@ const LAYOUT_DUGDALE: Layout = Layout {
 
 /// The composite Gauss–Legendre form (module docs).
 fn quadrature(attraction: Attraction, c_0: f64, h: f64) -> Noncontact {
-    let layout = match attraction {
+    quadrature_with(layout_of(attraction), attraction, c_0, h)
+}
+
+/// The production layout of an attraction.
+fn layout_of(attraction: Attraction) -> &'static Layout {
+    match attraction {
         Attraction::VanDerWaals { .. } => &LAYOUT_VDW,
         Attraction::Dugdale { .. } => &LAYOUT_DUGDALE,
-    };
-    quadrature_with(layout, attraction, c_0, h)
+    }
 }
 
 /// [`quadrature`] on a given layout.
@@ -739,10 +743,7 @@ mod tests {
                 Attraction::VanDerWaals { range },
                 Attraction::Dugdale { range },
             ] {
-                let layout = match attraction {
-                    Attraction::VanDerWaals { .. } => &LAYOUT_VDW,
-                    Attraction::Dugdale { .. } => &LAYOUT_DUGDALE,
-                };
+                let layout = layout_of(attraction);
                 for k in -40..=200 {
                     let h = 0.1 * k as f64 + 0.013;
                     let portable = quadrature_body(layout, attraction, 0.7, h);

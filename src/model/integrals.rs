@@ -680,12 +680,6 @@ mod tests {
             assert!(b[0] >= 0.0 && b[n - 1] <= m.critical_interference());
         }
     }
-}
-
-#[cfg(test)]
-mod hertz_tests {
-    use super::*;
-    use crate::model::law::Attraction;
 
     /// The DMT Hertz quadrature (`dmt::hertz`) on the production layout against a
     /// fine one (order 32, log-weight step 1.5: 8× the panels, each of higher

@@ -198,6 +198,18 @@ pub struct Evaluation {
     pub other_model: Option<OtherModel>,
 }
 
+impl Evaluation {
+    /// One asperity's pull-off under the scene's law (N): JKR's 1.5πγR (the
+    /// field [`Evaluation::asperity_pull_off_force`]) or Derjaguin's 2πγR under DMT,
+    /// 4/3 of it.
+    pub fn law_asperity_pull_off_force(&self) -> f64 {
+        match self.adhesion_model {
+            AdhesionModel::Jkr => self.asperity_pull_off_force,
+            AdhesionModel::Dmt => self.asperity_pull_off_force * 4.0 / 3.0,
+        }
+    }
+}
+
 /// The headline numbers of the other asperity law, for a scene in the JKR–DMT
 /// transition (0.3 ≤ φ0 ≤ 3) where the two laws bracket the truth.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -606,20 +606,11 @@ pub fn text(r: &EvalReport) -> String {
                 format!("{l:.1}")
             },
             ev.pull_off_separation.map_or("-".into(), |d| si(d, "m", 4)),
-            // One sphere's pull-off under the scene's law: JKR 1.5πγR (the JSON
-            // key), DMT 2πγR (Derjaguin: 4/3 of it).
             match ev.adhesion_model {
                 AdhesionModel::Jkr => "JKR 1.5πγR",
                 AdhesionModel::Dmt => "DMT 2πγR",
             },
-            si(
-                match ev.adhesion_model {
-                    AdhesionModel::Jkr => ev.asperity_pull_off_force,
-                    AdhesionModel::Dmt => ev.asperity_pull_off_force * 4.0 / 3.0,
-                },
-                "N",
-                3
-            )
+            si(ev.law_asperity_pull_off_force(), "N", 3)
         )),
         (Some(f), None) => line(format!("  pull-off force {} (no adhesion)", si(f, "N", 3))),
         // γ > 0 but no pull-off: a warning above says why.
