@@ -50,7 +50,7 @@ use argmin::solver::gaussnewton::GaussNewton;
 use serde::Serialize;
 
 use crate::problem::catalogue::{self, Material};
-use crate::problem::units::{format_quantity, parse_quantity, Dimension};
+use crate::units::{format_quantity, parse_quantity, Dimension};
 
 /// Confidence level of the reported intervals.
 pub const CONFIDENCE_LEVEL: f64 = 0.95;

@@ -21,12 +21,12 @@ use crate::model::{self, Evaluation, EvaluationOptions, Sensitivity};
 use crate::optimize::materials::{rank_materials, MaterialRanking};
 use crate::optimize::pareto::{self, Front, Observer, ParetoError, Silent};
 use crate::optimize::{ObserverFactory, OptimizeError, Optimum, ParetoSpec, Study};
-use crate::problem::units::{parse_quantity, Dimension};
 use crate::problem::{catalogue, Problem};
 use crate::report;
 use crate::surface::psd::Psd;
 use crate::surface::read::{self, parse_height_unit, Format, Overrides, ReadError};
 use crate::surface::{analyse, level, Levelling, Roughness, Settings, SurfaceError};
+use crate::units::{parse_quantity, Dimension};
 
 /// Bad input to one of the documents (a command line program exits with code 2).
 ///

@@ -1,18 +1,20 @@
 //! wearopt: adhesive wear of rough micro-contacts.
 //!
-//! Data flows one way, from a problem file to a report:
+//! Data flows one way, from a problem file or a scan to a document and its
+//! renderings. The modules stand on floors, and each imports only modules on the
+//! floors below it (`docs/architecture.md` draws the house):
 //!
-//! * [`model`]: the physics of the rough-surface adhesion model (`docs/model.md`):
-//!   coefficients, indices, one asperity, the load and area integrals, the
-//!   separation solve, Archard wear. No I/O.
-//! * [`optimize`]: the constrained design search (SQP on clarabel subproblems,
-//!   argmin-driven, multistart with rayon).
-//! * [`problem`]: the TOML problem-file schema, units, the material catalogue and
-//!   validation with precise errors.
-//! * [`report`]: rendering results as text, JSON and CSV.
-//! * [`documents`]: the command line's JSON documents (eval, optimize, pareto,
-//!   roughness) computed from a problem or a height map, for the CLI and the
-//!   Python package alike.
+//! 1. [`units`]: dimensions, reading and writing quantities. Imports nothing.
+//! 2. [`model`]: the physics of the rough-surface adhesion model (`docs/model.md`):
+//!    coefficients, indices, the asperity laws, the load and area integrals, the
+//!    separation solve, Archard wear. No I/O. [`surface`]: height maps to σ, R and N.
+//! 3. [`optimize`]: the constrained design search (SQP on clarabel subproblems,
+//!    argmin-driven, multistart with rayon); [`accuracy`] and [`figures`].
+//! 4. [`sweep`]: design-space sampling; [`problem`]: the TOML problem-file schema,
+//!    the material catalogue and validation with precise errors; [`calibrate`].
+//! 5. [`report`]: rendering documents as text, JSON, CSV, SVG and HTML.
+//! 6. [`documents`]: the commands' documents computed from a problem or a height
+//!    map, for the command line and the Python package alike.
 
 #![warn(missing_docs)]
 
@@ -26,3 +28,4 @@ pub mod problem;
 pub mod report;
 pub mod surface;
 pub mod sweep;
+pub mod units;

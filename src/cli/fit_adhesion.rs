@@ -7,8 +7,8 @@ use anyhow::Result;
 use clap::Args;
 
 use wearopt::calibrate::{self, CalibrationError, FitSettings, FrictionCoefficient, Quoted};
-use wearopt::problem::units::{parse_quantity, Dimension};
 use wearopt::report::{self, Format};
+use wearopt::units::{parse_quantity, Dimension};
 
 use super::format::{formats, refuse};
 

@@ -71,8 +71,8 @@
 //! h = 40 or 60 is this power law, not an underflow; it decays like b^{-2}.
 
 use super::gauss;
-use super::integrals::{contact_level, Quadrature};
 use super::law::Attraction;
+use super::quadrature::{contact_level, Quadrature};
 use super::special::SQRT_TWO_PI;
 
 /// The window ends where the weight is e^{-46} below its largest value.

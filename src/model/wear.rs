@@ -5,8 +5,9 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use super::integrals::{Model, Quadrature};
+use super::integrals::Model;
 use super::law::{AdhesionModel, AsperityLaw, AttractionKind};
+use super::quadrature::Quadrature;
 use super::scaled::Scaled;
 use super::scene::{Scene, WearArea};
 use super::separation::{

@@ -33,8 +33,8 @@ use serde::Serialize;
 use super::functions::{objective_value, quantity_value};
 use super::study::{Constraint, DesignQuantity, DesignVariable};
 use super::{OptimizationStatus, OptimizeError, Optimum, Study};
+use crate::model::Material;
 use crate::model::{evaluate, Evaluation, EvaluationOptions, Scene, Status};
-use crate::problem::catalogue::Material;
 
 /// Relative slack when checking a constraint at a fixed design.
 const CONSTRAINT_SLACK: f64 = 1e-9;

@@ -12,7 +12,7 @@
 //! problems/x.toml:7: contact.load = "10 uQ": unknown unit "uQ"; expected a force such as "10 uN", "2 mN" or a number in newtons
 //! ```
 //!
-//! The schema (all values SI numbers or strings with units, see [`units`]):
+//! The schema (all values SI numbers or strings with units, see [`crate::units`]):
 //!
 //! ```toml
 //! name = "Polysilicon micro-gear hub"   # optional; default: the file stem
@@ -51,7 +51,6 @@ pub mod notes;
 pub(crate) mod raw;
 mod study;
 mod topography;
-pub mod units;
 
 use std::ops::Range;
 use std::path::Path;
@@ -71,11 +70,11 @@ use crate::optimize::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
     Objective, OptimizerSettings, ParetoDirection, ParetoSpec, DEFAULT_RELEASE_MARGIN,
 };
+use crate::units::{format_number, format_quantity, parse_quantity, Dimension};
 use catalogue::Material;
 use error::line_of;
 use raw::{RawBody, RawBound, RawInteger, RawProblem, RawQuantity};
 use study::DesignKeys;
-use units::{format_number, format_quantity, parse_quantity, Dimension};
 
 /// Z0 when the file does not give `interface.interatomic_distance`: 0.3 nm.
 pub const DEFAULT_INTERATOMIC_DISTANCE: f64 = 0.3e-9;

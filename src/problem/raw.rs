@@ -21,11 +21,11 @@ pub enum RawQuantity {
 }
 
 impl RawQuantity {
-    /// As input to [`super::units::parse_quantity`].
-    pub fn as_input(&self) -> super::units::QuantityInput<'_> {
+    /// As input to [`crate::units::parse_quantity`].
+    pub fn as_input(&self) -> crate::units::QuantityInput<'_> {
         match self {
-            RawQuantity::Number(x) => super::units::QuantityInput::Number(*x),
-            RawQuantity::Text(s) => super::units::QuantityInput::Text(s),
+            RawQuantity::Number(x) => crate::units::QuantityInput::Number(*x),
+            RawQuantity::Text(s) => crate::units::QuantityInput::Text(s),
         }
     }
 }

@@ -6,11 +6,11 @@
 
 use serde::Serialize;
 
-use super::units::Dimension;
 use crate::optimize::{
     Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective, OptimizerSettings,
     ParetoSpec,
 };
+use crate::units::Dimension;
 
 /// The dimension a quantity's values and bounds are written in.
 pub trait Dimensioned {

@@ -18,10 +18,10 @@ use serde::Serialize;
 use toml::Spanned;
 
 use super::raw::{RawQuantity, RawRoughness};
-use super::units::Dimension;
 use super::{Accept, ProblemError, Reader};
 use crate::surface::read::{self, parse_height_unit, Format, Overrides};
 use crate::surface::{analyse, Levelling, Roughness, Settings};
+use crate::units::Dimension;
 
 /// Where the scene's roughness came from when the file names a scan.
 #[derive(Debug, Clone, PartialEq, Serialize)]

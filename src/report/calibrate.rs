@@ -6,7 +6,7 @@ use super::{si, sig};
 use crate::calibrate::{
     Calibration, CalibrationNote, FrictionCoefficient, PointNote, CONFIDENCE_LEVEL,
 };
-use crate::problem::units::{format_number, format_quantity, Dimension};
+use crate::units::{format_number, format_quantity, Dimension};
 
 /// The formats `wearopt fit-adhesion` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];

@@ -158,9 +158,9 @@ pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
         .chain(pull_off.iter())
         .map(|p| p.1.abs())
         .fold(0.0, f64::max);
-    let (wf, wu) = super::units::axis_unit(max_w, "N");
+    let (wf, wu) = crate::units::axis_unit(max_w, "N");
     let (df, du) =
-        super::units::axis_unit(points.iter().map(|p| p.0.abs()).fold(0.0, f64::max), "m");
+        crate::units::axis_unit(points.iter().map(|p| p.0.abs()).fold(0.0, f64::max), "m");
     let scaled = |p: &(f64, f64)| (p.0 / df, p.1 / wf);
     let mut plot = LinePlot::new(
         title,

@@ -7,8 +7,8 @@ use super::sig;
 use crate::optimize::materials::{
     Exclusion, MaterialNote, MaterialOutcome, MaterialRanking, MaterialResult,
 };
-use crate::problem::units::{format_quantity, Dimension};
 use crate::problem::Dimensioned;
+use crate::units::{format_quantity, Dimension};
 
 /// The formats a material ranking is written in (those of `wearopt optimize`).
 pub const FORMATS: &[super::Format] = super::optimize::FORMATS;

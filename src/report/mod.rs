@@ -7,7 +7,7 @@
 //! the list of those formats (`FORMATS`, checked by [`format::parse`]):
 //! [`eval`], [`optimize`], [`materials`], [`pareto`], [`sweep`], [`accuracy`],
 //! [`calibrate`] (fit-adhesion), [`roughness`], [`curve`], [`figures`]. Shared
-//! pieces: [`units`] (SI prefixes and the numbers' text), [`words`] (the library's
+//! pieces: [`crate::units`] (SI prefixes and the numbers' text), [`words`] (the library's
 //! warnings and notes in words), [`svg`] (line plots and bar charts).
 
 pub mod accuracy;
@@ -23,7 +23,7 @@ pub mod pareto;
 pub mod roughness;
 pub mod svg;
 pub mod sweep;
-pub mod units;
+
 pub mod words;
 
 /// A JSON value as the command line writes it: pretty-printed, one trailing newline.
@@ -58,13 +58,12 @@ pub(crate) fn zero_wear_reason(sc: &crate::model::Scene) -> &'static str {
 }
 
 /// The dimension of a design variable (by its problem-file name).
-pub(crate) fn design_dimension(name: &str) -> crate::problem::units::Dimension {
+pub(crate) fn design_dimension(name: &str) -> crate::units::Dimension {
     use crate::optimize::{DesignQuantity, Named};
     use crate::problem::Dimensioned;
-    DesignQuantity::from_name(name).map_or(crate::problem::units::Dimension::Dimensionless, |q| {
-        q.dimension()
-    })
+    DesignQuantity::from_name(name)
+        .map_or(crate::units::Dimension::Dimensionless, |q| q.dimension())
 }
 
+pub use crate::units::{number, si, sig, sig_exp};
 pub use format::Format;
-pub use units::{number, si, sig, sig_exp};

@@ -5,7 +5,7 @@ use serde_json::{json, Map, Value};
 
 use super::{number, si, sig, sig_exp};
 use crate::optimize::{OptimizationStatus, Optimum};
-use crate::problem::units::format_quantity;
+use crate::units::format_quantity;
 
 /// The formats `wearopt optimize` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[
@@ -76,10 +76,8 @@ fn constraint_quantity(name: &str, x: f64) -> String {
     use crate::optimize::{ConstraintQuantity, Named};
     use crate::problem::Dimensioned;
     let d = ConstraintQuantity::from_name(name)
-        .map_or(crate::problem::units::Dimension::Dimensionless, |q| {
-            q.dimension()
-        });
-    super::units::quantity(x, d, 4)
+        .map_or(crate::units::Dimension::Dimensionless, |q| q.dimension());
+    crate::units::quantity(x, d, 4)
 }
 
 fn design_object(names: &[&str], values: &[f64]) -> Value {

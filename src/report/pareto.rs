@@ -11,8 +11,8 @@ use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, si, sig, sig_exp};
 use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
 use crate::optimize::{AdhesionMeasure, Constraint, ParetoDirection};
-use crate::problem::units::format_quantity;
 use crate::problem::Dimensioned;
+use crate::units::format_quantity;
 
 /// The formats `wearopt pareto` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[

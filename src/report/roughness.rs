@@ -4,10 +4,10 @@ use serde_json::{json, Value};
 
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{si, sig, sig_exp};
-use crate::problem::units::{format_quantity, Dimension};
 use crate::surface::psd::{Psd, PsdKind};
 use crate::surface::read::Format;
 use crate::surface::{Roughness, Warning};
+use crate::units::{format_quantity, Dimension};
 
 /// The formats `wearopt roughness` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];

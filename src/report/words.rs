@@ -4,10 +4,10 @@
 
 use serde_json::{json, Value};
 
-use super::units::{format_number, format_quantity, sig_exp};
 use crate::model::{Evaluation, Note, ScalarInput, SensitivityGap, Warning};
-use crate::problem::units::Dimension;
 use crate::problem::{CatalogueProperty, InputNote};
+use crate::units::Dimension;
+use crate::units::{format_number, format_quantity, sig_exp};
 
 /// The symbol, name and dimension of a checked input.
 fn input_words(i: ScalarInput) -> (&'static str, Dimension) {

@@ -5,7 +5,7 @@
 //! `NaN` marks a missing point.
 
 use super::{grid_size, length_unit, Format, Scan};
-use crate::problem::units::{parse_quantity, Dimension};
+use crate::units::{parse_quantity, Dimension};
 
 pub(super) fn read(bytes: &[u8]) -> Result<Scan, String> {
     let text = std::str::from_utf8(bytes)

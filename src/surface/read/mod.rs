@@ -19,7 +19,7 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::{HeightMap, SurfaceError};
-use crate::problem::units::{parse_quantity, Dimension};
+use crate::units::{parse_quantity, Dimension};
 
 /// A file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

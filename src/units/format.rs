@@ -1,30 +1,6 @@
-//! Numbers and quantities for people: one place that decides how every report writes
-//! a value with its unit.
-//!
-//! An SI prefix belongs to the unit it stands before, and on a power of a length it is
-//! raised with the length: 5.702e-13 m² is `0.5702 µm²` (not `570.2 fm²`), a wear rate of
-//! 5.7e-17 m³/m is `57.02 µm³/m`, an asperity density of 1e13 m⁻² is `10 µm⁻²`. Micro is
-//! always `µ`, powers are superscripts. Every string these functions write is read back by
-//! the problem-file reader ([`crate::problem::units::parse_quantity`]) as the same value
-//! to the digits shown (tested for every dimension over many magnitudes).
+//! Writing quantities for people (see [`crate::units`]).
 
-use crate::problem::units::Dimension;
-
-/// The unit symbol reports write for a dimension (`""` for a plain number).
-pub fn symbol(dimension: Dimension) -> &'static str {
-    match dimension {
-        Dimension::Pressure => "Pa",
-        Dimension::Force => "N",
-        Dimension::Length => "m",
-        Dimension::Area => "m²",
-        Dimension::Volume => "m³",
-        Dimension::WearRate => "m³/m",
-        Dimension::InverseArea => "m⁻²",
-        Dimension::SurfaceEnergy => "J/m²",
-        Dimension::Dimensionless => "",
-        Dimension::Time => "s",
-    }
-}
+use super::{symbol, Dimension};
 
 /// Prefixes a unit of the first power may take, largest first.
 const PREFIXES: [(i32, &str); 11] = [
@@ -235,7 +211,7 @@ pub fn sig_exp(x: f64, prec: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::problem::units::parse_quantity;
+    use crate::units::parse_quantity;
 
     #[test]
     fn numbers_round_trip() {
