@@ -2,7 +2,7 @@
 """High-precision reference tables for the DMT asperity law of wearopt (MODEL.md section 7).
 
 WHAT
-    Writes two CSV tables that tests/dmt_reference.rs compares the evaluator against (~1e-12):
+    Writes two CSV tables that tests/all/dmt_reference.rs compares the evaluator against (~1e-12):
 
       reference_dmt_points.csv   contact parts of P(h) (elastic, plastic), dP/dh of the contact
                                  part, A(h), Ap(h), and the non-contact load N(h) with dN/dh, for
@@ -41,7 +41,7 @@ HOW / PRECISION
     integrands are scaled to magnitude ~1 by their maximum (mpmath.quad tests absolute error).
 
     Extrema: dP/dh (method 1) is scanned from h = -4 in steps of 0.05 (0.25 beyond 10) for its
-    single sign change (tests/dmt.rs and the module docs of separation.rs prove there is exactly
+    single sign change (tests/all/dmt.rs and the module docs of separation.rs prove there is exactly
     one with gamma > 0); it is refined with mpmath.findroot (anderson) and P there is taken
     by both methods.
 

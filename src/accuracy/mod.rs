@@ -3,7 +3,7 @@
 //!
 //! * [`reference`](mod@reference): the direct form of docs/model.md §3 by adaptive Gauss–Kronrod
 //!   with a root solve for Δ1(Δ) at every node (validated against 40-digit
-//!   mpmath tables in `tests/accuracy.rs`).
+//!   mpmath tables in `tests/all/accuracy.rs`).
 //! * [`finite_difference`]: the step rules of the wear-rate sensitivities and a
 //!   Richardson-tableau reference derivative.
 //! * [`work_precision`]: the report's numbers: for every [`Quadrature`] setting

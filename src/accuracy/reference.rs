@@ -27,7 +27,7 @@
 //!
 //! Its error estimate is the sum of |K15 − G7| over the final segments (which
 //! overestimates the K15 error of a smooth segment by orders of magnitude) plus a
-//! rounding term 2ε·∫|f|. `tests/accuracy.rs` checks it against 40-digit mpmath
+//! rounding term 2ε·∫|f|. `tests/all/accuracy.rs` checks it against 40-digit mpmath
 //! tables: it agrees to a few 1e-16 relative to |elastic| + |plastic|.
 //!
 //! **DMT (docs/model.md §7).** [`ReferenceModel::with_law`] takes the DMT law the
@@ -38,7 +38,7 @@
 //! geometrically towards the pole's scale z0 at d = 0; or w = 1 − d/Δ_h on [0, Δ_h]),
 //! its mantissa scaled by `e^{κ(−h)}`. The fast path instead integrates the
 //! attraction by fixed Gauss–Legendre panels in `model::dmt` and the Hertz load in
-//! s = Δ^{1/4}. `tests/accuracy.rs` checks this reference against the 40-digit
+//! s = Δ^{1/4}. `tests/all/accuracy.rs` checks this reference against the 40-digit
 //! `reference_dmt_points.csv`.
 
 use std::cmp::Ordering;

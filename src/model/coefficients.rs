@@ -64,7 +64,7 @@ impl Coefficients {
     /// reach the special functions.
     ///
     /// The accepted box, c_a in [0, 1e100] and c_h in (0, 1e100] or inf, is where
-    /// the stability properties hold (tests/stability.rs); it reaches far past any
+    /// the stability properties hold (tests/all/stability.rs); it reaches far past any
     /// physical scene (theta = 6 pi / c_a^2 >= 2e-199).
     pub fn checked(c_a: f64, c_h: f64) -> Result<Self, DomainError> {
         if !(0.0..=MAX_COEFFICIENT).contains(&c_a) {

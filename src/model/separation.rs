@@ -30,7 +30,7 @@
 //! single-root facts**: a compressive load has exactly one root; a tensile load
 //! above the minimum has one root on the falling branch (the one docs/model.md §4
 //! chooses) and one on the rising branch; below it, the surfaces separate.
-//! tests/dmt.rs checks both on a grid of h for both attractions. The searches
+//! tests/all/dmt.rs checks both on a grid of h for both attractions. The searches
 //! below are the J ≥ 0 paths, with the non-contact share carried at its own scale. When J < 0 (strong adhesion, soft asperities)
 //! the last term is a bump of width ~1 around h = -Δc that can add a local
 //! maximum and minimum; there the critical points are isolated by a sign scan of
@@ -47,7 +47,7 @@
 //! h = 4e4) is a bogus slope. Then the Newton walk below finds the minimum from the
 //! usual start in 20–35 evaluations: its location to ~ε relative (a point δ off it
 //! has P̄' ~ δ·(parts), rounding ε·h·(parts)), P̄ there to ~ε h² relative in its
-//! mantissa (and to the rounding of κ in its logarithm). tests/dmt_weak.rs checks
+//! mantissa (and to the rounding of κ in its logarithm). tests/all/dmt_weak.rs checks
 //! both against a 60-digit table, the closed-form limit and JKR. Beyond |h| = 1e6
 //! the mantissa is no longer resolved; `evaluate` then reports no pull-off with a
 //! warning (the force is below 10^{-1e11} N), never a silent null.
@@ -74,10 +74,10 @@
 //!   hint when it lies inside the piece.
 //!
 //! The stopping rules make every result the root (or minimum) to a few ulps of
-//! h whatever the start: hints change the cost only (tests/search_cost.rs checks
+//! h whatever the start: hints change the cost only (tests/all/search_cost.rs checks
 //! 1e-14 relative against cold starts on the shipped scenes, DMT variants,
 //! extremes and 250 pairs of nearby study designs, and pins the counts). Measured
-//! (tests/search_cost.rs's table): the hub costs 9 evaluations cold under JKR
+//! (tests/all/search_cost.rs's table): the hub costs 9 evaluations cold under JKR
 //! (pull-off 5, solve 4, areas included), 10 under DMT with either attraction
 //! (5 + 5, 6 + 4), and 2 + 2 from the hints of a design 1e-6 away; the
 //! five-variable study's designs 3.6 on average warm from 1e-6 away, 5.5 from

@@ -4,13 +4,13 @@
 //! checker written here), the CLI end to end and its exit codes, and output that
 //! does not depend on the thread count.
 
-mod common;
-use common::wearopt;
+use crate::common;
+use crate::common::wearopt;
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use common::{parse_xml, Element};
+use crate::common::{parse_xml, Element};
 use wearopt::figures::{
     assess_claims, compute_curve, compute_figures, least_squares, paper_figures, Curve, Figure,
     FigureSettings, FigureSpec, LinearFit, Varied,

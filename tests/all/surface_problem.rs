@@ -1,8 +1,8 @@
 //! `[roughness] topography` in problem files, and `wearopt roughness` end to end on the
 //! shipped scan.
 
-mod common;
-use common::wearopt;
+use crate::common;
+use crate::common::wearopt;
 
 use std::path::{Path, PathBuf};
 

@@ -2,8 +2,7 @@
 //! zipfile, by hand from the published formats: scripts/make_scans.py), malformed files of
 //! each kind, arbitrary bytes, and the CLI's refusals (exit code 2).
 
-mod common;
-use common::wearopt;
+use crate::common::wearopt;
 
 use std::path::Path;
 

@@ -11,11 +11,9 @@
 //! JKR's minimum on the same coefficients where the two laws are the same plastic law;
 //! and at scene level: a pull-off, or a warning saying why there is none.
 
-mod common;
-
 use std::path::Path;
 
-use common::{num, table};
+use crate::common::{num, table};
 use wearopt::model::{
     evaluate, find_pull_off, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
     EvaluationOptions, Model, Quadrature, Warning,

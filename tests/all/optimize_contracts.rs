@@ -109,7 +109,7 @@ fn nems_switch_study_reaches_the_global_optimum_with_any_seed() {
 
 /// The same contracts over more seeds.
 #[test]
-#[ignore = "32 seeds of three studies; run with `cargo test --test optimize_contracts -- --ignored more_seeds`"]
+#[ignore = "32 seeds of three studies; run with `cargo test --test all optimize_contracts::more_seeds -- --ignored`"]
 fn more_seeds_reach_the_global_optimum() {
     assert_global_for_seeds(
         "problems/micro-gear-study.toml",
@@ -130,7 +130,7 @@ fn more_seeds_reach_the_global_optimum() {
 
 /// Recomputes the references above with 256 starts (slow in a debug build).
 #[test]
-#[ignore = "256-start reference runs (about 15 s); run with `cargo test --test optimize_contracts -- --ignored many_start`"]
+#[ignore = "256-start reference runs (about 15 s); run with `cargo test --test all optimize_contracts::many_start -- --ignored`"]
 fn many_start_references() {
     for (rel, reference, seeds) in [
         (

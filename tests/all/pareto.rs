@@ -4,12 +4,10 @@
 //! count, the SVG is well-formed with the expected elements, and the command
 //! line end to end (formats, streaming, exit codes).
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
+use crate::common::parse_xml;
 use assert_cmd::Command;
-use common::parse_xml;
 use wearopt::model::{evaluate, EvaluationOptions, Scene, Status};
 use wearopt::optimize::pareto::{pareto, Front, FrontStatus, Silent, PULL_OFF_FLOOR};
 use wearopt::optimize::{

@@ -24,7 +24,7 @@
 //! (a million cases per property):
 //!
 //! ```sh
-//! cargo test --release --test stability -- --ignored --nocapture
+//! cargo test --release --test all stability:: -- --ignored --nocapture
 //! ```
 
 use std::cmp::Ordering;
@@ -678,7 +678,7 @@ fn scene_outputs_sane(scene: &Scene) -> Result<(), TestCaseError> {
 
 // ---------------------------------------------------------------- fuzz
 
-const MICRO_GEAR: &str = include_str!("../problems/micro-gear.toml");
+const MICRO_GEAR: &str = include_str!("../../problems/micro-gear.toml");
 
 /// A shipped problem file with one line replaced, one line deleted or junk inserted.
 fn mutated_problem() -> impl Strategy<Value = String> {
@@ -889,7 +889,7 @@ fn fail(e: &dyn std::fmt::Display) -> String {
 }
 
 /// A million cases per property. Run:
-/// `cargo test --release --test stability -- --ignored --nocapture`
+/// `cargo test --release --test all stability:: -- --ignored --nocapture`
 #[test]
 #[ignore = "long run: a million cases per property (minutes in release)"]
 fn long_run_million_cases() {

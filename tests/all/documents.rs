@@ -5,8 +5,7 @@
 //! its own writer, so the Pareto comparison checks two independent assemblies of
 //! the same object.
 
-mod common;
-use common::wearopt;
+use crate::common::wearopt;
 
 use std::path::Path;
 

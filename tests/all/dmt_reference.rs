@@ -11,9 +11,7 @@
 //! weight's peak sits inside the attraction's reach, so it is measured against
 //! |N|·(1 + |h|), the size of the terms ±u φ it integrates.
 
-mod common;
-
-use common::{num, rel, table};
+use crate::common::{num, rel, table};
 use wearopt::model::{find_pull_off, AsperityLaw, Attraction, Coefficients, Model, Quadrature};
 
 const TOLERANCE: f64 = 1e-12;

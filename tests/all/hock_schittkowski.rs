@@ -499,7 +499,7 @@ fn hock_schittkowski_problems_solve_to_optimal_from_their_standard_starts() {
 
 /// The iteration table of one problem, for diagnosis.
 #[test]
-#[ignore = "diagnostic: HS=15 cargo test --test hock_schittkowski iteration_table -- --ignored --nocapture"]
+#[ignore = "diagnostic: HS=15 cargo test --test all hock_schittkowski::iteration_table -- --ignored --nocapture"]
 fn iteration_table() {
     struct Print;
     impl argmin::core::observers::Observe<wearopt::optimize::SqpState> for Print {

@@ -11,11 +11,9 @@
 //! * [`DEFAULT_TOLERANCE`] 1e-13: what README claims of the default quadrature
 //!   (4e-14 against a finer rule), with room for the reference's own error.
 
-mod common;
-
 use std::collections::HashMap;
 
-use common::{num, table};
+use crate::common::{num, table};
 use wearopt::accuracy::finite_difference::{self, StepRule};
 use wearopt::accuracy::reference::ReferenceModel;
 use wearopt::accuracy::{self, Quantity, Row, RowLaw, WorkPrecision};

@@ -2,8 +2,8 @@
 //! material's study run on its own, is sorted by wear rate, does not depend on the
 //! thread count, and excludes or evaluates where the module docs say.
 
-mod common;
-use common::wearopt;
+use crate::common;
+use crate::common::wearopt;
 
 use wearopt::model::AdhesionModel;
 use wearopt::optimize::materials::{

@@ -2,10 +2,10 @@
 //! markup after the doctype), holds every plot it promises, has no URL at all, and —
 //! where a headless Chromium is installed — renders without a console error.
 
-mod common;
+use crate::common;
 
+use crate::common::parse_xml;
 use assert_cmd::Command;
-use common::parse_xml;
 
 fn page(args: &[&str]) -> String {
     let out = Command::cargo_bin("wearopt")

@@ -5,7 +5,7 @@
 //!
 //! The bounds pinned here are the measured counts with a little room; the table
 //! behind them prints with
-//! `cargo test --release --test search_cost -- --ignored --nocapture`.
+//! `cargo test --release --test all search_cost:: -- --ignored --nocapture`.
 
 use std::path::Path;
 

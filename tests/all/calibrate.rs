@@ -2,8 +2,8 @@
 //! parameters, the per-point closed form, the paper's table, interval coverage, the
 //! command line and every kind of bad data.
 
-mod common;
-use common::wearopt;
+use crate::common;
+use crate::common::wearopt;
 
 use std::f64::consts::PI;
 use std::path::PathBuf;

@@ -1,8 +1,7 @@
 //! Reports as a user meets them: units, small defects of the command line, and the
 //! numbers a designer decides on. Each test runs the binary on a problem file.
 
-mod common;
-use common::wearopt;
+use crate::common::wearopt;
 
 fn stdout_of(args: &[&str]) -> String {
     let out = wearopt().args(args).output().unwrap();

@@ -1,7 +1,7 @@
 //! The command line end to end: outputs, contracts of JSON/CSV keys, exit codes.
 
-mod common;
-use common::wearopt;
+use crate::common;
+use crate::common::wearopt;
 
 #[test]
 fn eval_json_has_the_contract_keys() {

@@ -2,7 +2,7 @@
 //! variables) joins into the unsharded output byte for byte, reruns resume,
 //! output does not depend on the thread count, and bad input is refused.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 

@@ -9,9 +9,7 @@
 //! max(|value|, |elastic part| + |plastic part|) for loads, since P̄ crosses zero
 //! where any method can only be accurate relative to the size of its parts.
 
-mod common;
-
-use common::{num, rel, table};
+use crate::common::{num, rel, table};
 use wearopt::model::{landscape, solve_separation, Coefficients, Model, SeparationOutcome};
 
 const TOLERANCE: f64 = 1e-12;

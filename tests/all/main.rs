@@ -1,0 +1,35 @@
+//! The integration tests, as modules of one test binary (one build and one link
+//! instead of one per file; `cargo test` runs them all, `cargo test --test all
+//! MODULE::` one file's). Test data lives in `tests/data/` and `tests/bad_input/`.
+
+mod common;
+
+mod accuracy;
+mod calibrate;
+mod cli;
+mod dmt;
+mod dmt_reference;
+mod dmt_studies;
+mod dmt_weak;
+mod documents;
+mod embed;
+mod figures;
+mod hock_schittkowski;
+mod html;
+mod materials;
+mod model_invariants;
+mod optimize;
+mod optimize_contracts;
+mod optimize_regressions;
+mod pareto;
+mod pareto_regressions;
+mod problem_files;
+mod reference;
+mod reports;
+mod search_cost;
+mod stability;
+mod surface;
+mod surface_problem;
+mod surface_read;
+mod svg_bounds;
+mod sweep;
