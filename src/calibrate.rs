@@ -156,7 +156,8 @@ pub enum CalibrationError {
     /// A setting (radius, μ, modulus, quoted value, material) out of range.
     #[error("{name} {value}: {expected}")]
     Setting {
-        /// The option.
+        /// The option, by its keyword name (`quoted_gamma`; the command line
+        /// spells it as the flag `--quoted-gamma`).
         name: &'static str,
         /// The value given.
         value: String,
@@ -383,7 +384,7 @@ impl FitSettings {
     pub fn validate(&self) -> Result<(), CalibrationError> {
         if !(self.radius.is_finite() && self.radius > 0.0) {
             return Err(CalibrationError::Setting {
-                name: "--radius",
+                name: "radius",
                 value: self.radius.to_string(),
                 expected: "must be a finite length > 0, e.g. \"0.3 mm\"".into(),
             });
@@ -391,7 +392,7 @@ impl FitSettings {
         if let FrictionCoefficient::Given(mu) = self.friction_coefficient {
             if !(mu.is_finite() && mu > 0.0) {
                 return Err(CalibrationError::Setting {
-                    name: "--mu",
+                    name: "mu",
                     value: mu.to_string(),
                     expected: "must be a finite number > 0, e.g. 0.1".into(),
                 });
@@ -400,7 +401,7 @@ impl FitSettings {
         if let Some(e) = self.equivalent_modulus {
             if !(e.is_finite() && e > 0.0) {
                 return Err(CalibrationError::Setting {
-                    name: "--modulus",
+                    name: "modulus",
                     value: e.to_string(),
                     expected: "must be a finite pressure > 0, e.g. \"100 GPa\"".into(),
                 });
@@ -408,8 +409,8 @@ impl FitSettings {
         }
         if let Some(q) = &self.quoted {
             for (name, v) in [
-                ("--quoted-gamma", q.work_of_adhesion),
-                ("--quoted-bond-strength", q.bond_strength),
+                ("quoted_gamma", q.work_of_adhesion),
+                ("quoted_bond_strength", q.bond_strength),
             ] {
                 if let Some(v) = v {
                     if !(v.is_finite() && v > 0.0) {
@@ -445,7 +446,7 @@ pub fn equivalent_modulus(a: &Material, b: &Material) -> f64 {
 pub fn lookup_materials(names: &[String]) -> Result<Vec<&'static Material>, CalibrationError> {
     if names.is_empty() || names.len() > 2 {
         return Err(CalibrationError::Setting {
-            name: "--materials",
+            name: "materials",
             value: names.join(","),
             expected:
                 "give one material (both bodies) or two, ball first: e.g. --materials steel,silicon"
@@ -456,7 +457,7 @@ pub fn lookup_materials(names: &[String]) -> Result<Vec<&'static Material>, Cali
         .iter()
         .map(|n| {
             catalogue::lookup(n).ok_or_else(|| CalibrationError::Setting {
-                name: "--materials",
+                name: "materials",
                 value: n.clone(),
                 expected: format!(
                     "not in the catalogue{} (one of: {})",

@@ -12,15 +12,15 @@
 //!    argmin-driven, multistart with rayon); [`accuracy`] and [`figures`].
 //! 4. [`sweep`]: design-space sampling; [`problem`]: the TOML problem-file schema,
 //!    the material catalogue and validation with precise errors; [`calibrate`].
-//! 5. [`report`]: rendering documents as text, JSON, CSV, SVG and HTML.
-//! 6. [`documents`]: the commands' documents computed from a problem or a height
-//!    map, for the command line and the Python package alike.
+//! 5. [`app`]: one function per command, typed options in, a typed document out,
+//!    for the command line and the Python package alike.
+//! 6. [`report`]: renders a document in a format (text, JSON, CSV, SVG, HTML).
 
 #![warn(missing_docs)]
 
 pub mod accuracy;
+pub mod app;
 pub mod calibrate;
-pub mod documents;
 pub mod figures;
 pub mod model;
 pub mod optimize;

@@ -1,34 +1,40 @@
 //! `wearopt._wearopt`: the compiled half of the Python package `wearopt`.
 //!
-//! Every function here calls the library functions the command line calls to
-//! produce its JSON (the same loading, the same computation, the same report
-//! writer), so a Python result and `wearopt … --format json` agree to the last
-//! digit by construction. The Python half (`python/wearopt/__init__.py`) turns
-//! the JSON into dicts and the arrays into numpy shapes. The GIL is released
-//! while the model runs.
+//! An adapter, as the command line is: each function turns keyword arguments into
+//! the options of one `wearopt::app` function, calls it, and hands the document to
+//! the report stage for the JSON `wearopt … --format json` writes. A Python result
+//! and the command line's JSON therefore agree to the last digit by construction.
+//! Errors are worded in keyword arguments (`points=1: must lie in 2..=200`), never
+//! in flags. The Python half (`python/wearopt/__init__.py`) turns the JSON into
+//! dicts and the arrays into numpy shapes. The GIL is released while the model runs.
 
-use numpy::{IntoPyArray, PyReadonlyArray1};
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rayon::prelude::*;
 
-use wearopt::documents::{self, RoughnessOptions};
-use wearopt::model::{AsperityLaw, Attraction, Coefficients, Model, Quadrature};
-use wearopt::problem::Problem;
+use wearopt::app::curve::LawOptions;
+use wearopt::app::fit_adhesion::{FitAdhesionOptions, FrictionCoefficient, Modulus};
+use wearopt::app::pareto::{ParetoOptions, Silent};
+use wearopt::app::roughness::RoughnessOptions;
+use wearopt::app::sweep::SweepOptions;
+use wearopt::app::{self, AppError, OptionName, Problem, Vocabulary};
 use wearopt::report;
-use wearopt::surface::Levelling;
-use wearopt::sweep::{Method, Shard, Sweep, SweepError};
+use wearopt::units::{parse_quantity, Dimension};
 
 fn value_error(message: impl Into<String>) -> PyErr {
     PyValueError::new_err(message.into())
 }
 
+/// An application error in Python's words.
+fn words(e: AppError) -> String {
+    e.message(Vocabulary::Keywords)
+}
+
 /// Where a problem comes from: a file path, or a dict sent as JSON text.
 fn load(source: &str, is_path: bool) -> Result<(Problem, String), String> {
     if is_path {
-        let problem =
-            wearopt::problem::load(std::path::Path::new(source)).map_err(|e| e.to_string())?;
+        let problem = app::load(std::path::Path::new(source)).map_err(|e| e.to_string())?;
         Ok((problem, source.to_string()))
     } else {
         let origin = "<problem dict>";
@@ -39,7 +45,7 @@ fn load(source: &str, is_path: bool) -> Result<(Problem, String), String> {
         })?;
         // Line numbers would point into the generated TOML, not at anything the
         // caller wrote: the dotted key names the place instead.
-        let problem = wearopt::problem::parse(&text, origin).map_err(|e| {
+        let problem = app::parse(&text, origin).map_err(|e| {
             let message = e.to_string();
             match message
                 .strip_prefix(origin)
@@ -58,33 +64,29 @@ fn load(source: &str, is_path: bool) -> Result<(Problem, String), String> {
     }
 }
 
-/// A document as JSON text for the Python half to read.
-fn text(document: serde_json::Value) -> String {
-    document.to_string()
+/// Runs `f` without the GIL; its error becomes a `ValueError`.
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
+    py.detach(f).map_err(value_error)
 }
 
 /// `wearopt eval FILE --format json`.
 #[pyfunction]
 fn evaluate_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let (problem, origin) = load(&source, is_path)?;
-        documents::eval_json(&problem, &origin)
-            .map(text)
-            .map_err(|e| e.to_string())
+        let doc = app::eval::eval(&problem, &origin, &Default::default()).map_err(words)?;
+        Ok(report::eval::json_document(&doc).to_string())
     })
-    .map_err(|e: String| value_error(e))
 }
 
 /// `wearopt optimize FILE --format json` (a ranking when `[design]` lists materials).
 #[pyfunction]
 fn optimize_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let (problem, origin) = load(&source, is_path)?;
-        documents::optimize_json(&problem, &origin)
-            .map(text)
-            .map_err(|e| e.to_string())
+        let doc = app::optimize::optimize(&problem, &origin, Default::default()).map_err(words)?;
+        Ok(report::optimize::json_document(&doc).to_string())
     })
-    .map_err(|e: String| value_error(e))
 }
 
 /// `wearopt pareto FILE [--points N] --format json`.
@@ -96,93 +98,31 @@ fn pareto_json(
     is_path: bool,
     points: Option<usize>,
 ) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let (problem, origin) = load(&source, is_path)?;
-        documents::pareto_json(&problem, &origin, points)
-            .map(text)
-            .map_err(|e| e.to_string())
+        let options = ParetoOptions {
+            points,
+            constraint_values: false,
+        };
+        let doc = app::pareto::pareto(&problem, &origin, &options, &Silent).map_err(words)?;
+        Ok(report::pareto::json_document(&doc).to_string())
     })
-    .map_err(|e: String| value_error(e))
 }
 
-/// The checks of `wearopt curve`, with its messages.
-fn check_curve_input(theta: f64, lambda: f64, c_h: f64, h: f64) -> Result<(), String> {
-    if theta.is_nan() || theta <= 0.0 {
-        return Err(format!(
-            "--theta {theta}: must be > 0 (or inf for no adhesion)"
-        ));
-    }
-    if lambda.is_nan() || lambda <= 0.0 {
-        return Err(format!(
-            "--lambda {lambda}: must be > 0 (or inf for no plasticity)"
-        ));
-    }
-    if c_h.is_nan() || c_h <= 0.0 {
-        return Err(format!(
-            "--hardness-coefficient {c_h}: must be > 0 (or inf for no plasticity)"
-        ));
-    }
-    if !h.is_finite() {
-        return Err(format!("h {h}: separations must be finite"));
-    }
-    Ok(())
-}
-
-/// The coefficients `wearopt curve` builds from θ, λ and c_h.
-fn coefficients(theta: f64, lambda: f64, c_h: f64) -> Result<Coefficients, String> {
-    let c = if theta.is_infinite() {
-        Coefficients::new(0.0, c_h)
-    } else if lambda.is_infinite() {
-        Coefficients::from_indices_or_limits(theta, lambda, c_h)
-    } else {
-        Coefficients::from_indices(theta, lambda)
-    };
-    if c.c_a.is_nan() || c.c_h.is_nan() {
-        return Err(format!(
-            "coefficients are undefined for θ = {theta}, λ = {lambda}"
-        ));
-    }
-    Ok(c)
-}
-
-/// The asperity law of `curve`, with the command line's messages.
-fn curve_law(
+/// The asperity law of `curve`'s keyword arguments.
+fn law(
     adhesion_model: &str,
     attraction: Option<&str>,
-    range: Option<f64>,
-) -> Result<AsperityLaw, String> {
-    match adhesion_model {
-        "jkr" => {
-            if attraction.is_some() || range.is_some() {
-                return Err("--attraction and --attraction-range apply to --adhesion-model dmt only (the default is jkr)".to_string());
-            }
-            Ok(AsperityLaw::Jkr)
-        }
-        "dmt" => {
-            let range = range.ok_or_else(|| "--adhesion-model dmt needs --attraction-range D: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)".to_string())?;
-            if !(range > 0.0 && range.is_finite()) {
-                return Err(format!(
-                    "--attraction-range {range}: must be finite and > 0"
-                ));
-            }
-            Ok(AsperityLaw::Dmt(match attraction {
-                None | Some("van_der_waals") => Attraction::VanDerWaals { range },
-                Some("dugdale") => Attraction::Dugdale { range },
-                Some(other) => {
-                    return Err(format!(
-                        "--attraction {other:?}: expected \"van_der_waals\" or \"dugdale\""
-                    ))
-                }
-            }))
-        }
-        other => Err(format!(
-            "--adhesion-model {other:?}: expected \"jkr\" or \"dmt\""
-        )),
-    }
+    attraction_range: Option<f64>,
+) -> Result<LawOptions, AppError> {
+    Ok(LawOptions {
+        adhesion_model: app::curve::adhesion_model(OptionName("adhesion_model"), adhesion_model)?,
+        attraction: attraction
+            .map(|a| app::curve::attraction(OptionName("attraction"), a))
+            .transpose()?,
+        attraction_range,
+    })
 }
-
-/// Elements computed per parallel task (fixed: results never depend on threads).
-const CURVE_CHUNK: usize = 2048;
 
 /// The columns of `wearopt curve` at each (θ, λ, c_h, h) of four equally long
 /// arrays (the Python side broadcasts them).
@@ -199,8 +139,8 @@ fn curve_arrays<'py>(
     attraction: Option<String>,
     attraction_range: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let law =
-        curve_law(&adhesion_model, attraction.as_deref(), attraction_range).map_err(value_error)?;
+    let law = law(&adhesion_model, attraction.as_deref(), attraction_range)
+        .map_err(|e| value_error(words(e)))?;
     let slice = |a: &PyReadonlyArray1<'py, f64>| -> PyResult<Vec<f64>> {
         Ok(a.as_slice()
             .map_err(|e| value_error(e.to_string()))?
@@ -212,81 +152,24 @@ fn curve_arrays<'py>(
         slice(&hardness_coefficient)?,
         slice(&h)?,
     );
-    let n = h.len();
-    if theta.len() != n || lam.len() != n || c_h.len() != n {
-        return Err(value_error(
-            "theta, lam, hardness_coefficient and h must have one length",
-        ));
-    }
-    let columns = py.detach(|| -> Result<[Vec<f64>; 6], String> {
-        for i in 0..n {
-            check_curve_input(theta[i], lam[i], c_h[i], h[i]).map_err(|e| {
-                if n > 1 {
-                    format!("{e} (element {i})")
-                } else {
-                    e
-                }
-            })?;
-        }
-        let chunks: Vec<Result<Vec<[f64; 6]>, String>> = (0..n)
-            .collect::<Vec<_>>()
-            .par_chunks(CURVE_CHUNK)
-            .map(|idx| -> Result<Vec<[f64; 6]>, String> {
-                let mut model: Option<((f64, f64, f64), Model, f64)> = None;
-                idx.iter()
-                    .map(|&i| {
-                        let key = (theta[i], lam[i], c_h[i]);
-                        let fresh = !matches!(&model, Some((k, _, _)) if *k == key);
-                        if fresh {
-                            let m = Model::with_law(
-                                coefficients(key.0, key.1, key.2)
-                                    .map_err(|e| format!("{e} (element {i})"))?,
-                                law,
-                                Quadrature::default(),
-                            );
-                            let dc = m.critical_interference();
-                            model = Some((key, m, dc));
-                        }
-                        let (_, m, dc) = model.as_ref().expect("model built above");
-                        let at = m.at(h[i]);
-                        Ok([
-                            at.load().value(),
-                            at.area().value(),
-                            at.plastic_area().value(),
-                            *dc,
-                            at.dload_dh().value(),
-                            at.noncontact_load().value(),
-                        ])
-                    })
-                    .collect()
-            })
-            .collect();
-        let mut cols: [Vec<f64>; 6] = Default::default();
-        for c in &mut cols {
-            c.reserve(n);
-        }
-        for chunk in chunks {
-            for row in chunk? {
-                for (c, v) in cols.iter_mut().zip(row) {
-                    c.push(v);
-                }
-            }
-        }
-        Ok(cols)
-    });
-    let [load, area, plastic_area, critical_interference, dload_dh, noncontact_load] =
-        columns.map_err(value_error)?;
+    let rows = detached(py, || {
+        app::curve::curve_at(&theta, &lam, &c_h, &h, &law).map_err(words)
+    })?;
+    let column = |f: fn(&app::curve::CurveRow) -> f64| rows.iter().map(f).collect::<Vec<f64>>();
     let out = PyDict::new(py);
     out.set_item("h", h.into_pyarray(py))?;
-    out.set_item("load", load.into_pyarray(py))?;
-    out.set_item("area", area.into_pyarray(py))?;
-    out.set_item("plastic_area", plastic_area.into_pyarray(py))?;
+    out.set_item("load", column(|r| r.load).into_pyarray(py))?;
+    out.set_item("area", column(|r| r.area).into_pyarray(py))?;
+    out.set_item("plastic_area", column(|r| r.plastic_area).into_pyarray(py))?;
     out.set_item(
         "critical_interference",
-        critical_interference.into_pyarray(py),
+        column(|r| r.critical_interference).into_pyarray(py),
     )?;
-    out.set_item("dload_dh", dload_dh.into_pyarray(py))?;
-    out.set_item("noncontact_load", noncontact_load.into_pyarray(py))?;
+    out.set_item("dload_dh", column(|r| r.dload_dh).into_pyarray(py))?;
+    out.set_item(
+        "noncontact_load",
+        column(|r| r.noncontact_load).into_pyarray(py),
+    )?;
     Ok(out)
 }
 
@@ -306,76 +189,81 @@ fn sweep_text(
     shard_count: u64,
     format: String,
 ) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let (problem, origin) = load(&source, is_path)?;
-        let method = match method.as_str() {
-            "sobol" => Method::Sobol,
-            "lhs" => Method::Lhs,
-            "grid" => Method::Grid,
-            other => {
-                return Err(format!(
-                    "method {other:?}: expected \"sobol\", \"lhs\" or \"grid\""
-                ))
-            }
-        };
+        let method = app::sweep::method(OptionName("method"), &method).map_err(words)?;
         let format = match format.as_str() {
             "csv" => report::sweep::Encoding::Csv,
             "json" => report::sweep::Encoding::Json,
-            other => return Err(format!("format {other:?}: expected \"csv\" or \"json\"")),
+            other => return Err(format!("format={other:?}: expected \"csv\" or \"json\"")),
         };
-        if !problem.study.materials.is_empty() {
-            return Err(format!("{origin}: {}", SweepError::Materials));
-        }
-        let shard = Shard::new(shard_index, shard_count).map_err(|e| e.to_string())?;
-        let sweep = Sweep::new(
-            &problem.scene,
-            &problem.study.design,
-            &problem.study.constraints,
-            method,
+        let options = |shard| SweepOptions {
             samples,
+            method,
             seed,
-        )
-        .map_err(|e| match e {
-            SweepError::Samples { .. } | SweepError::Grid { .. } => {
-                format!("--samples {samples}: {e}")
-            }
-            _ => format!("{origin}: {e}"),
-        })?;
+            shard,
+        };
+        // The sweep is checked before the shard, as the command line does.
+        app::sweep::plan(&problem, &origin, &options(app::sweep::Shard::WHOLE)).map_err(words)?;
+        let shard = app::sweep::shard(shard_index, shard_count).map_err(words)?;
+        let plan = app::sweep::plan(&problem, &origin, &options(shard)).map_err(words)?;
         let mut text = report::sweep::head(
             format,
             &report::sweep::Head {
-                name: &problem.name,
-                sweep: &sweep,
+                name: &plan.name,
+                sweep: &plan.sweep,
             },
         );
         let mut first = true;
-        sweep
-            .run(shard.range(samples), |rows| {
-                for r in rows {
-                    text.push_str(&report::sweep::row(format, &sweep, r, first));
-                    first = false;
-                }
-                Ok::<(), String>(())
-            })
-            .map_err(|e| e.to_string())?;
+        plan.run(|rows| {
+            for r in rows {
+                text.push_str(&report::sweep::row(format, &plan.sweep, r, first));
+                first = false;
+            }
+            Ok::<(), String>(())
+        })?;
         text.push_str(report::sweep::tail(format));
         Ok(text)
     })
-    .map_err(|e: String| value_error(e))
 }
 
 /// `wearopt merge` of parts held in memory.
 #[pyfunction]
 #[pyo3(signature = (parts, samples=None))]
 fn merge_text(py: Python<'_>, parts: Vec<String>, samples: Option<u64>) -> PyResult<String> {
-    py.detach(|| {
+    detached(py, || {
         let texts: Vec<&str> = parts.iter().map(String::as_str).collect();
         report::sweep::merge(&texts, samples).map_err(|(i, e)| match i {
             Some(i) => format!("part {i}: {e}"),
             None => format!("{} parts: {e}", parts.len()),
         })
     })
-    .map_err(value_error)
+}
+
+/// The roughness options of keyword arguments, checked in the command line's order:
+/// pixel size, height unit, cut-off, level.
+fn roughness_options(
+    cutoff: Option<&str>,
+    level: &str,
+    pixel_size: Option<&str>,
+    height_unit: Option<&str>,
+) -> Result<RoughnessOptions, AppError> {
+    use app::roughness::{height_unit as unit, length, levelling};
+    let pixel_size = pixel_size
+        .map(|t| length(OptionName("pixel_size"), t))
+        .transpose()?;
+    let height_unit = height_unit
+        .map(|t| unit(OptionName("height_unit"), t))
+        .transpose()?;
+    let cutoff = cutoff
+        .map(|t| length(OptionName("cutoff"), t))
+        .transpose()?;
+    Ok(RoughnessOptions {
+        cutoff,
+        level: levelling(OptionName("level"), level)?,
+        pixel_size,
+        height_unit,
+    })
 }
 
 /// `wearopt roughness FILE [--cutoff L] [--level K] [--pixel-size L] [--height-unit U] --format json`.
@@ -389,32 +277,175 @@ fn roughness_json(
     pixel_size: Option<String>,
     height_unit: Option<String>,
 ) -> PyResult<String> {
-    py.detach(|| {
-        let level = match level.as_str() {
-            "none" => Ok(Levelling::None),
-            "plane" => Ok(Levelling::Plane),
-            "quadratic" => Ok(Levelling::Quadratic),
-            other => Err(format!(
-                "level {other:?}: expected \"none\", \"plane\" or \"quadratic\""
-            )),
-        };
-        // The options' own checks come first, as they always have.
-        let options = RoughnessOptions::parse(
+    detached(py, || {
+        let options = roughness_options(
             cutoff.as_deref(),
-            Levelling::Plane,
+            &level,
             pixel_size.as_deref(),
             height_unit.as_deref(),
         )
-        .map_err(|e| e.to_string())?;
-        let options = RoughnessOptions {
-            level: level?,
-            ..options
-        };
-        documents::roughness_json(std::path::Path::new(&path), &options)
-            .map(text)
-            .map_err(|e| e.to_string())
+        .map_err(words)?;
+        let doc =
+            app::roughness::roughness(std::path::Path::new(&path), &options).map_err(words)?;
+        Ok(report::roughness::json_document(&doc).to_string())
     })
-    .map_err(|e: String| value_error(e))
+}
+
+/// The roughness of heights in memory (a 2-D array, rows along y), as
+/// `wearopt roughness` reports a scan.
+#[pyfunction]
+#[pyo3(signature = (heights, pixel_size, cutoff=None, level="plane".to_string(), height_unit=None))]
+fn roughness_array_json(
+    py: Python<'_>,
+    heights: PyReadonlyArray2<'_, f64>,
+    pixel_size: String,
+    cutoff: Option<String>,
+    level: String,
+    height_unit: Option<String>,
+) -> PyResult<String> {
+    let array = heights.as_array();
+    let (ny, nx) = array.dim();
+    let values: Vec<f64> = array.iter().copied().collect();
+    detached(py, || {
+        let options = roughness_options(
+            cutoff.as_deref(),
+            &level,
+            Some(&pixel_size),
+            height_unit.as_deref(),
+        )
+        .map_err(words)?;
+        let doc = app::roughness::roughness_of_heights("<height array>", nx, ny, values, &options)
+            .map_err(words)?;
+        Ok(report::roughness::json_document(&doc).to_string())
+    })
+}
+
+/// A quantity keyword argument: a string with a unit, read as `dimension`.
+fn quantity(name: &'static str, text: &str, dimension: Dimension) -> Result<f64, AppError> {
+    parse_quantity(text, dimension).map_err(|e| AppError::Invalid {
+        options: vec![(OptionName(name), format!("{text:?}"))],
+        rule: e.to_string(),
+    })
+}
+
+/// `wearopt fit-adhesion DATA --radius R … --format json`.
+#[pyfunction]
+#[pyo3(signature = (path, radius, mu=None, fit_mu=false, modulus=None, materials=None, quoted_gamma=None, quoted_bond_strength=None))]
+#[allow(clippy::too_many_arguments)]
+fn fit_adhesion_json(
+    py: Python<'_>,
+    path: String,
+    radius: String,
+    mu: Option<f64>,
+    fit_mu: bool,
+    modulus: Option<String>,
+    materials: Option<Vec<String>>,
+    quoted_gamma: Option<String>,
+    quoted_bond_strength: Option<String>,
+) -> PyResult<String> {
+    detached(py, || {
+        let options = (|| -> Result<FitAdhesionOptions, AppError> {
+            if mu.is_some() && fit_mu {
+                return Err(AppError::Invalid {
+                    options: vec![(OptionName("mu"), format!("{mu:?}"))],
+                    rule: "give mu or fit_mu=True, not both".to_string(),
+                });
+            }
+            let modulus = match (modulus, materials) {
+                (Some(_), Some(_)) => {
+                    return Err(AppError::Invalid {
+                        options: vec![(OptionName("modulus"), "…".to_string())],
+                        rule: "give modulus or materials, not both".to_string(),
+                    })
+                }
+                (Some(e), None) => Modulus::Value(quantity("modulus", &e, Dimension::Pressure)?),
+                (None, Some(m)) => Modulus::Materials(m),
+                (None, None) => Modulus::None,
+            };
+            Ok(FitAdhesionOptions {
+                radius: quantity("radius", &radius, Dimension::Length)?,
+                friction_coefficient: match (mu, fit_mu) {
+                    (Some(mu), _) => FrictionCoefficient::Given(mu),
+                    (None, true) => FrictionCoefficient::Fit,
+                    (None, false) => FrictionCoefficient::Default,
+                },
+                modulus,
+                quoted_gamma: quoted_gamma
+                    .as_deref()
+                    .map(|q| quantity("quoted_gamma", q, Dimension::SurfaceEnergy))
+                    .transpose()?,
+                quoted_bond_strength: quoted_bond_strength
+                    .as_deref()
+                    .map(|q| quantity("quoted_bond_strength", q, Dimension::Pressure))
+                    .transpose()?,
+            })
+        })()
+        .map_err(words)?;
+        let c = app::fit_adhesion::fit_adhesion(std::path::Path::new(&path), &options)
+            .map_err(words)?;
+        report::calibrate::render(&c, report::Format::Json).map_err(|e| e.to_string())
+    })
+}
+
+/// `wearopt figures [--out DIR] --format json`: the summary, and the files written
+/// into `out` when it is given.
+#[pyfunction]
+#[pyo3(signature = (points, load_min, load_max, out=None))]
+fn figures_json(
+    py: Python<'_>,
+    points: usize,
+    load_min: f64,
+    load_max: f64,
+    out: Option<String>,
+) -> PyResult<String> {
+    detached(py, || {
+        let settings = app::figures::FigureSettings {
+            points,
+            load_min,
+            load_max,
+        };
+        settings
+            .validate()
+            .map_err(|e| words(AppError::Figures(e)))?;
+        let folder = std::path::PathBuf::from(out.as_deref().unwrap_or(""));
+        if let Some(dir) = &out {
+            std::fs::create_dir_all(dir).map_err(|e| {
+                words(AppError::Output {
+                    option: OptionName("out"),
+                    path: dir.clone(),
+                    reason: e.to_string(),
+                })
+            })?;
+        }
+        let doc = app::figures::figures(&settings, &folder).map_err(words)?;
+        let doc = if out.is_some() {
+            for (path, which) in &doc.files {
+                std::fs::write(path, report::figures::file(&doc, *which))
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            }
+            doc
+        } else {
+            app::figures::FiguresDocument {
+                files: Vec::new(),
+                ..doc
+            }
+        };
+        report::figures::render(&doc, report::Format::Json).map_err(|e| e.to_string())
+    })
+}
+
+/// `wearopt accuracy [FILE] --format json`.
+#[pyfunction]
+#[pyo3(signature = (source=None, is_path=true))]
+fn accuracy_json(py: Python<'_>, source: Option<String>, is_path: bool) -> PyResult<String> {
+    detached(py, || {
+        let problem = source
+            .as_deref()
+            .map(|s| load(s, is_path).map(|(p, _)| p))
+            .transpose()?;
+        let wp = app::accuracy::accuracy(problem.as_ref()).map_err(words)?;
+        report::accuracy::render(&wp, report::Format::Json).map_err(|e| e.to_string())
+    })
 }
 
 /// The compiled functions of the `wearopt` package.
@@ -427,5 +458,9 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep_text, m)?)?;
     m.add_function(wrap_pyfunction!(merge_text, m)?)?;
     m.add_function(wrap_pyfunction!(roughness_json, m)?)?;
+    m.add_function(wrap_pyfunction!(roughness_array_json, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_adhesion_json, m)?)?;
+    m.add_function(wrap_pyfunction!(figures_json, m)?)?;
+    m.add_function(wrap_pyfunction!(accuracy_json, m)?)?;
     Ok(())
 }

@@ -12,6 +12,7 @@ import concurrent.futures
 import csv
 import io
 import json
+import re
 import os
 import shutil
 import stat
@@ -186,7 +187,8 @@ def test_curve_bad_input_has_the_cli_message(args, cli_args):
     message = r.stderr.strip().removeprefix("Error: ")
     with pytest.raises(ValueError) as e:
         wearopt.curve(*args)
-    assert str(e.value) == message
+    assert str(e.value) == keywords(message)
+    assert "--" not in str(e.value)
     with pytest.raises(ValueError, match=r"\(element 1\)"):
         wearopt.curve(*(np.array([good, bad]) for good, bad in zip((1.0, 1.0, 0.0), args)))
 
@@ -202,10 +204,19 @@ def test_curve_dmt_equals_cli_columns():
 
 
 def test_curve_other_laws_are_refused_plainly():
-    with pytest.raises(ValueError, match="adhesion-model"):
+    with pytest.raises(ValueError, match='^adhesion_model="magic": expected "jkr" or "dmt"$'):
         wearopt.curve(1.0, 1.0, 0.0, adhesion_model="magic")
-    with pytest.raises(ValueError, match="needs --attraction-range"):
+    with pytest.raises(ValueError, match='^adhesion_model="dmt" needs attraction_range: '):
         wearopt.curve(1.0, 1.0, 0.0, adhesion_model="dmt")
+    with pytest.raises(ValueError, match='^attraction="lj": expected "van_der_waals" or "dugdale"$'):
+        wearopt.curve(1.0, 1.0, 0.0, adhesion_model="dmt", attraction="lj", attraction_range=0.1)
+    with pytest.raises(ValueError, match="^attraction and attraction_range apply to "):
+        wearopt.curve(1.0, 1.0, 0.0, attraction_range=0.1)
+
+
+def keywords(message):
+    """A command-line message in Python's words: `--pixel-size "x"` is `pixel_size="x"`."""
+    return re.sub(r'--([a-z-]+) ("[^"]*"|\S+)', lambda m: f"{m[1].replace('-', '_')}={m[2]}", message)
 
 
 BAD = sorted((ROOT / "tests" / "bad_input").glob("*.toml"))
@@ -229,7 +240,7 @@ def test_bad_arguments():
         wearopt.evaluate({"contact": {"load": "10 uQ"}})
     with pytest.raises(ValueError):
         wearopt.evaluate({"contact": {"load": None}})
-    with pytest.raises(ValueError, match="--points 1: must lie in 2..=200"):
+    with pytest.raises(ValueError, match="^points=1: must lie in 2..=200$"):
         wearopt.pareto("problems/micro-gear.toml", points=1)
     with pytest.raises(ValueError, match="no \\[pareto\\] section"):
         wearopt.pareto("problems/gold-switch.toml")
@@ -237,7 +248,7 @@ def test_bad_arguments():
         wearopt.optimize("problems/gold-switch.toml")
     with pytest.raises(ValueError, match="must be m\\^5"):
         wearopt.sweep("problems/micro-gear-study.toml", 10, method="grid")
-    with pytest.raises(ValueError, match="shard 3/3"):
+    with pytest.raises(ValueError, match="^shard=3/3: "):
         wearopt.sweep("problems/micro-gear-study.toml", 10, shard=(3, 3))
     with pytest.raises(TypeError):
         wearopt.sweep("problems/micro-gear-study.toml", 10.0)
@@ -345,10 +356,57 @@ def test_roughness_bad_input_has_the_cli_message():
     r = cli("roughness", scan, "--cutoff", "-5 nm", ok=(2,))
     with pytest.raises(ValueError) as e:
         wearopt.roughness(scan, cutoff="-5 nm")
-    assert str(e.value) == r.stderr.strip().removeprefix("Error: ")
+    assert str(e.value) == keywords(r.stderr.strip().removeprefix("Error: "))
     r = cli("roughness", "problems/scans/self-affine-nm.npy", ok=(2,))
     with pytest.raises(ValueError) as e:
         wearopt.roughness("problems/scans/self-affine-nm.npy")
-    assert str(e.value) == r.stderr.strip().removeprefix("Error: ")
+    # The same message, but the way to supply the pixel size is Python's.
+    cli_message = r.stderr.strip().removeprefix("Error: ")
+    assert str(e.value).split(";")[0] == cli_message.split(";")[0]
+    assert "the keyword argument pixel_size=" in str(e.value) and "--" not in str(e.value)
     with pytest.raises(ValueError, match="level"):
         wearopt.roughness(scan, level="cubic")
+
+
+def test_new_commands_equal_the_cli_json(tmp_path):
+    # fit-adhesion, figures and the roughness of an array: the command line's JSON.
+    expected = json.loads(cli("fit-adhesion", "problems/ando-friction.csv", "--radius", "0.3mm",
+                              "--materials", "steel,silicon", "--format", "json").stdout)
+    assert wearopt.fit_adhesion("problems/ando-friction.csv", "0.3mm",
+                                materials=["steel", "silicon"]) == expected
+    expected = json.loads(cli("fit-adhesion", "problems/ando-friction.csv", "--radius", "1 mm",
+                              "--fit-mu", "--modulus", "100 GPa", "--format", "json").stdout)
+    assert wearopt.fit_adhesion("problems/ando-friction.csv", "1 mm", fit_mu=True,
+                                modulus="100 GPa") == expected
+    out = tmp_path / "figs"
+    expected = json.loads(cli("figures", "--out", str(out), "--points", "7", "--format", "json").stdout)
+    cli_files = {p: Path(p).read_text() for p in expected["files"]}
+    got = wearopt.figures(out=out, points=7)
+    assert got == expected
+    assert {p: Path(p).read_text() for p in got["files"]} == cli_files
+    z = np.load(ROOT / "problems" / "scans" / "self-affine-nm.npy")
+    by_file = wearopt.roughness(rel(ROOT / "problems" / "scans" / "self-affine-nm.npy"),
+                                pixel_size="20 nm", height_unit="nm")
+    by_array = wearopt.roughness(z, pixel_size="20 nm", height_unit="nm")
+    for k in ("summit_sigma", "summit_radius", "summit_density", "rms_height", "m0", "m2", "m4"):
+        if k in by_file:
+            assert by_array[k] == by_file[k], k
+
+
+def test_new_commands_word_errors_as_keywords():
+    with pytest.raises(ValueError, match="^radius="):
+        wearopt.fit_adhesion("problems/ando-friction.csv", "-1 mm")
+    with pytest.raises(ValueError, match="^materials=unobtainium: not in the catalogue"):
+        wearopt.fit_adhesion("problems/ando-friction.csv", "1 mm", materials=["unobtainium"])
+    with pytest.raises(ValueError, match="^points=2: must lie in 3..="):
+        wearopt.figures(points=2)
+    with pytest.raises(ValueError, match="^pixel_size=None"):
+        wearopt.roughness(np.zeros((8, 8)))
+
+
+def test_accuracy_equals_the_cli_json_but_for_times():
+    expected = json.loads(cli("accuracy", "problems/micro-gear.toml", "--format", "json").stdout)
+    got = wearopt.accuracy("problems/micro-gear.toml")
+    timeless = lambda rows: [{k: v for k, v in r.items() if k != "time_per_eval_ns"} for r in rows]
+    assert timeless(got["rows"]) == timeless(expected["rows"])
+    assert got.keys() == expected.keys()

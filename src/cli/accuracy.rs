@@ -6,10 +6,9 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::Args;
 
-use wearopt::accuracy::{work_precision, Options};
 use wearopt::report::{self, Format};
 
-use super::format::{formats, refuse};
+use super::format::formats;
 
 /// Arguments of `wearopt accuracy`.
 #[derive(Debug, Args)]
@@ -27,45 +26,14 @@ pub struct AccuracyArgs {
     pub plot: Option<PathBuf>,
 }
 
-/// The shipped scenes used when no file is given.
-const SHIPPED: [(&str, &str); 3] = [
-    (
-        "problems/micro-gear.toml",
-        include_str!("../../problems/micro-gear.toml"),
-    ),
-    (
-        "problems/dlc-contact.toml",
-        include_str!("../../problems/dlc-contact.toml"),
-    ),
-    (
-        "problems/gold-switch.toml",
-        include_str!("../../problems/gold-switch.toml"),
-    ),
-];
-
 /// Runs the report.
 pub fn run(args: AccuracyArgs) -> Result<ExitCode> {
-    let scenes = match &args.file {
-        Some(path) => {
-            let p = wearopt::problem::load(path)?;
-            vec![(p.name, p.scene)]
-        }
-        None => SHIPPED
-            .iter()
-            .map(|(origin, text)| wearopt::problem::parse(text, origin).map(|p| (p.name, p.scene)))
-            .collect::<Result<Vec<_>, _>>()?,
-    };
-    let wp = work_precision(&scenes, Options::default());
+    let problem = args.file.as_deref().map(wearopt::app::load).transpose()?;
+    let wp = wearopt::app::accuracy::accuracy(problem.as_ref())?;
     if let Some(path) = &args.plot {
         std::fs::write(path, report::accuracy::svg(&wp))
             .with_context(|| format!("writing the plot to {}", path.display()))?;
     }
-    let out = match args.format {
-        Format::Text => report::accuracy::text(&wp),
-        Format::Csv => report::accuracy::csv(&wp),
-        Format::Json => report::accuracy::json(&wp),
-        f => return Err(refuse("accuracy", f, report::accuracy::FORMATS)),
-    };
-    print!("{out}");
+    super::print_out(&report::accuracy::render(&wp, args.format)?)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -7,15 +7,12 @@ use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 
-use wearopt::figures::{
-    assess_claims, compute_figures, paper_figures, FigureError, FigureSettings, MAX_POINTS,
-};
+use wearopt::app::figures::{self as fig, FigureSettings};
+use wearopt::app::{AppError, OptionName};
 use wearopt::report::figures as out;
 use wearopt::report::Format;
 
-use super::format::{formats, refuse};
-
-use super::usage;
+use super::format::formats;
 
 /// Arguments of `wearopt figures`.
 #[derive(Debug, clap::Args)]
@@ -50,51 +47,18 @@ pub fn run(args: FiguresArgs) -> Result<ExitCode> {
         load_min: args.load_min,
         load_max: args.load_max,
     };
-    settings.validate().map_err(|e| {
-        usage(match e {
-            FigureError::Points(n) => {
-                format!("--points {n}: must lie in 3..={MAX_POINTS} (a least-squares line needs 3 points)")
-            }
-            FigureError::LoadRange { min, max } => format!(
-                "--load-min {min} --load-max {max}: need 0 < load-min < load-max < inf (compressive loads, e.g. 0.05 and 5)"
-            ),
-        })
+    settings.validate().map_err(AppError::Figures)?;
+    fs::create_dir_all(&args.out).map_err(|e| AppError::Output {
+        option: OptionName("out"),
+        path: args.out.display().to_string(),
+        reason: e.to_string(),
     })?;
-    fs::create_dir_all(&args.out).map_err(|e| {
-        usage(format!(
-            "--out {}: cannot create the directory: {e}",
-            args.out.display()
-        ))
-    })?;
-
-    let figures = compute_figures(&paper_figures(), &settings);
-    let claims = assess_claims(&figures);
-
-    let mut files = Vec::new();
-    for f in &figures {
-        let n = f.spec.number;
-        let csv = args.out.join(format!("figure{n}.csv"));
-        write(&csv, &out::figure_csv(f))?;
-        files.push(csv);
-        let svg = args.out.join(format!("figure{n}.svg"));
-        write(&svg, &out::svg(f))?;
-        files.push(svg);
+    let doc = fig::figures(&settings, &args.out)?;
+    for (path, which) in &doc.files {
+        write(path, &out::file(&doc, *which))?;
     }
-    let slopes = args.out.join("slopes.csv");
-    write(&slopes, &out::slopes_csv(&figures))?;
-    files.push(slopes);
-
-    let report = match args.format {
-        Format::Text => out::text(&settings, &files, &figures, &claims),
-        Format::Json => out::json(&settings, &files, &figures, &claims),
-        f => return Err(refuse("figures", f, out::FORMATS)),
-    };
-    print!("{report}");
-    let incomplete = figures
-        .iter()
-        .flat_map(|f| &f.curves)
-        .any(|c| c.failed > 0 || c.fit.is_none());
-    Ok(if incomplete {
+    super::print_out(&out::render(&doc, args.format)?)?;
+    Ok(if doc.incomplete() {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

@@ -6,11 +6,12 @@ use std::process::ExitCode;
 use anyhow::Result;
 use clap::Args;
 
-use wearopt::calibrate::{self, CalibrationError, FitSettings, FrictionCoefficient, Quoted};
+use wearopt::app::fit_adhesion::{self as fit, FitAdhesionOptions, FrictionCoefficient, Modulus};
+use wearopt::app::{AppError, OptionName};
 use wearopt::report::{self, Format};
 use wearopt::units::{parse_quantity, Dimension};
 
-use super::format::{formats, refuse};
+use super::format::formats;
 
 /// Arguments of `wearopt fit-adhesion`.
 #[derive(Debug, Args)]
@@ -48,10 +49,9 @@ pub struct FitAdhesionArgs {
 
 fn quantity(name: &'static str, text: &str, dim: Dimension) -> Result<f64> {
     parse_quantity(text, dim).map_err(|e| {
-        CalibrationError::Setting {
-            name,
-            value: text.to_string(),
-            expected: e.to_string(),
+        AppError::Invalid {
+            options: vec![(OptionName(name), text.to_string())],
+            rule: e.to_string(),
         }
         .into()
     })
@@ -59,56 +59,35 @@ fn quantity(name: &'static str, text: &str, dim: Dimension) -> Result<f64> {
 
 /// Runs the calibration.
 pub fn run(args: FitAdhesionArgs) -> Result<ExitCode> {
-    let radius = quantity("--radius", &args.radius, Dimension::Length)?;
+    let radius = quantity("radius", &args.radius, Dimension::Length)?;
     let friction_coefficient = match (args.mu, args.fit_mu) {
         (Some(mu), _) => FrictionCoefficient::Given(mu),
         (None, true) => FrictionCoefficient::Fit,
         (None, false) => FrictionCoefficient::Default,
     };
-    let equivalent_modulus = match (&args.modulus, args.materials.is_empty()) {
-        (Some(e), _) => Some(quantity("--modulus", e, Dimension::Pressure)?),
-        (None, false) => {
-            let m = calibrate::lookup_materials(&args.materials)?;
-            Some(calibrate::equivalent_modulus(m[0], m[m.len() - 1]))
-        }
-        (None, true) => None,
+    let modulus = match (&args.modulus, args.materials.is_empty()) {
+        (Some(e), _) => Modulus::Value(quantity("modulus", e, Dimension::Pressure)?),
+        (None, false) => Modulus::Materials(args.materials.clone()),
+        (None, true) => Modulus::None,
     };
-    let data = calibrate::read_csv(&args.data)?;
     let quoted_gamma = args
         .quoted_gamma
         .as_deref()
-        .map(|q| quantity("--quoted-gamma", q, Dimension::SurfaceEnergy))
+        .map(|q| quantity("quoted_gamma", q, Dimension::SurfaceEnergy))
         .transpose()?;
-    let quoted_bond = args
+    let quoted_bond_strength = args
         .quoted_bond_strength
         .as_deref()
-        .map(|q| quantity("--quoted-bond-strength", q, Dimension::Pressure))
+        .map(|q| quantity("quoted_bond_strength", q, Dimension::Pressure))
         .transpose()?;
-    // The paper's own table: compare with what the paper quotes from it.
-    let ando = data.is_ando_table() && (radius / calibrate::ANDO_RADIUS - 1.0).abs() < 1e-9;
-    let quoted = if quoted_gamma.is_some() || quoted_bond.is_some() {
-        Some(Quoted {
-            source: "the quoted values (--quoted-gamma, --quoted-bond-strength)".into(),
-            work_of_adhesion: quoted_gamma,
-            bond_strength: quoted_bond,
-        })
-    } else if ando {
-        Some(Quoted::paper())
-    } else {
-        None
-    };
-    let settings = FitSettings {
+    let options = FitAdhesionOptions {
         radius,
         friction_coefficient,
-        equivalent_modulus,
-        quoted,
+        modulus,
+        quoted_gamma,
+        quoted_bond_strength,
     };
-    let calibration = calibrate::fit(&data, &settings)?;
-    let out = match args.format {
-        Format::Text => report::calibrate::text(&calibration),
-        Format::Json => report::calibrate::json(&calibration),
-        f => return Err(refuse("fit-adhesion", f, report::calibrate::FORMATS)),
-    };
-    print!("{out}");
+    let calibration = fit::fit_adhesion(&args.data, &options)?;
+    super::print_out(&report::calibrate::render(&calibration, args.format)?)?;
     Ok(ExitCode::SUCCESS)
 }

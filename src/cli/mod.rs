@@ -4,7 +4,6 @@ mod accuracy;
 mod figures;
 mod fit_adhesion;
 mod format;
-mod materials;
 mod pareto;
 mod roughness;
 mod sweep;
@@ -13,13 +12,13 @@ mod verbose;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::{bail, Result};
-use clap::{Parser, Subcommand, ValueEnum};
+use anyhow::Result;
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::{Parser, Subcommand};
 
-use wearopt::documents::{self, Optimized};
-use wearopt::model::{
-    self, AsperityLaw, Attraction, Coefficients, EvaluationOptions, Model, Quadrature, Status,
-};
+use wearopt::app::curve::{AdhesionModel, AttractionKind, CurveOptions, LawOptions};
+use wearopt::app::optimize::OptimizeOptions;
+use wearopt::app::{self, OptionName};
 use wearopt::report::{self, Format};
 
 /// Adhesive wear of rough micro-contacts (MEMS gears and hinges, NEMS switches,
@@ -144,11 +143,11 @@ wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json 
         #[arg(long, value_parser = format::formats("curve", report::curve::FORMATS), default_value = "csv")]
         format: Format,
         /// The asperity law: jkr (the paper's) or dmt (attraction of asperities not in contact).
-        #[arg(long, value_enum, default_value_t = CurveLaw::Jkr)]
-        adhesion_model: CurveLaw,
+        #[arg(long, value_parser = law_parser(), default_value = "jkr")]
+        adhesion_model: AdhesionModel,
         /// Under dmt: van_der_waals (default) or dugdale.
-        #[arg(long, value_enum)]
-        attraction: Option<CurveAttraction>,
+        #[arg(long, value_parser = attraction_parser())]
+        attraction: Option<AttractionKind>,
         /// Under dmt, the attraction's range over σ (required): z0 = Z0/σ for
         /// van_der_waals, Δ_h = h0/σ for dugdale; > 0.
         #[arg(long, allow_hyphen_values = true)]
@@ -156,55 +155,17 @@ wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json 
     },
 }
 
-#[derive(Debug, Clone, Copy, ValueEnum)]
-enum CurveLaw {
-    Jkr,
-    Dmt,
+/// `--adhesion-model`: the names of the registry of asperity laws.
+fn law_parser() -> impl TypedValueParser<Value = AdhesionModel> {
+    PossibleValuesParser::new(AdhesionModel::names())
+        .try_map(|name| app::curve::adhesion_model(OptionName("adhesion_model"), &name))
 }
 
-#[derive(Debug, Clone, Copy, ValueEnum)]
-#[value(rename_all = "snake_case")]
-enum CurveAttraction {
-    VanDerWaals,
-    Dugdale,
+/// `--attraction`: the names of the attractions.
+fn attraction_parser() -> impl TypedValueParser<Value = AttractionKind> {
+    PossibleValuesParser::new(AttractionKind::names())
+        .try_map(|name| app::curve::attraction(OptionName("attraction"), &name))
 }
-
-/// The asperity law of `curve`'s flags, or a usage error naming the clash.
-fn curve_law(
-    law: CurveLaw,
-    attraction: Option<CurveAttraction>,
-    range: Option<f64>,
-) -> Result<AsperityLaw> {
-    match law {
-        CurveLaw::Jkr => {
-            if attraction.is_some() || range.is_some() {
-                return Err(usage(
-                    "--attraction and --attraction-range apply to --adhesion-model dmt only (the default is jkr)"
-                        .to_string(),
-                ));
-            }
-            Ok(AsperityLaw::Jkr)
-        }
-        CurveLaw::Dmt => {
-            let range = range.ok_or_else(|| {
-                usage("--adhesion-model dmt needs --attraction-range D: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)".to_string())
-            })?;
-            if !(range > 0.0 && range.is_finite()) {
-                return Err(usage(format!(
-                    "--attraction-range {range}: must be finite and > 0"
-                )));
-            }
-            Ok(AsperityLaw::Dmt(match attraction {
-                None | Some(CurveAttraction::VanDerWaals) => Attraction::VanDerWaals { range },
-                Some(CurveAttraction::Dugdale) => Attraction::Dugdale { range },
-            }))
-        }
-    }
-}
-
-/// Samples of the load–separation curve drawn on the HTML pages (dense enough that the
-/// stretch around the operating point stays smooth when the page shows only that).
-const LOAD_CURVE_POINTS: usize = 1001;
 
 /// An error that is the user's input, not ours: exit code 2.
 #[derive(Debug, thiserror::Error)]
@@ -241,45 +202,38 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             attraction,
             attraction_range,
         } => curve(
-            curve_law(adhesion_model, attraction, attraction_range)?,
-            theta,
-            lambda,
-            hardness_coefficient,
-            from,
-            to,
-            points,
+            &CurveOptions {
+                theta,
+                lambda,
+                hardness_coefficient,
+                from,
+                to,
+                points,
+                law: LawOptions {
+                    adhesion_model,
+                    attraction,
+                    attraction_range,
+                },
+            },
             format,
         ),
     }
 }
 
 fn eval(file: PathBuf, format: Format, out: Option<PathBuf>) -> Result<ExitCode> {
-    let problem = wearopt::problem::load(&file)?;
-    let eval = documents::eval(&problem, &file.display().to_string())?;
-    let evaluation = &eval.evaluation;
-    let r = eval.report(&problem);
-    let text = match format {
-        Format::Text => report::eval::text(&r),
-        Format::Json => report::json_text(&report::eval::json_value(&r)),
-        Format::Html => {
-            let curve = model::load_curve(
-                &problem.scene,
-                evaluation,
-                &EvaluationOptions::default(),
-                LOAD_CURVE_POINTS,
-            );
-            report::eval::html(&r, &curve)
-        }
-        f => return Err(format::refuse("eval", f, report::eval::FORMATS)),
-    };
+    let problem = app::load(&file)?;
+    let origin = file.display().to_string();
+    let doc = app::eval::eval(&problem, &origin, &report::eval::options(format))?;
+    let text = report::eval::render(&doc, format)?;
     write_output(
         out.as_deref().unwrap_or(std::path::Path::new("-")),
         &text,
         "the report",
     )?;
-    Ok(match evaluation.status {
-        Status::Ok | Status::Separated => ExitCode::SUCCESS,
-        Status::NotConverged | Status::OutOfRange => ExitCode::from(1),
+    Ok(if doc.failed() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
     })
 }
 
@@ -297,54 +251,55 @@ fn optimize(
             "--trace - would write the CSV trace to stdout, where the JSON report goes: give --trace a file name (--trace trace.csv), or use --format text".to_string(),
         ));
     }
-    let problem = wearopt::problem::load(&file)?;
+    let problem = app::load(&file)?;
     let tables = verbose::Tables::default();
     let make = |start: usize| tables.observer(start);
-    let optimized = documents::optimize(
+    let doc = app::optimize::optimize(
         &problem,
         &file.display().to_string(),
-        verbose.then_some(&make as wearopt::optimize::ObserverFactory),
+        OptimizeOptions {
+            observers: verbose.then_some(&make as app::optimize::ObserverFactory),
+            ..report::optimize::options(format)
+        },
     )?;
     tables.print();
-    let optimum = match optimized {
-        Optimized::Optimum(o) => o,
-        Optimized::Ranking(ranking) => {
-            return materials::write(&problem, &ranking, format, out.as_deref(), trace)
-        }
-    };
     if let Some(path) = trace {
-        write_output(&path, &report::optimize::trace_csv(&optimum), "the trace")?;
+        write_output(&path, &report::optimize::trace(&doc), "the trace")?;
     }
-    let text = match format {
-        Format::Text => report::optimize::text(&problem.name, &optimum),
-        Format::Json => report::json_text(&report::optimize::json_value(&problem.name, &optimum)),
-        Format::Html => {
-            let curve = model::load_curve(
-                &optimum.scene,
-                &optimum.evaluation,
-                &EvaluationOptions::default(),
-                LOAD_CURVE_POINTS,
-            );
-            report::optimize::html(&problem.name, &optimum, &curve)
-        }
-        f => return Err(format::refuse("optimize", f, report::optimize::FORMATS)),
-    };
+    let text = report::optimize::render(&doc, format)?;
     write_output(
         out.as_deref().unwrap_or(std::path::Path::new("-")),
         &text,
         "the report",
     )?;
-    Ok(match optimum.status {
-        wearopt::optimize::OptimizationStatus::Infeasible => ExitCode::from(1),
-        _ => ExitCode::SUCCESS,
+    Ok(if doc.failed() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
     })
+}
+
+/// Writes `text` to stdout. A reader that has gone (`wearopt … | head`) ends the
+/// output quietly, as it does for any Unix tool; other write errors are errors
+/// (`print!` would panic on both).
+pub(crate) fn print_out(text: &str) -> Result<()> {
+    use std::io::Write;
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|_| stdout.flush())
+    {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(anyhow::anyhow!("writing to stdout: {e}"))
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Writes `text` to `path`, or to stdout when the path is "-".
 pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Result<()> {
     if path.as_os_str() == "-" {
-        print!("{text}");
-        Ok(())
+        print_out(text)
     } else {
         std::fs::write(path, text)
             .map_err(|e| anyhow::anyhow!("writing {what} to {}: {e}", path.display()))
@@ -355,102 +310,18 @@ fn usage(msg: String) -> anyhow::Error {
     UsageError(msg).into()
 }
 
-#[allow(clippy::too_many_arguments)]
-fn curve(
-    law: AsperityLaw,
-    theta: f64,
-    lambda: f64,
-    c_h: f64,
-    from: f64,
-    to: f64,
-    points: usize,
-    format: Format,
-) -> Result<ExitCode> {
-    if theta.is_nan() || theta <= 0.0 {
-        return Err(usage(format!(
-            "--theta {theta}: must be > 0 (or inf for no adhesion)"
-        )));
-    }
-    if lambda.is_nan() || lambda <= 0.0 {
-        return Err(usage(format!(
-            "--lambda {lambda}: must be > 0 (or inf for no plasticity)"
-        )));
-    }
-    if c_h.is_nan() || c_h <= 0.0 {
-        return Err(usage(format!(
-            "--hardness-coefficient {c_h}: must be > 0 (or inf for no plasticity)"
-        )));
-    }
-    if !from.is_finite() || !to.is_finite() {
-        return Err(usage(format!(
-            "--from {from} --to {to}: separations must be finite"
-        )));
-    }
-    if from > to {
-        return Err(usage(format!(
-            "--from {from} is above --to {to}: give an increasing range"
-        )));
-    }
-    if !(1..=1_000_000).contains(&points) {
-        return Err(usage(format!("--points {points}: must lie in 1..=1000000")));
-    }
-    if points > 1 && from == to {
-        return Err(usage(format!(
-            "--from and --to are both {from}: with --points {points} the range must not be empty"
-        )));
-    }
-    let coefficients = if theta.is_infinite() {
-        Coefficients::new(0.0, c_h)
-    } else if lambda.is_infinite() {
-        Coefficients::from_indices_or_limits(theta, lambda, c_h)
-    } else {
-        Coefficients::from_indices(theta, lambda)
-    };
-    if coefficients.c_a.is_nan() || coefficients.c_h.is_nan() {
-        bail!("coefficients are undefined for θ = {theta}, λ = {lambda}");
-    }
-    let m = Model::with_law(coefficients, law, Quadrature::default());
-    let dc = m.critical_interference();
-    let rows: Vec<report::curve::CurveRow> = (0..points)
-        .map(|i| {
-            let h = if points == 1 {
-                from
-            } else {
-                from + (to - from) * (i as f64) / ((points - 1) as f64)
-            };
-            let at = m.at(h);
-            report::curve::CurveRow {
-                h,
-                load: at.load().value(),
-                area: at.area().value(),
-                plastic_area: at.plastic_area().value(),
-                critical_interference: dc,
-                dload_dh: at.dload_dh().value(),
-                noncontact_load: at.noncontact_load().value(),
-            }
-        })
-        .collect();
-    let out = match format {
-        Format::Csv => report::curve::csv(&rows),
-        Format::Json => report::curve::json(&rows),
-        f => return Err(format::refuse("curve", f, report::curve::FORMATS)),
-    };
-    print!("{out}");
+fn curve(options: &CurveOptions, format: Format) -> Result<ExitCode> {
+    let doc = app::curve::curve(options)?;
+    print_out(&report::curve::render(&doc, format)?)?;
     Ok(ExitCode::SUCCESS)
 }
 
 /// The exit code for an error: 2 for bad input and usage, 1 otherwise.
 pub fn exit_code(err: &anyhow::Error) -> u8 {
-    if err
-        .downcast_ref::<wearopt::problem::ProblemError>()
-        .is_some()
+    if err.downcast_ref::<app::ProblemError>().is_some()
         || err.downcast_ref::<UsageError>().is_some()
-        || err
-            .downcast_ref::<wearopt::calibrate::CalibrationError>()
-            .is_some()
-        || err
-            .downcast_ref::<wearopt::documents::DocumentError>()
-            .is_some()
+        || err.downcast_ref::<app::AppError>().is_some()
+        || err.downcast_ref::<report::format::FormatError>().is_some()
     {
         2
     } else {

@@ -10,9 +10,7 @@ use std::sync::Mutex;
 
 use anyhow::{Context, Result};
 
-use wearopt::documents;
-use wearopt::optimize::pareto::{Front, FrontPoint, FrontStatus, Observer};
-use wearopt::optimize::Study;
+use wearopt::app::pareto::{self as front, FrontPoint, FrontStatus, Observer, ParetoPlan};
 use wearopt::report::pareto as out;
 use wearopt::report::Format;
 
@@ -49,7 +47,7 @@ fn progress_wanted() -> bool {
 /// Streams finished points to stdout and drives the progress bar.
 struct Stream<'a> {
     format: Format,
-    names: &'a [&'static str],
+    plan: &'a ParetoPlan,
     bar: Option<indicatif::ProgressBar>,
     /// Points written so far, and the first write error.
     state: Mutex<(usize, Option<std::io::Error>)>,
@@ -101,54 +99,10 @@ impl Observer for Stream<'_> {
             st.0 += 1;
             st.0 == 1
         };
-        match self.format {
-            Format::Csv => self.write(&out::csv_row(p)),
-            Format::Json => self.write(&out::json_point(self.names, p, first)),
-            Format::Text | Format::Html => {}
+        let text = out::stream_point(self.plan, self.format, p, first);
+        if !text.is_empty() {
+            self.write(&text);
         }
-    }
-}
-
-/// The study's constraint quantities at every design of the front, the least-wear
-/// design and the baseline: one model evaluation each, of the scene the optimiser's
-/// own design space builds from the design.
-fn constraint_values(study: &Study, front: &Front) -> out::ConstraintValues {
-    let space = wearopt::optimize::DesignSpace::new(study.scene, study.design);
-    let options = wearopt::model::EvaluationOptions::default();
-    let at = |design: &[f64]| -> Vec<Option<f64>> {
-        // The design space's unit coordinates of the SI design (its own map inverted).
-        let x: Vec<f64> = space
-            .variables
-            .iter()
-            .zip(design)
-            .map(|(v, &d)| {
-                let u = if v.logarithmic {
-                    (d / v.min).ln() / (v.max / v.min).ln()
-                } else {
-                    (d - v.min) / (v.max - v.min)
-                };
-                if u.is_finite() {
-                    u.clamp(0.0, 1.0)
-                } else {
-                    0.0
-                }
-            })
-            .collect();
-        let scene = space.scene_at(&x);
-        let ev = wearopt::model::evaluate(&scene, &options);
-        study
-            .constraints
-            .iter()
-            .map(|c| {
-                wearopt::optimize::functions::quantity_value(c.quantity, &ev, &scene)
-                    .filter(|v| v.is_finite())
-            })
-            .collect()
-    };
-    out::ConstraintValues {
-        points: front.points.iter().map(|p| at(&p.design)).collect(),
-        least_wear: at(&front.least_wear.design),
-        baseline: front.baseline.as_ref().map(|b| at(&b.design)),
     }
 }
 
@@ -160,17 +114,12 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
                 .to_string(),
         ));
     }
-    let problem = wearopt::problem::load(&args.file)?;
+    let problem = wearopt::app::load(&args.file)?;
     let origin = args.file.display().to_string();
-    let spec = documents::pareto_spec(&problem, &origin, args.points)?;
-    let names: Vec<&'static str> = problem
-        .study
-        .design
-        .iter()
-        .map(|d| d.name.as_str())
-        .collect();
+    let options = out::options(args.format, args.points);
+    let plan = front::plan(&problem, &origin, &options)?;
     let bar = progress_wanted().then(|| {
-        let b = indicatif::ProgressBar::new(spec.points as u64);
+        let b = indicatif::ProgressBar::new(plan.spec.points as u64);
         b.set_style(
             indicatif::ProgressStyle::with_template("{msg:>12} [{bar:30}] {pos}/{len} {elapsed}")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
@@ -180,43 +129,27 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     });
     let stream = Stream {
         format: args.format,
-        names: &names,
+        plan: &plan,
         bar,
         state: Mutex::new((0, None)),
     };
-    let head = out::Head {
-        name: &problem.name,
-        measure: spec.adhesion,
-        direction: spec.direction,
-        objective_name: problem.study.objective.map_or("", |o| o.as_str()),
-        names: &names,
-    };
-    match args.format {
-        Format::Csv => stream.write(&out::csv_header(&names)),
-        Format::Json => stream.write(&out::json_head(&head)),
-        Format::Text | Format::Html => {}
+    let head = out::stream_head(&plan, args.format);
+    if !head.is_empty() {
+        stream.write(&head);
     }
-    let front = documents::pareto(&problem, &origin, &spec, &stream)?;
+    let doc = front::pareto(&problem, &origin, &options, &stream)?;
     if let Some(b) = &stream.bar {
         b.finish_and_clear();
     }
+    let tail = out::stream_tail(&doc, args.format);
     match args.format {
-        Format::Csv => {}
-        Format::Json => stream.write(&out::json_tail(&front)),
-        Format::Text => stream.write(&out::text(
-            &problem.name,
-            &front,
-            &problem.study.constraints,
-        )),
-        Format::Html => {
-            let values = constraint_values(&documents::study(&problem), &front);
-            let page = out::html(&problem.name, &front, &problem.study.constraints, &values);
-            super::write_output(
-                args.out.as_deref().unwrap_or(std::path::Path::new("-")),
-                &page,
-                "the page",
-            )?;
-        }
+        Format::Html => super::write_output(
+            args.out.as_deref().unwrap_or(std::path::Path::new("-")),
+            &tail,
+            "the page",
+        )?,
+        _ if !tail.is_empty() => stream.write(&tail),
+        _ => {}
     }
     if let Some(e) = stream
         .state
@@ -229,10 +162,10 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         }
     }
     if let Some(path) = &args.plot {
-        std::fs::write(path, out::svg(&problem.name, &front))
+        std::fs::write(path, out::svg(&doc.plan.name, &doc.front))
             .with_context(|| format!("writing the plot to {}", path.display()))?;
     }
-    Ok(match front.status {
+    Ok(match doc.front.status {
         FrontStatus::Infeasible => ExitCode::from(1),
         _ => ExitCode::SUCCESS,
     })

@@ -6,11 +6,11 @@ use std::process::ExitCode;
 use anyhow::Result;
 use clap::{Args, ValueEnum};
 
-use wearopt::documents::{self, RoughnessOptions};
+use wearopt::app::roughness::{self as rough, Levelling, RoughnessOptions};
+use wearopt::app::OptionName;
 use wearopt::report::{self, Format};
-use wearopt::surface::Levelling;
 
-use super::format::{formats, refuse};
+use super::format::formats;
 use super::write_output;
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -53,23 +53,32 @@ pub(crate) fn run(args: RoughnessArgs) -> Result<ExitCode> {
         LevelArg::Plane => Levelling::Plane,
         LevelArg::Quadratic => Levelling::Quadratic,
     };
-    let options = RoughnessOptions::parse(
-        args.cutoff.as_deref(),
+    // As the command line always checked them: pixel size, height unit, cut-off.
+    let pixel_size = args
+        .pixel_size
+        .as_deref()
+        .map(|t| rough::length(OptionName("pixel_size"), t))
+        .transpose()?;
+    let height_unit = args
+        .height_unit
+        .as_deref()
+        .map(|t| rough::height_unit(OptionName("height_unit"), t))
+        .transpose()?;
+    let cutoff = args
+        .cutoff
+        .as_deref()
+        .map(|t| rough::length(OptionName("cutoff"), t))
+        .transpose()?;
+    let options = RoughnessOptions {
+        cutoff,
         level,
-        args.pixel_size.as_deref(),
-        args.height_unit.as_deref(),
-    )?;
-    let analysis = documents::roughness(&args.file, &options)?;
-    let psd = &analysis.psd;
-    let r = analysis.report();
-    if let Some(path) = &args.psd {
-        write_output(path, &report::roughness::psd_svg(&r, psd), "the PSD plot")?;
-    }
-    let out = match args.format {
-        Format::Text => report::roughness::text(&r),
-        Format::Json => report::json_text(&report::roughness::json_value(&r)),
-        f => return Err(refuse("roughness", f, report::roughness::FORMATS)),
+        pixel_size,
+        height_unit,
     };
-    print!("{out}");
+    let doc = rough::roughness(&args.file, &options)?;
+    if let Some(path) = &args.psd {
+        write_output(path, &report::roughness::psd_plot(&doc), "the PSD plot")?;
+    }
+    super::print_out(&report::roughness::render(&doc, args.format)?)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -9,9 +9,8 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::ValueEnum;
 
-use wearopt::optimize::ParetoDirection;
+use wearopt::app::sweep::{self as sw, Method, ParetoDirection, Shard, SweepOptions, SweepRow};
 use wearopt::report::sweep::{self as out, Encoding, MergeError};
-use wearopt::sweep::{pareto_optimal, Method, Shard, Sweep, SweepRow};
 
 use super::usage;
 
@@ -131,14 +130,7 @@ impl Sink {
 
 /// Runs `wearopt sweep`.
 pub fn run(args: SweepArgs) -> Result<ExitCode> {
-    let problem = wearopt::problem::load(&args.file)?;
-    let file = args.file.display();
-    if !problem.study.materials.is_empty() {
-        return Err(usage(format!(
-            "{file}: {}",
-            wearopt::sweep::SweepError::Materials
-        )));
-    }
+    let problem = wearopt::app::load(&args.file)?;
     let method = match args.method {
         MethodArg::Sobol => Method::Sobol,
         MethodArg::Lhs => Method::Lhs,
@@ -146,37 +138,35 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     };
     let format = Encoding::of(args.format)
         .ok_or_else(|| super::format::refuse("sweep", args.format, out::FORMATS))?;
-    let sweep = Sweep::new(
-        &problem.scene,
-        &problem.study.design,
-        &problem.study.constraints,
-        method,
-        args.samples,
-        args.seed,
-    )
-    .map_err(|e| match e {
-        wearopt::sweep::SweepError::Samples { .. } | wearopt::sweep::SweepError::Grid { .. } => {
-            usage(format!("--samples {}: {e}", args.samples))
-        }
-        _ => usage(format!("{file}: {e}")),
-    })?;
+    let plan_of = |shard: Shard| {
+        sw::plan(
+            &problem,
+            &args.file.display().to_string(),
+            &SweepOptions {
+                samples: args.samples,
+                method,
+                seed: args.seed,
+                shard,
+            },
+        )
+    };
+    // The sweep is checked before the shard, as it always was.
+    plan_of(Shard::WHOLE)?;
     let shard = match &args.shard {
         Some(s) => parse_shard(s)?,
         None => slurm_shard()?.unwrap_or(Shard::WHOLE),
     };
-    let range = shard.range(sweep.samples());
+    let plan = plan_of(shard)?;
+    let sweep = &plan.sweep;
+    let range = plan.range.clone();
     let head = out::head(
         format,
         &out::Head {
-            name: &problem.name,
-            sweep: &sweep,
+            name: &plan.name,
+            sweep,
         },
     );
-    let direction = problem
-        .study
-        .pareto
-        .as_ref()
-        .map_or(ParetoDirection::Low, |p| p.direction);
+    let direction = plan.direction;
 
     // Resume: a complete output of this very shard is kept as it is.
     if let Some(path) = &args.out {
@@ -193,7 +183,7 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
                     if let Some(plot) = &args.plot {
                         let points = out::map_points(&part)
                             .map_err(|e| usage(format!("{}: {e}", path.display())))?;
-                        write_map(plot, &problem.name, &points, direction)?;
+                        write_map(plot, &plan.name, &points, direction)?;
                     }
                     return Ok(ExitCode::SUCCESS);
                 }
@@ -222,10 +212,10 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     let mut points: Vec<(f64, Option<f64>, bool)> = Vec::new();
     let mut first = true;
     let result = sink.write(&head).and_then(|_| {
-        sweep.run(range.clone(), |rows: &[SweepRow]| {
+        plan.run(|rows: &[SweepRow]| {
             let mut text = String::with_capacity(rows.len() * 200);
             for r in rows {
-                text.push_str(&out::row(format, &sweep, r, first));
+                text.push_str(&out::row(format, sweep, r, first));
                 first = false;
                 if args.plot.is_some() {
                     points.push((r.wear_rate, r.log10_pull_off_force, r.feasible));
@@ -253,7 +243,7 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         }
     }
     if let Some(plot) = &args.plot {
-        write_map(plot, &problem.name, &points, direction)?;
+        write_map(plot, &plan.name, &points, direction)?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -264,7 +254,7 @@ fn write_map(
     points: &[(f64, Option<f64>, bool)],
     direction: ParetoDirection,
 ) -> Result<()> {
-    let optimal = pareto_optimal(points, direction);
+    let optimal = sw::pareto_optimal(points, direction);
     std::fs::write(path, out::map_svg(name, points, &optimal, direction))
         .with_context(|| format!("writing the plot to {}", path.display()))
 }

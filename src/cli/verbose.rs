@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 
 use argmin::core::observers::Observe;
 use argmin::core::{State, KV};
-use wearopt::optimize::{SqpState, StartObserver};
+use wearopt::app::optimize::{SqpState, StartObserver};
 
 /// Finished tables, by start index.
 #[derive(Default, Clone)]

@@ -18,6 +18,10 @@
 
 use serde::Serialize;
 
+/// φ0 range where neither limit law is exact (the JKR–DMT transition), and `eval`
+/// gives both.
+pub const TRANSITION_TABOR: (f64, f64) = (0.3, 3.0);
+
 /// Which asperity law a scene uses (the problem-file key `adhesion_model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
 #[serde(rename_all = "lowercase")]
@@ -30,6 +34,10 @@ pub enum AdhesionModel {
 }
 
 impl AdhesionModel {
+    /// Every asperity law, in the order problem files, options and messages list
+    /// them: the registry every name, parser and list of laws reads.
+    pub const ALL: [AdhesionModel; 2] = [AdhesionModel::Jkr, AdhesionModel::Dmt];
+
     /// The word used in problem files and reports.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -38,12 +46,49 @@ impl AdhesionModel {
         }
     }
 
-    /// The other law.
-    pub fn other(self) -> AdhesionModel {
+    /// The law named `name` (as [`AdhesionModel::as_str`] writes it).
+    pub fn from_name(name: &str) -> Option<AdhesionModel> {
+        Self::ALL.into_iter().find(|m| m.as_str() == name)
+    }
+
+    /// The names of every law, in order.
+    pub fn names() -> [&'static str; 2] {
+        Self::ALL.map(AdhesionModel::as_str)
+    }
+
+    /// Whether the law takes an attraction of the asperities out of contact (the
+    /// `attraction` key and its range).
+    pub fn takes_attraction(self) -> bool {
         match self {
-            AdhesionModel::Jkr => AdhesionModel::Dmt,
-            AdhesionModel::Dmt => AdhesionModel::Jkr,
+            AdhesionModel::Jkr => false,
+            AdhesionModel::Dmt => true,
         }
+    }
+
+    /// The Tabor parameters φ0 over which the law is exact (closed ends): JKR at
+    /// and above the transition, DMT at and below it.
+    pub fn valid_tabor(self) -> (f64, f64) {
+        match self {
+            AdhesionModel::Jkr => (TRANSITION_TABOR.1, f64::INFINITY),
+            AdhesionModel::Dmt => (0.0, TRANSITION_TABOR.0),
+        }
+    }
+
+    /// The law on the other side of the transition φ0 lies in: of the laws whose
+    /// validity ends just below φ0 and starts just above it (the two that bracket
+    /// the truth there), the one that is not `self`. `None` outside every
+    /// transition (φ0 inside a law's validity with no law on its other side).
+    pub fn bracket(self, tabor: f64) -> Option<AdhesionModel> {
+        let below = Self::ALL
+            .into_iter()
+            .filter(|m| m.valid_tabor().1 <= tabor)
+            .max_by(|a, b| a.valid_tabor().1.total_cmp(&b.valid_tabor().1));
+        let above = Self::ALL
+            .into_iter()
+            .filter(|m| m.valid_tabor().0 >= tabor)
+            .min_by(|a, b| a.valid_tabor().0.total_cmp(&b.valid_tabor().0));
+        let (below, above) = (below?, above?);
+        [below, above].into_iter().find(|&m| m != self)
     }
 }
 
@@ -59,12 +104,25 @@ pub enum AttractionKind {
 }
 
 impl AttractionKind {
+    /// Every attraction, in the order problem files and messages list them.
+    pub const ALL: [AttractionKind; 2] = [AttractionKind::VanDerWaals, AttractionKind::Dugdale];
+
     /// The word used in problem files and reports.
     pub fn as_str(self) -> &'static str {
         match self {
             AttractionKind::VanDerWaals => "van_der_waals",
             AttractionKind::Dugdale => "dugdale",
         }
+    }
+
+    /// The attraction named `name` (as [`AttractionKind::as_str`] writes it).
+    pub fn from_name(name: &str) -> Option<AttractionKind> {
+        Self::ALL.into_iter().find(|m| m.as_str() == name)
+    }
+
+    /// The names of every attraction, in order.
+    pub fn names() -> [&'static str; 2] {
+        Self::ALL.map(AttractionKind::as_str)
     }
 
     /// The non-dimensional range of the attraction for an interatomic distance
@@ -154,5 +212,29 @@ impl AsperityLaw {
                 attraction.range(interatomic_distance, sigma),
             )),
         }
+    }
+}
+
+#[cfg(test)]
+mod registry_tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_the_transition_is_bracketed() {
+        for m in AdhesionModel::ALL {
+            assert_eq!(AdhesionModel::from_name(m.as_str()), Some(m));
+        }
+        assert_eq!(AdhesionModel::from_name("lj"), None);
+        for a in AttractionKind::ALL {
+            assert_eq!(AttractionKind::from_name(a.as_str()), Some(a));
+        }
+        // Inside the transition (ends included) each limit law is bracketed by the other.
+        for phi in [0.3, 1.0, 3.0] {
+            assert_eq!(AdhesionModel::Jkr.bracket(phi), Some(AdhesionModel::Dmt));
+            assert_eq!(AdhesionModel::Dmt.bracket(phi), Some(AdhesionModel::Jkr));
+        }
+        // Well inside a law's validity nothing brackets it.
+        assert_eq!(AdhesionModel::Jkr.bracket(100.0), None);
+        assert_eq!(AdhesionModel::Dmt.bracket(0.01), None);
     }
 }

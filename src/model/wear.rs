@@ -229,8 +229,7 @@ pub struct OtherModel {
     pub wear_rate: f64,
 }
 
-/// φ0 range where neither law is exact and `eval` gives both.
-pub const TRANSITION_TABOR: (f64, f64) = (0.3, 3.0);
+pub use super::law::TRANSITION_TABOR;
 
 /// Does the part come free? The pull-off force against the restoring force.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -356,9 +355,10 @@ pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evalua
     let mut ev = evaluate(scene, options);
     let phi = ev.indices.tabor_parameter;
     let transition = phi >= TRANSITION_TABOR.0 && phi <= TRANSITION_TABOR.1;
-    if transition && scene.work_of_adhesion > 0.0 {
+    let other = scene.adhesion_model.bracket(phi);
+    if let (true, true, Some(other)) = (transition, scene.work_of_adhesion > 0.0, other) {
         let other_scene = Scene {
-            adhesion_model: scene.adhesion_model.other(),
+            adhesion_model: other,
             ..scene.clone()
         };
         let o = evaluate(&other_scene, options);

@@ -20,7 +20,9 @@ pub struct Variable {
 impl Variable {
     fn value_at(&self, u: f64) -> f64 {
         let u = u.clamp(0.0, 1.0);
-        if u == 0.0 {
+        // A variable fixed by its bounds (min = max) is its bound at every u, not
+        // exp(ln min) an ulp away.
+        if u == 0.0 || self.min == self.max {
             return self.min;
         }
         if u == 1.0 {
@@ -89,6 +91,17 @@ impl DesignSpace {
         self.variables
             .iter()
             .map(|v| v.unit_of(v.quantity.get(&self.baseline)))
+            .collect()
+    }
+
+    /// The unit point of the SI design `values` (the inverse of [`DesignSpace::values`],
+    /// clamped into the box; a value the map cannot place, NaN or a degenerate
+    /// variable, is the box's middle).
+    pub fn unit(&self, values: &[f64]) -> Vec<f64> {
+        self.variables
+            .iter()
+            .zip(values)
+            .map(|(v, &value)| v.unit_of(value))
             .collect()
     }
 

@@ -838,41 +838,41 @@ impl Problem {
 
         let adhesion_model = match &i.adhesion_model {
             None => AdhesionModel::default(),
-            Some(w) => match w.get_ref().as_str() {
-                "jkr" => AdhesionModel::Jkr,
-                "dmt" => AdhesionModel::Dmt,
-                other => {
-                    let hint = suggest(other, ["jkr", "dmt"])
+            Some(w) => match AdhesionModel::from_name(w.get_ref()) {
+                Some(m) => m,
+                None => {
+                    let names = AdhesionModel::names();
+                    let hint = suggest(w.get_ref(), names)
                         .map(|s| format!("; did you mean \"{s}\"?"))
                         .unwrap_or_default();
                     return Err(r.invalid(
                         "interface.adhesion_model",
                         &w.span(),
-                        format!("unknown asperity law{hint} (one of: jkr, dmt)"),
+                        format!("unknown asperity law{hint} (one of: {})", names.join(", ")),
                     ));
                 }
             },
         };
         let attraction = match &i.attraction {
             None => AttractionKind::default(),
-            Some(w) if adhesion_model == AdhesionModel::Jkr => {
+            Some(w) if !adhesion_model.takes_attraction() => {
                 return Err(r.invalid(
                     "interface.attraction",
                     &w.span(),
                     "attraction applies to the DMT law only, and adhesion_model is \"jkr\" (the default): remove attraction, or set adhesion_model = \"dmt\"",
                 ));
             }
-            Some(w) => match w.get_ref().as_str() {
-                "van_der_waals" => AttractionKind::VanDerWaals,
-                "dugdale" => AttractionKind::Dugdale,
-                other => {
-                    let hint = suggest(other, ["van_der_waals", "dugdale"])
+            Some(w) => match AttractionKind::from_name(w.get_ref()) {
+                Some(a) => a,
+                None => {
+                    let names = AttractionKind::names();
+                    let hint = suggest(w.get_ref(), names)
                         .map(|s| format!("; did you mean \"{s}\"?"))
                         .unwrap_or_default();
                     return Err(r.invalid(
                         "interface.attraction",
                         &w.span(),
-                        format!("unknown attraction{hint} (one of: van_der_waals, dugdale)"),
+                        format!("unknown attraction{hint} (one of: {})", names.join(", ")),
                     ));
                 }
             },

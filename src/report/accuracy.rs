@@ -276,6 +276,23 @@ pub fn svg(wp: &WorkPrecision) -> String {
     plot.to_svg()
 }
 
+/// The document in `format` (one of [`FORMATS`]).
+pub fn render(
+    wp: &WorkPrecision,
+    format: super::Format,
+) -> Result<String, super::format::FormatError> {
+    match format {
+        super::Format::Text => Ok(text(wp)),
+        super::Format::Csv => Ok(csv(wp)),
+        super::Format::Json => Ok(json(wp)),
+        given => Err(super::format::FormatError::NotRendered {
+            command: "accuracy",
+            given,
+            accepted: FORMATS,
+        }),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

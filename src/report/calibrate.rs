@@ -305,3 +305,19 @@ pub fn text(c: &Calibration) -> String {
     }
     out
 }
+
+/// The document in `format` (one of [`FORMATS`]).
+pub fn render(
+    c: &Calibration,
+    format: super::Format,
+) -> Result<String, super::format::FormatError> {
+    match format {
+        super::Format::Text => Ok(text(c)),
+        super::Format::Json => Ok(json(c)),
+        given => Err(super::format::FormatError::NotRendered {
+            command: "fit-adhesion",
+            given,
+            accepted: FORMATS,
+        }),
+    }
+}

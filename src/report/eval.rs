@@ -2,7 +2,9 @@
 
 use serde_json::{json, Map, Value};
 
+use super::format::FormatError;
 use super::{si, sig, sig_exp};
+use crate::app::eval::{EvalDocument, EvalOptions, LOAD_CURVE_POINTS};
 use crate::model::{AdhesionModel, AttractionKind, Evaluation, Scene, Sensitivity, WearArea};
 
 /// The formats `wearopt eval` writes (the first is the default).
@@ -11,6 +13,45 @@ pub const FORMATS: &[super::Format] = &[
     super::Format::Json,
     super::Format::Html,
 ];
+
+/// The formats `wearopt eval` writes, with what each needs computed.
+pub fn options(format: super::Format) -> EvalOptions {
+    EvalOptions {
+        load_curve_points: (format == super::Format::Html).then_some(LOAD_CURVE_POINTS),
+    }
+}
+
+/// The document in `format` (one of [`FORMATS`]).
+pub fn render(doc: &EvalDocument, format: super::Format) -> Result<String, FormatError> {
+    let r = view(doc);
+    match format {
+        super::Format::Text => Ok(text(&r)),
+        super::Format::Json => Ok(super::json_text(&json_value(&r))),
+        super::Format::Html => Ok(html(&r, doc.load_curve.as_ref())),
+        given => Err(FormatError::NotRendered {
+            command: "eval",
+            given,
+            accepted: FORMATS,
+        }),
+    }
+}
+
+/// The JSON document as a value (what Python reads).
+pub fn json_document(doc: &EvalDocument) -> Value {
+    json_value(&view(doc))
+}
+
+/// The report's view of a document.
+pub fn view(doc: &EvalDocument) -> EvalReport<'_> {
+    EvalReport {
+        name: &doc.name,
+        scene: &doc.scene,
+        input_notes: &doc.input_notes,
+        evaluation: &doc.evaluation,
+        sensitivities: &doc.sensitivities,
+        scan: doc.scan.as_ref(),
+    }
+}
 
 /// Everything an evaluation report shows.
 pub struct EvalReport<'a> {
@@ -216,7 +257,7 @@ pub(crate) fn load_curve_caption(what: &str, c: &crate::model::LoadCurve) -> Str
 
 /// A self-contained HTML page: the tables of [`text`] and the load–separation curve
 /// and sensitivity bars as inline SVG.
-pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
+pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     let ev = r.evaluation;
     let sc = r.scene;
     let mut p = super::html::Page::new(&format!("wearopt eval — {}", r.name));
@@ -410,11 +451,13 @@ pub fn html(r: &EvalReport, curve: &crate::model::LoadCurve) -> String {
         rows.push(vec!["friction coefficient F/W".into(), sig_exp(mu, 3)]);
     }
     p.table(&["result", "value"], &rows, &[]);
-    p.figure(
-        "load-separation",
-        &load_curve_svg(&format!("Load against separation — {}", r.name), curve),
-        &load_curve_caption("The model's load W", curve),
-    );
+    if let Some(curve) = curve {
+        p.figure(
+            "load-separation",
+            &load_curve_svg(&format!("Load against separation — {}", r.name), curve),
+            &load_curve_caption("The model's load W", curve),
+        );
+    }
     if !r.sensitivities.is_empty() {
         p.heading("Sensitivity of the wear rate");
         let rows: Vec<Vec<String>> = r

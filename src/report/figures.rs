@@ -10,6 +10,7 @@ use serde_json::json;
 
 use super::number;
 use super::svg::{Axis, LinePlot, Series};
+use crate::app::figures::{FigureFile, FiguresDocument};
 use crate::figures::{
     Claim, Evidence, Figure, FigureSettings, FigureSlopes, Slopes, Varied, EQUAL_SLOPE_RATIO,
     LINEAR_R_SQUARED,
@@ -323,4 +324,30 @@ pub fn json(
     let mut s = serde_json::to_string_pretty(&v).unwrap_or_else(|_| "{}".to_string());
     s.push('\n');
     s
+}
+
+/// The document's summary in `format` (one of [`FORMATS`]), listing its files.
+pub fn render(
+    doc: &FiguresDocument,
+    format: super::Format,
+) -> Result<String, super::format::FormatError> {
+    let files: Vec<PathBuf> = doc.files.iter().map(|(p, _)| p.clone()).collect();
+    match format {
+        super::Format::Text => Ok(text(&doc.settings, &files, &doc.figures, &doc.claims)),
+        super::Format::Json => Ok(json(&doc.settings, &files, &doc.figures, &doc.claims)),
+        given => Err(super::format::FormatError::NotRendered {
+            command: "figures",
+            given,
+            accepted: FORMATS,
+        }),
+    }
+}
+
+/// The contents of one of the document's files.
+pub fn file(doc: &FiguresDocument, which: FigureFile) -> String {
+    match which {
+        FigureFile::Csv(i) => doc.figures.get(i).map_or_else(String::new, figure_csv),
+        FigureFile::Svg(i) => doc.figures.get(i).map_or_else(String::new, svg),
+        FigureFile::Slopes => slopes_csv(&doc.figures),
+    }
 }

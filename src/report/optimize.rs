@@ -3,7 +3,9 @@
 
 use serde_json::{json, Map, Value};
 
+use super::format::FormatError;
 use super::{number, si, sig, sig_exp};
+use crate::app::optimize::{OptimizeDocument, OptimizeOptions};
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::units::format_quantity;
 
@@ -13,6 +15,66 @@ pub const FORMATS: &[super::Format] = &[
     super::Format::Json,
     super::Format::Html,
 ];
+
+/// What `optimize` needs computed for `format`.
+pub fn options<'a>(format: super::Format) -> OptimizeOptions<'a> {
+    OptimizeOptions {
+        observers: None,
+        load_curve_points: (format == super::Format::Html)
+            .then_some(crate::app::eval::LOAD_CURVE_POINTS),
+    }
+}
+
+/// The document in `format` (one of [`FORMATS`]): an optimum, or a ranking of
+/// materials ([`super::materials`]).
+pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, FormatError> {
+    match (doc, format) {
+        (OptimizeDocument::Optimum { name, optimum, .. }, super::Format::Text) => {
+            Ok(text(name, optimum))
+        }
+        (OptimizeDocument::Optimum { name, optimum, .. }, super::Format::Json) => {
+            Ok(super::json_text(&json_value(name, optimum)))
+        }
+        (
+            OptimizeDocument::Optimum {
+                name,
+                optimum,
+                load_curve,
+            },
+            super::Format::Html,
+        ) => Ok(html(name, optimum, load_curve.as_ref())),
+        (OptimizeDocument::Ranking { name, ranking }, super::Format::Text) => {
+            Ok(super::materials::text(name, ranking))
+        }
+        (OptimizeDocument::Ranking { name, ranking }, super::Format::Json) => Ok(super::json_text(
+            &super::materials::json_value(name, ranking),
+        )),
+        (OptimizeDocument::Ranking { name, ranking }, super::Format::Html) => {
+            Ok(super::materials::html(name, ranking))
+        }
+        (_, given) => Err(FormatError::NotRendered {
+            command: "optimize",
+            given,
+            accepted: FORMATS,
+        }),
+    }
+}
+
+/// The JSON document as a value (what Python reads).
+pub fn json_document(doc: &OptimizeDocument) -> Value {
+    match doc {
+        OptimizeDocument::Optimum { name, optimum, .. } => json_value(name, optimum),
+        OptimizeDocument::Ranking { name, ranking } => super::materials::json_value(name, ranking),
+    }
+}
+
+/// The per-iteration trace as CSV (of every optimised material for a ranking).
+pub fn trace(doc: &OptimizeDocument) -> String {
+    match doc {
+        OptimizeDocument::Optimum { optimum, .. } => trace_csv(optimum),
+        OptimizeDocument::Ranking { ranking, .. } => super::materials::trace_csv(ranking),
+    }
+}
 
 /// A constraint the baseline design breaks: its name, the baseline's value, the limit
 /// broken and which side ("min" or "max").
@@ -378,7 +440,7 @@ pub fn convergence_svg(name: &str, o: &Optimum) -> String {
 
 /// A self-contained HTML page: status, design, objective, constraints, warnings, the
 /// convergence of every start and the optimum's load–separation curve.
-pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String {
+pub fn html(name: &str, o: &Optimum, curve: Option<&crate::model::LoadCurve>) -> String {
     let mut p = super::html::Page::new(&format!("wearopt optimize — {name}"));
     p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status"));
     let broken = baseline_violations(o);
@@ -500,13 +562,15 @@ pub fn html(name: &str, o: &Optimum, curve: &crate::model::LoadCurve) -> String 
         &convergence_svg(name, o),
         "The KKT residual of every start against its iteration.",
     );
-    p.figure(
-        "load-separation",
-        &super::eval::load_curve_svg(
-            &format!("The optimum's load against separation — {name}"),
-            curve,
-        ),
-        &super::eval::load_curve_caption("The optimum design's load W", curve),
-    );
+    if let Some(curve) = curve {
+        p.figure(
+            "load-separation",
+            &super::eval::load_curve_svg(
+                &format!("The optimum's load against separation — {name}"),
+                curve,
+            ),
+            &super::eval::load_curve_caption("The optimum design's load W", curve),
+        );
+    }
     p.finish()
 }

@@ -9,6 +9,7 @@ use serde_json::{json, Map, Value};
 
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, si, sig, sig_exp};
+use crate::app::pareto::{ParetoDocument, ParetoOptions, ParetoPlan};
 use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
 use crate::optimize::{AdhesionMeasure, Constraint, ParetoDirection};
 use crate::problem::Dimensioned;
@@ -56,6 +57,85 @@ fn measure_text(m: AdhesionMeasure, v: f64, log10: f64) -> String {
         _ if v == 0.0 && log10.is_finite() => format!("1e{} {}", sig(log10, 4), unit_of(m)),
         _ => si(v, unit_of(m), 4),
     }
+}
+
+// ---------------------------------------------------------------- documents
+
+/// What `pareto` needs computed for `format`, with `points` in place of the
+/// `[pareto]` section's when given.
+pub fn options(format: super::Format, points: Option<usize>) -> ParetoOptions {
+    ParetoOptions {
+        points,
+        constraint_values: format == super::Format::Html,
+    }
+}
+
+/// The head of a streamed report of `plan`.
+pub fn head_of(plan: &ParetoPlan) -> Head<'_> {
+    Head {
+        name: &plan.name,
+        measure: plan.spec.adhesion,
+        direction: plan.spec.direction,
+        objective_name: plan.objective.as_str(),
+        names: &plan.names,
+    }
+}
+
+/// What a streamed report in `format` writes before the first point (CSV's header,
+/// JSON's opening; nothing for text and HTML, which come whole at the end).
+pub fn stream_head(plan: &ParetoPlan, format: super::Format) -> String {
+    match format {
+        super::Format::Csv => csv_header(&plan.names),
+        super::Format::Json => json_head(&head_of(plan)),
+        super::Format::Text | super::Format::Html => String::new(),
+    }
+}
+
+/// What a streamed report in `format` writes for a point as it is final (`first`:
+/// the first point written).
+pub fn stream_point(
+    plan: &ParetoPlan,
+    format: super::Format,
+    p: &FrontPoint,
+    first: bool,
+) -> String {
+    match format {
+        super::Format::Csv => csv_row(p),
+        super::Format::Json => json_point(&plan.names, p, first),
+        _ => String::new(),
+    }
+}
+
+/// What a streamed report in `format` writes once the front is done: the rest of
+/// the document ([`stream_head`] + each [`stream_point`] + this = [`render`]).
+pub fn stream_tail(doc: &ParetoDocument, format: super::Format) -> String {
+    let empty = ConstraintValues::default();
+    match format {
+        super::Format::Csv => String::new(),
+        super::Format::Json => json_tail(&doc.front),
+        super::Format::Text => text(&doc.plan.name, &doc.front, &doc.plan.constraints),
+        super::Format::Html => html(
+            &doc.plan.name,
+            &doc.front,
+            &doc.plan.constraints,
+            doc.constraint_values.as_ref().unwrap_or(&empty),
+        ),
+    }
+}
+
+/// The whole document in `format` (every format of [`FORMATS`]).
+pub fn render(doc: &ParetoDocument, format: super::Format) -> String {
+    let mut out = stream_head(&doc.plan, format);
+    for (i, p) in doc.front.points.iter().enumerate() {
+        out.push_str(&stream_point(&doc.plan, format, p, i == 0));
+    }
+    out.push_str(&stream_tail(doc, format));
+    out
+}
+
+/// The JSON document as a value (what Python reads).
+pub fn json_document(doc: &ParetoDocument) -> Value {
+    json_value(&doc.plan.name, &doc.front)
 }
 
 // ---------------------------------------------------------------- CSV
@@ -607,18 +687,7 @@ pub fn svg(name: &str, front: &Front) -> String {
     plot.to_svg()
 }
 
-/// The study's constraint quantities at the designs of a front (SI, in the order of
-/// the study's constraints; None where a quantity does not exist at a design).
-/// The caller evaluates them; the report only words them.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct ConstraintValues {
-    /// At each point of [`Front::points`], in order.
-    pub points: Vec<Vec<Option<f64>>>,
-    /// At the least-wear design of the study.
-    pub least_wear: Vec<Option<f64>>,
-    /// At the baseline design, when the front has one.
-    pub baseline: Option<Vec<Option<f64>>>,
-}
+pub use crate::app::pareto::ConstraintValues;
 
 /// Whether `v` lies outside the constraint's limits by more than a relative 1e-6
 /// (the optimiser's own tolerance is tighter; this flags what a reader must see).

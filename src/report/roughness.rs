@@ -4,6 +4,7 @@ use serde_json::{json, Value};
 
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{si, sig, sig_exp};
+use crate::app::roughness::RoughnessDocument;
 use crate::surface::psd::{Psd, PsdKind};
 use crate::surface::read::Format;
 use crate::surface::{Roughness, Warning};
@@ -11,6 +12,43 @@ use crate::units::{format_quantity, Dimension};
 
 /// The formats `wearopt roughness` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
+
+/// The report's view of a document.
+pub fn view(doc: &RoughnessDocument) -> RoughnessReport<'_> {
+    RoughnessReport {
+        file: &doc.file,
+        format: doc.format,
+        roughness: &doc.roughness,
+        psd: Some(&doc.psd),
+    }
+}
+
+/// The document in `format` (one of [`FORMATS`]).
+pub fn render(
+    doc: &RoughnessDocument,
+    format: super::Format,
+) -> Result<String, super::format::FormatError> {
+    let r = view(doc);
+    match format {
+        super::Format::Text => Ok(text(&r)),
+        super::Format::Json => Ok(super::json_text(&json_value(&r))),
+        given => Err(super::format::FormatError::NotRendered {
+            command: "roughness",
+            given,
+            accepted: FORMATS,
+        }),
+    }
+}
+
+/// The JSON document as a value (what Python reads).
+pub fn json_document(doc: &RoughnessDocument) -> Value {
+    json_value(&view(doc))
+}
+
+/// The power spectral density as a log–log SVG plot.
+pub fn psd_plot(doc: &RoughnessDocument) -> String {
+    psd_svg(&view(doc), &doc.psd)
+}
 
 /// Everything a roughness report shows.
 pub struct RoughnessReport<'a> {

@@ -438,3 +438,43 @@ fn optimize_says_why_an_optimum_wears_nothing() {
     );
     assert!(v["baseline_objective"].as_f64().unwrap() > 0.0);
 }
+
+/// A reader that goes away (`wearopt … | head -c 1`) ends the output quietly, exit 0,
+/// for every command that writes to stdout; it used to panic ("failed printing to
+/// stdout: Broken pipe") in curve, roughness, accuracy, figures and fit-adhesion.
+#[test]
+fn a_closed_pipe_is_not_a_panic() {
+    let figures = std::env::temp_dir().join(format!("wearopt-pipe-{}", std::process::id()));
+    let figures = figures.display().to_string();
+    let commands: Vec<Vec<&str>> = vec![
+        vec![
+            "curve", "--theta", "10", "--lambda", "1", "--from", "-2", "--to", "4", "--points",
+            "20000",
+        ],
+        vec!["roughness", "problems/scans/self-affine.gsf"],
+        vec!["eval", "problems/micro-gear.toml", "--format", "html"],
+        vec!["figures", "--out", &figures, "--points", "5"],
+        vec![
+            "fit-adhesion",
+            "problems/ando-friction.csv",
+            "--radius",
+            "0.3mm",
+            "--format",
+            "json",
+        ],
+    ];
+    for args in commands {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_wearopt"))
+            .args(&args)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("runs");
+        drop(child.stdout.take());
+        let out = child.wait_with_output().expect("ends");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {stderr}");
+    }
+    let _ = std::fs::remove_dir_all(&figures);
+}

@@ -8,7 +8,7 @@
 use std::panic::catch_unwind;
 use std::path::Path;
 
-use wearopt::documents::{self, DocumentError};
+use wearopt::app::{self, AppError};
 use wearopt::model::{AsperityLaw, Coefficients, Model, Quadrature, Scene};
 use wearopt::sweep::{Method, Sweep, SweepError};
 
@@ -88,12 +88,12 @@ fn every_bad_field_is_refused_by_name_value_and_range() {
             // The entry points that take a scene refuse it with the same error.
             let mut problem = base.clone();
             problem.scene = scene.clone();
-            let doc = documents::eval_json(&problem, "hand-built").unwrap_err();
-            assert!(matches!(&doc, DocumentError::Scene { error, .. } if error.field == field));
+            let doc = app::eval::eval(&problem, "hand-built", &Default::default()).unwrap_err();
+            assert!(matches!(&doc, AppError::Scene { error, .. } if error.field == field));
             assert_eq!(doc.to_string(), format!("hand-built: scene: {message}"));
             assert!(matches!(
-                documents::optimize_json(&problem, "hand-built"),
-                Err(DocumentError::Scene { .. })
+                app::optimize::optimize(&problem, "hand-built", Default::default()),
+                Err(AppError::Scene { .. })
             ));
             let sweep = Sweep::new(
                 &scene,

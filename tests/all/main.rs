@@ -5,13 +5,13 @@
 mod common;
 
 mod accuracy;
+mod app;
 mod calibrate;
 mod cli;
 mod dmt;
 mod dmt_reference;
 mod dmt_studies;
 mod dmt_weak;
-mod documents;
 mod embed;
 mod figures;
 mod hock_schittkowski;

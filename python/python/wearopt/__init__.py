@@ -21,8 +21,9 @@ A ``problem`` is a path to a problem file (TOML) or a dict in the same schema::
                       "asperity_density": "10 um^-2"},
     })
 
-Bad input raises ``ValueError`` with the message the command line prints;
-outcomes (``separated``, ``infeasible``, …) are statuses in the result. The
+Bad input raises ``ValueError`` with the message the command line prints, its
+options named as this package's keyword arguments (``points=1: must lie in
+2..=200`` where the command line says ``--points 1: …``); outcomes (``separated``, ``infeasible``, …) are statuses in the result. The
 computations release the GIL, so calls from several threads run in parallel.
 """
 
@@ -36,7 +37,18 @@ import numpy as np
 
 from . import _wearopt
 
-__all__ = ["evaluate", "optimize", "pareto", "roughness", "curve", "sweep", "merge"]
+__all__ = [
+    "evaluate",
+    "optimize",
+    "pareto",
+    "roughness",
+    "curve",
+    "sweep",
+    "merge",
+    "fit_adhesion",
+    "figures",
+    "accuracy",
+]
 __version__ = "0.1.0"
 
 Problem = Union[str, "os.PathLike[str]", Dict[str, Any]]
@@ -78,6 +90,9 @@ def optimize(problem: Problem) -> Dict[str, Any]:
     >>> r = wearopt.optimize("problems/micro-gear-study.toml")
     >>> r["status"]
     'optimal'
+    >>> ranking = wearopt.optimize("problems/materials-study.toml")["ranking"]
+    >>> ranking[0]["rank"], ranking[0]["material"] in {"polysilicon", "silicon carbide", "diamond-like carbon"}
+    (1, True)
     """
     return json.loads(_wearopt.optimize_json(*_source(problem)))
 
@@ -93,7 +108,7 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
     if points is not None and (isinstance(points, bool) or not isinstance(points, int)):
         raise TypeError(f"points must be an int or None, not {type(points).__name__}")
     if points is not None and points < 0:
-        raise ValueError(f"--points {points}: must lie in 2..=200")
+        raise ValueError(f"points={points}: must lie in 2..=200")
     return json.loads(_wearopt.pareto_json(*_source(problem), points))
 
 
@@ -107,7 +122,7 @@ def _length(value: Any) -> Optional[str]:
 
 
 def roughness(
-    path: Union[str, "os.PathLike[str]"],
+    path: Any,
     cutoff: Any = None,
     level: str = "plane",
     pixel_size: Any = None,
@@ -120,15 +135,42 @@ def roughness(
     ("100 nm") or numbers in metres; ``height_unit`` is a unit ("nm") or a
     scale ("1e-9").
 
+    ``path`` may also be the heights themselves: a 2-D array (rows along y,
+    NaN where a point is missing) in metres, or in ``height_unit``; then
+    ``pixel_size`` is required (square pixels).
+
     >>> r = wearopt.roughness("problems/scans/self-affine.gsf", cutoff="100 nm")
     >>> r["summit_sigma"] > 0 and r["summit_radius"] > 0 and r["summit_density"] > 0
+    True
+    >>> import numpy as np
+    >>> z = np.load("problems/scans/self-affine-nm.npy")
+    >>> a = wearopt.roughness(z, pixel_size="20 nm", height_unit="nm")
+    >>> a["summit_sigma"] == wearopt.roughness("problems/scans/self-affine-nm.npy",
+    ...                                        pixel_size="20 nm", height_unit="nm")["summit_sigma"]
     True
     """
     if height_unit is not None and not isinstance(height_unit, str):
         height_unit = repr(float(height_unit))
+    if isinstance(path, (str, os.PathLike)):
+        return json.loads(
+            _wearopt.roughness_json(
+                os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit
+            )
+        )
+    heights = _float_array("heights", path)
+    if heights.ndim == 1:
+        heights = heights[None, :]
+    if heights.ndim != 2:
+        raise ValueError(f"heights: a 2-D array (rows along y) is needed, not {heights.ndim}-D")
+    if pixel_size is None:
+        raise ValueError('pixel_size=None: heights in an array carry no pixel size; give one, e.g. "10 nm"')
     return json.loads(
-        _wearopt.roughness_json(
-            os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit
+        _wearopt.roughness_array_json(
+            np.ascontiguousarray(heights, dtype=np.float64),
+            _length(pixel_size),
+            _length(cutoff),
+            level,
+            height_unit,
         )
     )
 
@@ -220,3 +262,89 @@ def merge(parts: Iterable[str], samples: Optional[int] = None) -> str:
     True
     """
     return _wearopt.merge_text(list(parts), samples)
+
+
+def _quantity(name: str, value: Any) -> Optional[str]:
+    """A quantity as the command line reads it: a string with a unit, or SI."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return repr(float(value))
+    raise TypeError(f"{name} must be a string with a unit or a number in SI units, not {type(value).__name__}")
+
+
+def fit_adhesion(
+    data: Union[str, "os.PathLike[str]"],
+    radius: Any,
+    mu: Optional[float] = None,
+    fit_mu: bool = False,
+    modulus: Any = None,
+    materials: Optional[Iterable[str]] = None,
+    quoted_gamma: Any = None,
+    quoted_bond_strength: Any = None,
+) -> Dict[str, Any]:
+    """The work of adhesion γ (and μ with ``fit_mu=True``) from friction
+    measurements by the JKR friction law: the JSON of ``wearopt fit-adhesion
+    DATA --radius R [--mu μ | --fit-mu] [--modulus E | --materials A,B]
+    --format json``. ``data`` is a CSV with the header ``load,friction``;
+    quantities are strings with units ("0.3 mm") or SI numbers; ``materials``
+    names catalogue materials (one: both bodies; two: ball first).
+
+    >>> c = wearopt.fit_adhesion("problems/ando-friction.csv", "0.3 mm",
+    ...                          materials=["steel", "silicon"])
+    >>> c["comparison"]["work_of_adhesion"]["quoted"], c["converged"]
+    (0.1, True)
+    """
+    if mu is not None:
+        mu = float(mu)
+    return json.loads(
+        _wearopt.fit_adhesion_json(
+            os.fspath(data),
+            _quantity("radius", radius),
+            mu,
+            bool(fit_mu),
+            _quantity("modulus", modulus),
+            None if materials is None else [str(m) for m in materials],
+            _quantity("quoted_gamma", quoted_gamma),
+            _quantity("quoted_bond_strength", quoted_bond_strength),
+        )
+    )
+
+
+def figures(
+    out: Union[str, "os.PathLike[str]", None] = None,
+    points: int = 51,
+    load_min: float = 0.05,
+    load_max: float = 5.0,
+) -> Dict[str, Any]:
+    """The paper's figures 1–4 (wear volume against load), the least-squares
+    line of every curve and the verdict on each claim of its §4: the JSON of
+    ``wearopt figures [--out DIR] --format json``. With ``out``, the files
+    ``figure1.csv`` … ``figure4.svg`` and ``slopes.csv`` are written there
+    (and listed under ``files``); without it nothing is written.
+
+    >>> f = wearopt.figures(points=5)
+    >>> [c["id"] for c in f["claims"]][0], f["files"]
+    ('linear', [])
+    """
+    return json.loads(
+        _wearopt.figures_json(
+            int(points),
+            float(load_min),
+            float(load_max),
+            None if out is None else os.fspath(out),
+        )
+    )
+
+
+def accuracy(problem: Optional[Problem] = None) -> Dict[str, Any]:
+    """The work–precision of the evaluator against an independent reference
+    (the JSON of ``wearopt accuracy [FILE] --format json``): the error and time
+    of each quadrature setting and finite-difference rule, over an extreme-range
+    grid and the problem's region (the shipped scenes' without one). Takes
+    seconds: every setting is timed.
+    """
+    if problem is None:
+        return json.loads(_wearopt.accuracy_json())
+    return json.loads(_wearopt.accuracy_json(*_source(problem)))
+

@@ -32,7 +32,7 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
     """
 
 def roughness(
-    path: Union[str, os.PathLike[str]],
+    path: Union[str, os.PathLike[str], ArrayLike],
     cutoff: Union[str, float, None] = None,
     level: str = "plane",
     pixel_size: Union[str, float, None] = None,
@@ -81,3 +81,26 @@ def merge(parts: Iterable[str], samples: Optional[int] = None) -> str:
     >>> wearopt.merge(parts) == wearopt.sweep("problems/micro-gear-study.toml", 8)
     True
     """
+
+def fit_adhesion(
+    data: Union[str, os.PathLike[str]],
+    radius: Union[str, float],
+    mu: Optional[float] = None,
+    fit_mu: bool = False,
+    modulus: Union[str, float, None] = None,
+    materials: Optional[Iterable[str]] = None,
+    quoted_gamma: Union[str, float, None] = None,
+    quoted_bond_strength: Union[str, float, None] = None,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt fit-adhesion DATA --radius R … --format json` as a dict."""
+
+def figures(
+    out: Union[str, os.PathLike[str], None] = None,
+    points: int = 51,
+    load_min: float = 0.05,
+    load_max: float = 5.0,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt figures [--out DIR] --format json` as a dict (files written only with `out`)."""
+
+def accuracy(problem: Optional[Problem] = None) -> Dict[str, Any]:
+    """The JSON of `wearopt accuracy [FILE] --format json` as a dict."""

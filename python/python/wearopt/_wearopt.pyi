@@ -8,7 +8,13 @@ def evaluate_json(source: str, is_path: bool) -> str: ...
 def optimize_json(source: str, is_path: bool) -> str: ...
 def pareto_json(source: str, is_path: bool, points: Optional[int] = None) -> str: ...
 def curve_arrays(
-    theta: np.ndarray, lam: np.ndarray, hardness_coefficient: np.ndarray, h: np.ndarray
+    theta: np.ndarray,
+    lam: np.ndarray,
+    hardness_coefficient: np.ndarray,
+    h: np.ndarray,
+    adhesion_model: str = "jkr",
+    attraction: Optional[str] = None,
+    attraction_range: Optional[float] = None,
 ) -> Dict[str, np.ndarray]: ...
 def sweep_text(
     source: str,
@@ -28,3 +34,22 @@ def roughness_json(
     pixel_size: Optional[str] = None,
     height_unit: Optional[str] = None,
 ) -> str: ...
+def roughness_array_json(
+    heights: np.ndarray,
+    pixel_size: str,
+    cutoff: Optional[str] = None,
+    level: str = "plane",
+    height_unit: Optional[str] = None,
+) -> str: ...
+def fit_adhesion_json(
+    path: str,
+    radius: str,
+    mu: Optional[float] = None,
+    fit_mu: bool = False,
+    modulus: Optional[str] = None,
+    materials: Optional[List[str]] = None,
+    quoted_gamma: Optional[str] = None,
+    quoted_bond_strength: Optional[str] = None,
+) -> str: ...
+def figures_json(points: int, load_min: float, load_max: float, out: Optional[str] = None) -> str: ...
+def accuracy_json(source: Optional[str] = None, is_path: bool = True) -> str: ...

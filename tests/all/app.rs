@@ -1,4 +1,5 @@
-//! `wearopt::documents` against the command line: each document equals the JSON
+//! `wearopt::app` (rendered by `wearopt::report`) against the command line: each
+//! document equals the JSON
 //! the CLI writes for the same input (parsed; `time_seconds` removed, the one
 //! member that measures the run rather than the result), and each error is the
 //! message the CLI prints. The CLI's Pareto JSON is streamed point by point by
@@ -11,8 +12,53 @@ use std::path::Path;
 
 use serde_json::Value;
 
-use wearopt::documents::{self, DocumentError, RoughnessOptions};
-use wearopt::surface::Levelling;
+use wearopt::app::roughness::{self as rough, Levelling, RoughnessOptions};
+use wearopt::app::{self, AppError, OptionName, Vocabulary};
+use wearopt::report;
+
+fn eval_json(problem: &app::Problem, origin: &str) -> Result<Value, AppError> {
+    let doc = app::eval::eval(problem, origin, &Default::default())?;
+    Ok(report::eval::json_document(&doc))
+}
+
+fn optimize_json(problem: &app::Problem, origin: &str) -> Result<Value, AppError> {
+    let doc = app::optimize::optimize(problem, origin, Default::default())?;
+    Ok(report::optimize::json_document(&doc))
+}
+
+fn pareto_json(
+    problem: &app::Problem,
+    origin: &str,
+    points: Option<usize>,
+) -> Result<Value, AppError> {
+    let options = app::pareto::ParetoOptions {
+        points,
+        constraint_values: false,
+    };
+    let doc = app::pareto::pareto(problem, origin, &options, &app::pareto::Silent)?;
+    Ok(report::pareto::json_document(&doc))
+}
+
+/// The roughness options as the command line reads them from flags.
+fn parse_options(
+    cutoff: Option<&str>,
+    level: Levelling,
+    pixel_size: Option<&str>,
+    height_unit: Option<&str>,
+) -> Result<RoughnessOptions, AppError> {
+    Ok(RoughnessOptions {
+        pixel_size: pixel_size
+            .map(|t| rough::length(OptionName("pixel_size"), t))
+            .transpose()?,
+        height_unit: height_unit
+            .map(|t| rough::height_unit(OptionName("height_unit"), t))
+            .transpose()?,
+        cutoff: cutoff
+            .map(|t| rough::length(OptionName("cutoff"), t))
+            .transpose()?,
+        level,
+    })
+}
 
 /// The CLI's stdout for `args`, parsed, and its exit code.
 fn cli_json(args: &[&str]) -> (Value, i32) {
@@ -53,8 +99,8 @@ fn timeless(mut v: Value) -> Value {
     v
 }
 
-fn load(file: &str) -> wearopt::problem::Problem {
-    wearopt::problem::load(Path::new(file)).expect("shipped problems load")
+fn load(file: &str) -> app::Problem {
+    app::load(Path::new(file)).expect("shipped problems load")
 }
 
 const PROBLEMS: [&str; 9] = [
@@ -73,7 +119,7 @@ const PROBLEMS: [&str; 9] = [
 fn eval_documents_equal_the_cli_json() {
     for file in PROBLEMS {
         let (cli, _) = cli_json(&["eval", file, "--format", "json"]);
-        let doc = documents::eval_json(&load(file), file).expect("a valid scene");
+        let doc = eval_json(&load(file), file).expect("a valid scene");
         assert_eq!(doc, cli, "{file}");
     }
 }
@@ -88,7 +134,7 @@ fn optimize_documents_equal_the_cli_json() {
         "problems/materials-study.toml",
     ] {
         let (cli, code) = cli_json(&["optimize", file, "--format", "json"]);
-        let doc = documents::optimize_json(&load(file), file).expect("a study");
+        let doc = optimize_json(&load(file), file).expect("a study");
         assert_eq!(timeless(doc), timeless(cli), "{file}");
         let infeasible = file.contains("infeasible");
         assert_eq!(code, i32::from(infeasible), "{file}");
@@ -107,7 +153,7 @@ fn pareto_documents_equal_the_streamed_cli_json() {
             args.extend(["--points", n]);
         }
         let (cli, _) = cli_json(&args);
-        let doc = documents::pareto_json(&load(file), file, points).expect("a [pareto] study");
+        let doc = pareto_json(&load(file), file, points).expect("a [pareto] study");
         assert!(doc["points"].as_array().is_some_and(|p| !p.is_empty()));
         assert_eq!(doc, cli, "{file}");
     }
@@ -115,9 +161,8 @@ fn pareto_documents_equal_the_streamed_cli_json() {
 
 #[test]
 fn roughness_documents_equal_the_cli_json() {
-    let npy = RoughnessOptions::parse(None, Levelling::Plane, Some("20nm"), Some("nm")).unwrap();
-    let filtered =
-        RoughnessOptions::parse(Some("100 nm"), Levelling::Quadratic, None, None).unwrap();
+    let npy = parse_options(None, Levelling::Plane, Some("20nm"), Some("nm")).unwrap();
+    let filtered = parse_options(Some("100 nm"), Levelling::Quadratic, None, None).unwrap();
     for (file, options, flags) in [
         (
             "problems/scans/self-affine.gsf",
@@ -138,7 +183,9 @@ fn roughness_documents_equal_the_cli_json() {
         let mut args = vec!["roughness", file, "--format", "json"];
         args.extend(flags);
         let (cli, _) = cli_json(&args);
-        let doc = documents::roughness_json(Path::new(file), &options).expect("analysable");
+        let doc = report::roughness::json_document(
+            &rough::roughness(Path::new(file), &options).expect("analysable"),
+        );
         assert_eq!(doc, cli, "{file}");
     }
 }
@@ -147,14 +194,14 @@ fn roughness_documents_equal_the_cli_json() {
 fn errors_are_the_cli_messages() {
     let gear = load("problems/micro-gear-study.toml");
     let origin = "problems/micro-gear-study.toml";
-    let no_pareto = documents::pareto_json(&gear, origin, None).unwrap_err();
-    assert!(matches!(no_pareto, DocumentError::NoPareto { .. }));
+    let no_pareto = pareto_json(&gear, origin, None).unwrap_err();
+    assert!(matches!(no_pareto, AppError::NoPareto { .. }));
     assert_eq!(no_pareto.to_string(), cli_error(&["pareto", origin]));
 
     let latch = "problems/latch-pareto.toml";
     for points in [0, 1, 201] {
-        let e = documents::pareto_json(&load(latch), latch, Some(points)).unwrap_err();
-        assert!(matches!(e, DocumentError::Points { .. }));
+        let e = pareto_json(&load(latch), latch, Some(points)).unwrap_err();
+        assert!(matches!(e, AppError::Invalid { .. }));
         assert_eq!(
             e.to_string(),
             cli_error(&["pareto", latch, "--points", &points.to_string()])
@@ -163,8 +210,7 @@ fn errors_are_the_cli_messages() {
 
     let npy = "problems/scans/self-affine-nm.npy";
     for (pixel, unit) in [("-3nm", "nm"), ("3 kg", "nm"), ("3nm", "furlong")] {
-        let e =
-            RoughnessOptions::parse(None, Levelling::Plane, Some(pixel), Some(unit)).unwrap_err();
+        let e = parse_options(None, Levelling::Plane, Some(pixel), Some(unit)).unwrap_err();
         assert_eq!(
             e.to_string(),
             cli_error(&[
@@ -178,7 +224,48 @@ fn errors_are_the_cli_messages() {
         );
     }
     // A .npy without pixel size and height unit cannot be read.
-    let e = documents::roughness(Path::new(npy), &RoughnessOptions::default()).unwrap_err();
-    assert!(matches!(e, DocumentError::Read(_)));
+    let e = rough::roughness(Path::new(npy), &RoughnessOptions::default()).unwrap_err();
+    assert!(matches!(e, AppError::Read(_)));
     assert_eq!(e.to_string(), cli_error(&["roughness", npy]));
+}
+
+#[test]
+fn python_words_its_errors_in_keyword_arguments() {
+    // The same errors, worded for Python: keyword arguments, never a flag.
+    let latch = "problems/latch-pareto.toml";
+    let e = pareto_json(&load(latch), latch, Some(1)).unwrap_err();
+    assert_eq!(
+        e.message(Vocabulary::Keywords),
+        "points=1: must lie in 2..=200"
+    );
+    assert_eq!(
+        e.message(Vocabulary::Flags),
+        "--points 1: must lie in 2..=200"
+    );
+    let e = parse_options(None, Levelling::Plane, Some("-3nm"), None).unwrap_err();
+    assert_eq!(
+        e.message(Vocabulary::Keywords),
+        "pixel_size=\"-3nm\": must be a positive finite length"
+    );
+    let npy = "problems/scans/self-affine-nm.npy";
+    let e = rough::roughness(Path::new(npy), &RoughnessOptions::default()).unwrap_err();
+    let words = e.message(Vocabulary::Keywords);
+    assert!(
+        words.contains("the keyword argument pixel_size="),
+        "{words}"
+    );
+    assert!(!words.contains("--"), "{words}");
+    let law = app::curve::LawOptions {
+        adhesion_model: app::curve::AdhesionModel::Dmt,
+        attraction: None,
+        attraction_range: None,
+    };
+    let e = law.law().unwrap_err();
+    assert_eq!(
+        e.message(Vocabulary::Keywords),
+        "adhesion_model=\"dmt\" needs attraction_range: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)"
+    );
+    assert!(e
+        .to_string()
+        .starts_with("--adhesion-model dmt needs --attraction-range D"));
 }

@@ -1,0 +1,53 @@
+//! The application layer: one function per command, typed options in, a typed
+//! document out.
+//!
+//! `wearopt eval`, `optimize` (a ranking too, when `[design]` lists materials),
+//! `pareto`, `curve`, `figures`, `accuracy`, `fit-adhesion`, `roughness`, `sweep`
+//! and `merge` each have a function here. The command line (`src/cli/`) and the
+//! Python package (`python/`) are adapters: they turn flags or keyword arguments
+//! into these options, call one function, hand the document to the report stage
+//! ([`crate::report`], one `render` per document and format) and word errors in
+//! their own vocabulary ([`AppError::message`] with [`Vocabulary::Flags`] or
+//! [`Vocabulary::Keywords`]). Neither imports `model`, `optimize` or `sweep`: what
+//! they need of them is re-exported here. Their results agree by construction.
+//!
+//! Errors are bad input, each naming the input (the file as the caller names it),
+//! the field or option, the value and what is accepted. Outcomes (separated,
+//! infeasible, not converged) are statuses inside the documents, never errors.
+
+pub mod accuracy;
+pub mod curve;
+pub mod eval;
+pub mod figures;
+pub mod fit_adhesion;
+pub mod optimize;
+pub mod pareto;
+pub mod roughness;
+pub mod sweep;
+
+mod error;
+
+pub use error::{AppError, OptionName, Vocabulary};
+
+pub use crate::problem::{load, parse, Problem, ProblemError};
+
+use crate::optimize::Study;
+
+/// The problem's scene, checked ([`crate::model::Scene::validate`]).
+fn valid_scene(problem: &Problem, origin: &str) -> Result<(), AppError> {
+    problem.scene.validate().map_err(|error| AppError::Scene {
+        origin: origin.to_string(),
+        error,
+    })
+}
+
+/// The optimiser's view of a problem's study (what every study command runs).
+pub fn study(problem: &Problem) -> Study<'_> {
+    Study {
+        scene: &problem.scene,
+        design: &problem.study.design,
+        objective: problem.study.objective,
+        constraints: &problem.study.constraints,
+        settings: &problem.study.optimizer,
+    }
+}

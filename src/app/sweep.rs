@@ -1,0 +1,113 @@
+//! `wearopt sweep`: a study's scene at N designs spread over its `[design]` box,
+//! rows streamed as they are computed, in shards; and what `merge` and the map plot
+//! need of a sweep.
+
+use std::ops::Range;
+
+use crate::problem::Problem;
+use crate::sweep::SweepError;
+
+use super::{AppError, OptionName};
+
+pub use crate::optimize::ParetoDirection;
+pub use crate::sweep::{Method, Shard, Sweep, SweepRow};
+
+/// The options of `wearopt sweep`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SweepOptions {
+    /// Number of designs N over all shards.
+    pub samples: u64,
+    /// How the designs fill the box.
+    pub method: Method,
+    /// Seed of the Sobol′ shift or the Latin hypercube.
+    pub seed: u64,
+    /// The part of the sweep to run.
+    pub shard: Shard,
+}
+
+/// A sweep ready to run: what its output's head says and the rows it will compute.
+#[derive(Debug, Clone)]
+pub struct SweepPlan {
+    /// The problem's name.
+    pub name: String,
+    /// The sweep.
+    pub sweep: Sweep,
+    /// The rows of this shard.
+    pub range: Range<u64>,
+    /// Which end of the pull-off the study prefers (its `[pareto]` direction;
+    /// low without one): what the map's Pareto-optimal designs minimise.
+    pub direction: ParetoDirection,
+}
+
+/// The sampling method named `name` ("sobol", "lhs", "grid").
+pub fn method(option: OptionName, name: &str) -> Result<Method, AppError> {
+    match name {
+        "sobol" => Ok(Method::Sobol),
+        "lhs" => Ok(Method::Lhs),
+        "grid" => Ok(Method::Grid),
+        other => Err(AppError::Invalid {
+            options: vec![(option, format!("{other:?}"))],
+            rule: "expected \"sobol\", \"lhs\" or \"grid\"".to_string(),
+        }),
+    }
+}
+
+/// Part `index` of `count`.
+pub fn shard(index: u64, count: u64) -> Result<Shard, AppError> {
+    Shard::new(index, count).map_err(|_| AppError::Invalid {
+        options: vec![(OptionName("shard"), format!("{index}/{count}"))],
+        rule: "expected I/N with 0 <= I < N".to_string(),
+    })
+}
+
+/// The sweep of the problem's study under `options`, checked up front.
+pub fn plan(
+    problem: &Problem,
+    origin: &str,
+    options: &SweepOptions,
+) -> Result<SweepPlan, AppError> {
+    let sweep_error = |error| AppError::Sweep {
+        origin: origin.to_string(),
+        samples: options.samples,
+        error,
+    };
+    if !problem.study.materials.is_empty() {
+        return Err(sweep_error(SweepError::Materials));
+    }
+    let sweep = Sweep::new(
+        &problem.scene,
+        &problem.study.design,
+        &problem.study.constraints,
+        options.method,
+        options.samples,
+        options.seed,
+    )
+    .map_err(sweep_error)?;
+    Ok(SweepPlan {
+        name: problem.name.clone(),
+        range: options.shard.range(sweep.samples()),
+        sweep,
+        direction: problem
+            .study
+            .pareto
+            .as_ref()
+            .map_or(ParetoDirection::Low, |p| p.direction),
+    })
+}
+
+impl SweepPlan {
+    /// Computes the rows of this shard in order, handing them to `sink` in blocks
+    /// as they are final (memory does not grow with N).
+    pub fn run<E>(&self, sink: impl FnMut(&[SweepRow]) -> Result<(), E>) -> Result<(), E> {
+        self.sweep.run(self.range.clone(), sink)
+    }
+}
+
+/// Which of the map's points (wear rate, log10 pull-off, feasible) are
+/// Pareto-optimal among the feasible ones in the study's direction.
+pub fn pareto_optimal(
+    points: &[(f64, Option<f64>, bool)],
+    direction: ParetoDirection,
+) -> Vec<bool> {
+    crate::sweep::pareto_optimal(points, direction)
+}
