@@ -152,4 +152,26 @@ mod tests {
         // The geometric midpoint maps to 1/2.
         assert!((v.unit_of((0.5e-9f64 * 20e-9).sqrt()) - 0.5).abs() < 1e-14);
     }
+
+    /// A variable whose bounds meet (min = max) is its bound at every unit point,
+    /// exactly: the map's middle (where `unit_of` puts it) must not come back as
+    /// exp(ln min), which can be an ulp away.
+    #[test]
+    fn a_variable_fixed_by_its_bounds_is_its_bound() {
+        for &x in &[3e-9, 7.3e-9, 1.1e11, 0.17] {
+            let v = Variable {
+                quantity: DesignQuantity::Sigma,
+                min: x,
+                max: x,
+                logarithmic: true,
+            };
+            for u in [0.0, 0.25, 0.5, 1.0, v.unit_of(x)] {
+                assert_eq!(v.value_at(u), x, "{x} at {u}");
+            }
+        }
+        // Some x is an ulp off through exp(ln x): the case the rule is for.
+        assert!((1..2000)
+            .map(|i| i as f64 * 1.37e-9)
+            .any(|x: f64| x.ln().exp() != x));
+    }
 }

@@ -11,7 +11,11 @@ use crate::problem::Dimensioned;
 use crate::units::{format_quantity, Dimension};
 
 /// The formats a material ranking is written in (those of `wearopt optimize`).
-pub const FORMATS: &[super::Format] = super::optimize::FORMATS;
+pub const FORMATS: &[super::Format] = &[
+    super::Format::Text,
+    super::Format::Json,
+    super::Format::Html,
+];
 
 const METHOD: [&str; 4] = [
     "body a takes each material's E, ν and H (catalogue); body b is unchanged",
@@ -97,12 +101,12 @@ pub fn json_value(name: &str, ranking: &MaterialRanking) -> Value {
 }
 
 /// The optimiser's trace of every optimised material, one CSV: the columns of
-/// [`super::optimize::trace_csv`] after a `material` column.
+/// [`super::trace::trace_csv`] after a `material` column.
 pub fn trace_csv(ranking: &MaterialRanking) -> String {
     let mut csv = String::new();
     for r in &ranking.results {
         if let MaterialOutcome::Optimized(o) = &r.outcome {
-            let t = super::optimize::trace_csv(o);
+            let t = super::trace::trace_csv(o);
             for (i, l) in t.lines().enumerate() {
                 if i == 0 && csv.is_empty() {
                     csv.push_str(&format!("material,{l}\n"));

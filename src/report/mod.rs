@@ -23,6 +23,7 @@ pub mod pareto;
 pub mod roughness;
 pub mod svg;
 pub mod sweep;
+pub mod trace;
 
 pub mod words;
 

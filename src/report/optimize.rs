@@ -4,7 +4,7 @@
 use serde_json::{json, Map, Value};
 
 use super::format::FormatError;
-use super::{number, si, sig, sig_exp};
+use super::{si, sig, sig_exp};
 use crate::app::optimize::{OptimizeDocument, OptimizeOptions};
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::units::format_quantity;
@@ -189,27 +189,8 @@ pub fn json_value(name: &str, o: &Optimum) -> Value {
     })
 }
 
-/// The per-iteration trace of every start: error against run time.
-pub fn trace_csv(o: &Optimum) -> String {
-    let mut out = String::from(
-        "start,iteration,time_s,objective,ln_objective,kkt_residual,constraint_violation\n",
-    );
-    for s in &o.start_outcomes {
-        for r in &s.trace {
-            out.push_str(&format!(
-                "{},{},{},{},{},{},{}\n",
-                s.index,
-                r.iteration,
-                number(r.time),
-                number(r.objective.exp()),
-                number(r.objective),
-                number(r.kkt_residual),
-                number(r.violation)
-            ));
-        }
-    }
-    out
-}
+pub use super::trace::trace_csv;
+
 
 /// A report for people.
 pub fn text(name: &str, o: &Optimum) -> String {
