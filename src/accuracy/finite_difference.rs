@@ -21,7 +21,7 @@ use std::f64::consts::{LN_10, PI};
 use super::reference::ReferenceModel;
 use crate::model::{
     evaluate, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
-    EvaluationOptions, Quadrature, Scene, SensitivityParameter, Status, WearArea,
+    EvaluationOptions, Quadrature, Scene, SceneParameter, Status, WearArea,
 };
 
 /// A finite-difference rule on ln x.
@@ -63,33 +63,22 @@ impl StepRule {
     }
 }
 
-/// The parameter's value in a scene.
-pub fn parameter_value(p: SensitivityParameter, scene: &Scene) -> f64 {
-    match p {
-        SensitivityParameter::YoungsModulus => scene.youngs_modulus_a,
-        SensitivityParameter::Hardness => scene.hardness,
-        SensitivityParameter::WorkOfAdhesion => scene.work_of_adhesion,
-        SensitivityParameter::Sigma => scene.sigma,
-        SensitivityParameter::AsperityRadius => scene.asperity_radius,
-    }
+/// The parameter's value in a scene (the table's reading, [`SceneParameter::get`]).
+pub fn parameter_value(p: SceneParameter, scene: &Scene) -> f64 {
+    p.get(scene)
 }
 
-/// The scene with the parameter multiplied by e^{log_step}.
-pub fn perturbed(scene: &Scene, p: SensitivityParameter, log_step: f64) -> Scene {
+/// The scene with the parameter multiplied by e^{log_step}, moved as the table
+/// moves it ([`SceneParameter::set`]: a shared modulus moves both bodies, as
+/// `eval`'s sensitivities and a design variable move it).
+pub fn perturbed(scene: &Scene, p: SceneParameter, log_step: f64) -> Scene {
     let mut s = scene.clone();
-    let x = parameter_value(p, scene) * log_step.exp();
-    match p {
-        SensitivityParameter::YoungsModulus => s.youngs_modulus_a = x,
-        SensitivityParameter::Hardness => s.hardness = x,
-        SensitivityParameter::WorkOfAdhesion => s.work_of_adhesion = x,
-        SensitivityParameter::Sigma => s.sigma = x,
-        SensitivityParameter::AsperityRadius => s.asperity_radius = x,
-    }
+    p.set(&mut s, p.get(scene) * log_step.exp());
     s
 }
 
 /// True when the parameter can be differentiated (finite, non-zero).
-pub fn differentiable(p: SensitivityParameter, scene: &Scene) -> bool {
+pub fn differentiable(p: SceneParameter, scene: &Scene) -> bool {
     let x = parameter_value(p, scene);
     x.is_finite() && x != 0.0
 }
@@ -115,7 +104,7 @@ pub fn ln_wear_rate(scene: &Scene, quadrature: Quadrature) -> Option<f64> {
 /// The elasticity of the wear rate by a step rule with the fast evaluator.
 pub fn elasticity(
     scene: &Scene,
-    p: SensitivityParameter,
+    p: SceneParameter,
     rule: StepRule,
     quadrature: Quadrature,
 ) -> Option<f64> {
@@ -260,7 +249,7 @@ pub struct ReferenceElasticity {
 
 /// The reference elasticity (module docs): Neville tableau in δ² over central
 /// differences of the reference ln W at δ = 0.04/2^k, k = 0..6.
-pub fn reference_elasticity(scene: &Scene, p: SensitivityParameter) -> Option<ReferenceElasticity> {
+pub fn reference_elasticity(scene: &Scene, p: SceneParameter) -> Option<ReferenceElasticity> {
     const LEVELS: usize = 7;
     let mut table = [[0.0f64; LEVELS]; LEVELS];
     let mut best: Option<ReferenceElasticity> = None;

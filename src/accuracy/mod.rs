@@ -33,7 +33,7 @@ use std::time::Instant;
 
 use crate::model::{
     evaluate, gauss, wear, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
-    EvaluationOptions, Model, Quadrature, Scaled, Scene, SensitivityParameter, Status,
+    EvaluationOptions, Model, Quadrature, Scaled, Scene, SceneParameter, Status,
 };
 use finite_difference::StepRule;
 use reference::ReferenceModel;
@@ -453,7 +453,7 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
     let mut reference_gradient_error: f64 = 0.0;
     for s in &jkr_scenes {
         let mut grad = Vec::new();
-        for p in SensitivityParameter::ALL {
+        for p in SceneParameter::SENSITIVITIES {
             if !finite_difference::differentiable(p, s) {
                 continue;
             }

@@ -16,6 +16,7 @@ pub mod integrals;
 pub mod law;
 pub mod load_curve;
 mod material;
+mod parameter;
 pub mod quadrature;
 pub mod scaled;
 mod scene;
@@ -30,16 +31,17 @@ pub use integrals::{Integrals, Model};
 pub use law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};
 pub use load_curve::{load_curve, LoadCurve};
 pub use material::Material;
+pub use parameter::SceneParameter;
 pub use quadrature::Quadrature;
 pub use scaled::Scaled;
 pub use scene::{InputError, Requirements, Scene, WearArea};
-pub use sensitivity::{sensitivities, Sensitivity, SensitivityGap, SensitivityParameter};
+pub use sensitivity::{sensitivities, Sensitivity, SensitivityGap};
 pub use separation::{
     find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_at,
     solve_separation_from, solve_separation_with, CriticalPoint, Landscape, PullOff,
     SeparationOutcome,
 };
-pub use warnings::{Note, ScalarInput, Warning};
+pub use warnings::{Note, Warning};
 pub use wear::{
     evaluate, evaluate_from, evaluate_with_other, Evaluation, EvaluationOptions, Indices,
     OtherModel, Regime, SearchHints, Status, Stiction, StictionVerdict,

@@ -6,11 +6,14 @@
 //! about eta/d = 1e-10, while Richardson's combination `D = D1 + (D1 - D2)/3`
 //! leaves a truncation error O(d^4), estimated as `|D1 - D2|/3 (d/l)^2` for
 //! derivatives that vary on scales l >= 0.1 in ln x, plus rounding `2 eta/d`. `wearopt accuracy` measured the rules
-//! against a 1e-12 reference: Richardson at d = 1e-3 is the most accurate (8e-12
-//! worst over the shipped scenes), five times better than at d = 1e-4.
+//! against a 1e-12 reference: Richardson at d = 1e-3 is the most accurate (3.2e-12
+//! worst over the shipped scenes), several times better than at d = 1e-4. Each
+//! parameter is moved as the scene-parameter table moves it
+//! ([`SceneParameter::set`]).
 
 use serde::Serialize;
 
+use super::parameter::SceneParameter;
 use super::scene::Scene;
 use super::wear::{evaluate, EvaluationOptions, Status};
 
@@ -23,78 +26,11 @@ pub const VARIATION_SCALE: f64 = 0.1;
 /// Relative accuracy assumed of one wear-rate evaluation in the error estimate.
 pub const EVALUATION_ACCURACY: f64 = 1e-13;
 
-/// A scene parameter the wear rate can be differentiated against.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SensitivityParameter {
-    /// E1, Young's modulus of the rough body a (and of b when both share it).
-    YoungsModulus,
-    /// H.
-    Hardness,
-    /// γ.
-    WorkOfAdhesion,
-    /// σ.
-    Sigma,
-    /// R.
-    AsperityRadius,
-}
-
-impl SensitivityParameter {
-    /// All five, in report order.
-    pub const ALL: [SensitivityParameter; 5] = [
-        SensitivityParameter::YoungsModulus,
-        SensitivityParameter::Hardness,
-        SensitivityParameter::WorkOfAdhesion,
-        SensitivityParameter::Sigma,
-        SensitivityParameter::AsperityRadius,
-    ];
-
-    /// The problem-file key.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            SensitivityParameter::YoungsModulus => "youngs_modulus",
-            SensitivityParameter::Hardness => "hardness",
-            SensitivityParameter::WorkOfAdhesion => "work_of_adhesion",
-            SensitivityParameter::Sigma => "sigma",
-            SensitivityParameter::AsperityRadius => "asperity_radius",
-        }
-    }
-
-    fn get(self, scene: &Scene) -> f64 {
-        match self {
-            SensitivityParameter::YoungsModulus => scene.youngs_modulus_a,
-            SensitivityParameter::Hardness => scene.hardness,
-            SensitivityParameter::WorkOfAdhesion => scene.work_of_adhesion,
-            SensitivityParameter::Sigma => scene.sigma,
-            SensitivityParameter::AsperityRadius => scene.asperity_radius,
-        }
-    }
-
-    fn set(self, scene: &mut Scene, value: f64) {
-        match self {
-            // Bodies that share a modulus (one film on itself) move together,
-            // as a `youngs_modulus` design variable moves them.
-            SensitivityParameter::YoungsModulus => {
-                if scene.youngs_modulus_b == scene.youngs_modulus_a
-                    && scene.poisson_ratio_b == scene.poisson_ratio_a
-                {
-                    scene.youngs_modulus_b = value;
-                }
-                scene.youngs_modulus_a = value
-            }
-            SensitivityParameter::Hardness => scene.hardness = value,
-            SensitivityParameter::WorkOfAdhesion => scene.work_of_adhesion = value,
-            SensitivityParameter::Sigma => scene.sigma = value,
-            SensitivityParameter::AsperityRadius => scene.asperity_radius = value,
-        }
-    }
-}
-
 /// One elasticity with its error estimate, or the reason there is none.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Sensitivity {
     /// Which parameter.
-    pub parameter: SensitivityParameter,
+    pub parameter: SceneParameter,
     /// d ln(wear rate) / d ln x; None where it is not defined.
     pub elasticity: Option<f64>,
     /// Estimated absolute error of the elasticity.
@@ -129,7 +65,7 @@ pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensit
             .then_some(ev.log10_wear_rate * std::f64::consts::LN_10)
     };
     let base_ok = ln_wear(scene).is_some();
-    SensitivityParameter::ALL
+    SceneParameter::SENSITIVITIES
         .iter()
         .map(|&p| {
             let x = p.get(scene);

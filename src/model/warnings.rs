@@ -7,87 +7,8 @@
 
 use serde::Serialize;
 
+use super::parameter::SceneParameter;
 use super::scene::Scene;
-
-/// A scene quantity checked for a plausible magnitude.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ScalarInput {
-    /// σ (m).
-    Sigma,
-    /// R (m).
-    AsperityRadius,
-    /// N (m⁻²).
-    AsperityDensity,
-    /// A_n (m²).
-    NominalArea,
-    /// |W| (N).
-    Load,
-    /// E1 (Pa).
-    YoungsModulusA,
-    /// E2 (Pa).
-    YoungsModulusB,
-    /// H (Pa).
-    Hardness,
-    /// γ (J/m²).
-    WorkOfAdhesion,
-    /// Z0 (m).
-    InteratomicDistance,
-}
-
-impl ScalarInput {
-    /// Every checked input.
-    pub const ALL: [ScalarInput; 10] = [
-        ScalarInput::Sigma,
-        ScalarInput::AsperityRadius,
-        ScalarInput::AsperityDensity,
-        ScalarInput::NominalArea,
-        ScalarInput::Load,
-        ScalarInput::YoungsModulusA,
-        ScalarInput::YoungsModulusB,
-        ScalarInput::Hardness,
-        ScalarInput::WorkOfAdhesion,
-        ScalarInput::InteratomicDistance,
-    ];
-
-    /// The value in a scene (SI; |W| for the load).
-    pub fn get(self, s: &Scene) -> f64 {
-        match self {
-            ScalarInput::Sigma => s.sigma,
-            ScalarInput::AsperityRadius => s.asperity_radius,
-            ScalarInput::AsperityDensity => s.asperity_density,
-            ScalarInput::NominalArea => s.nominal_area,
-            ScalarInput::Load => s.load.abs(),
-            ScalarInput::YoungsModulusA => s.youngs_modulus_a,
-            ScalarInput::YoungsModulusB => s.youngs_modulus_b,
-            ScalarInput::Hardness => s.hardness,
-            ScalarInput::WorkOfAdhesion => s.work_of_adhesion,
-            ScalarInput::InteratomicDistance => s.interatomic_distance,
-        }
-    }
-
-    /// The range of magnitudes found in MEMS, NEMS and storage contacts (and the
-    /// laboratory tests that model them), generously wide: outside it a value is more
-    /// likely a forgotten unit than a design. Limits, SI units:
-    /// σ 0.01 nm – 10 µm; R 1 nm – 10 mm; N 1 mm⁻² (1e6 m⁻²) – 1000 µm⁻² (1e15 m⁻²);
-    /// A_n 10 nm² – 100 cm²; |W| 1 pN – 100 N; E 1 MPa (elastomers) – 2 TPa (diamond
-    /// is 1.1 TPa); H 1 MPa – 200 GPa; γ 10 µJ/m² – 10 J/m²; Z0 0.05 – 2 nm.
-    /// Zero loads and γ, and infinite E or H (a rigid body, no plasticity) are limits
-    /// the model treats exactly and are not checked.
-    pub fn plausible_range(self) -> (f64, f64) {
-        match self {
-            ScalarInput::Sigma => (1e-11, 1e-5),
-            ScalarInput::AsperityRadius => (1e-9, 1e-2),
-            ScalarInput::AsperityDensity => (1e6, 1e15),
-            ScalarInput::NominalArea => (1e-17, 1e-2),
-            ScalarInput::Load => (1e-12, 100.0),
-            ScalarInput::YoungsModulusA | ScalarInput::YoungsModulusB => (1e6, 2e12),
-            ScalarInput::Hardness => (1e6, 2e11),
-            ScalarInput::WorkOfAdhesion => (1e-5, 10.0),
-            ScalarInput::InteratomicDistance => (5e-11, 2e-9),
-        }
-    }
-}
 
 /// Conditions the designer must know; the report words them.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -149,7 +70,7 @@ pub enum Warning {
     /// An input of a magnitude no MEMS or storage contact has: a forgotten unit?
     ImplausibleInput {
         /// Which input.
-        input: ScalarInput,
+        input: SceneParameter,
         /// Its value (SI).
         value: f64,
         /// The plausible range (SI).
@@ -224,9 +145,11 @@ pub const SUMMIT_PARAMETER_RANGE: (f64, f64) = (0.01, 0.2);
 /// Warnings that follow from the scene alone: implausible magnitudes, σ ≥ R, ηRσ.
 pub fn scene_warnings(scene: &Scene) -> Vec<Warning> {
     let mut w = Vec::new();
-    for input in ScalarInput::ALL {
+    for input in SceneParameter::CHECKED {
         let value = input.get(scene);
-        let (lo, hi) = input.plausible_range();
+        let Some((lo, hi)) = input.plausible_range() else {
+            continue;
+        };
         // Zero (no load, no adhesion) and infinity (rigid, no plasticity) are exact limits.
         if value == 0.0 || value.is_infinite() || value.is_nan() {
             continue;

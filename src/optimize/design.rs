@@ -1,14 +1,14 @@
 //! The design space: the variables a study may move, searched in [0, 1]^n with
 //! logarithmic scaling, so that 1e-9 m and 1e11 Pa look alike to the solver.
 
-use super::study::{DesignQuantity, DesignVariable};
+use super::study::{DesignVariable, SceneParameter};
 use crate::model::Scene;
 
 /// One design variable and its map from the unit interval.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Variable {
     /// Which scene quantity it moves.
-    pub quantity: DesignQuantity,
+    pub quantity: SceneParameter,
     /// Lower bound (SI).
     pub min: f64,
     /// Upper bound (SI).
@@ -72,7 +72,7 @@ impl DesignSpace {
                     min: d.min,
                     max: d.max,
                     // Poisson ratios may be negative: always linear.
-                    logarithmic: d.min > 0.0 && d.name != DesignQuantity::PoissonRatio,
+                    logarithmic: d.min > 0.0 && d.name != SceneParameter::PoissonRatio,
                 })
                 .collect(),
             baseline: baseline.clone(),
@@ -122,8 +122,8 @@ impl DesignSpace {
             v.quantity.set(&mut scene, value);
             if self.shared_modulus {
                 match v.quantity {
-                    DesignQuantity::YoungsModulus => scene.youngs_modulus_b = value,
-                    DesignQuantity::PoissonRatio => scene.poisson_ratio_b = value,
+                    SceneParameter::YoungsModulus => scene.youngs_modulus_b = value,
+                    SceneParameter::PoissonRatio => scene.poisson_ratio_b = value,
                     _ => {}
                 }
             }
@@ -139,7 +139,7 @@ mod tests {
     #[test]
     fn log_map_round_trips_and_hits_the_bounds() {
         let v = Variable {
-            quantity: DesignQuantity::Sigma,
+            quantity: SceneParameter::Sigma,
             min: 0.5e-9,
             max: 20e-9,
             logarithmic: true,
@@ -160,7 +160,7 @@ mod tests {
     fn a_variable_fixed_by_its_bounds_is_its_bound() {
         for &x in &[3e-9, 7.3e-9, 1.1e11, 0.17] {
             let v = Variable {
-                quantity: DesignQuantity::Sigma,
+                quantity: SceneParameter::Sigma,
                 min: x,
                 max: x,
                 logarithmic: true,

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::functions::{objective_value, quantity_value};
-use super::study::{Constraint, DesignQuantity, DesignVariable};
+use super::study::{Constraint, DesignVariable, SceneParameter};
 use super::{OptimizationStatus, OptimizeError, Optimum, Study};
 use crate::model::Material;
 use crate::model::{evaluate, Evaluation, EvaluationOptions, Scene, Status};
@@ -73,7 +73,7 @@ pub enum MaterialNote {
     /// A design variable the material fixes was dropped from the design.
     VariableFixed {
         /// The dropped variable.
-        variable: DesignQuantity,
+        variable: SceneParameter,
         /// Its value with the material (SI).
         value: f64,
     },
@@ -112,16 +112,16 @@ pub fn material_case(study: &Study, material: &'static Material) -> MaterialCase
     let (lo, hi) = material.work_of_adhesion;
     for v in study.design {
         match v.name {
-            DesignQuantity::YoungsModulus
-            | DesignQuantity::YoungsModulusA
-            | DesignQuantity::PoissonRatio
-            | DesignQuantity::Hardness => {
+            SceneParameter::YoungsModulus
+            | SceneParameter::YoungsModulusA
+            | SceneParameter::PoissonRatio
+            | SceneParameter::Hardness => {
                 notes.push(MaterialNote::VariableFixed {
                     variable: v.name,
                     value: v.name.get(&scene),
                 });
             }
-            DesignQuantity::WorkOfAdhesion => {
+            SceneParameter::WorkOfAdhesion => {
                 let (min, max) = (v.min.max(lo), v.max.min(hi));
                 if min >= max {
                     excluded = Some(Exclusion::GammaRangesDisjoint {
@@ -149,7 +149,7 @@ pub fn material_case(study: &Study, material: &'static Material) -> MaterialCase
     if !study
         .design
         .iter()
-        .any(|v| v.name == DesignQuantity::WorkOfAdhesion)
+        .any(|v| v.name == SceneParameter::WorkOfAdhesion)
         && scene.work_of_adhesion > 0.0
         && !(lo..=hi).contains(&scene.work_of_adhesion)
     {

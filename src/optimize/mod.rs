@@ -41,8 +41,8 @@ pub use functions::{Point, Row, Side, StudyFunctions};
 pub use program::{NonlinearProgram, Values};
 pub use sqp::{minimize, minimize_observed, SqpResult, SqpSettings, SqpState, SqpStatus, TraceRow};
 pub use study::{
-    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
-    Objective, OptimizerSettings, ParetoDirection, ParetoSpec, SettingsError,
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Named, Objective,
+    OptimizerSettings, ParetoDirection, ParetoSpec, SceneParameter, SettingsError,
     DEFAULT_RELEASE_MARGIN,
 };
 

@@ -50,8 +50,8 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::study::{
-    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective,
-    OptimizerSettings, ParetoDirection, ParetoSpec,
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Objective, OptimizerSettings,
+    ParetoDirection, ParetoSpec, SceneParameter,
 };
 use super::{optimize, OptimizationStatus, OptimizeError, Study};
 use crate::model::{self, Evaluation, EvaluationOptions, Quadrature, Scene, Status};
@@ -358,7 +358,7 @@ impl Sweep<'_> {
             AdhesionMeasure::WorkOfAdhesion => {
                 let i = design
                     .iter()
-                    .position(|d| d.name == DesignQuantity::WorkOfAdhesion)?;
+                    .position(|d| d.name == SceneParameter::WorkOfAdhesion)?;
                 match target {
                     Target::Equal(_) => {
                         design.remove(i);
@@ -992,7 +992,7 @@ pub fn pareto(
         && !study
             .design
             .iter()
-            .any(|d| d.name == DesignQuantity::WorkOfAdhesion)
+            .any(|d| d.name == SceneParameter::WorkOfAdhesion)
     {
         return Err(ParetoError::WorkOfAdhesionFixed);
     }

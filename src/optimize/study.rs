@@ -5,13 +5,13 @@
 //!
 //! These are the optimiser's own inputs; the problem-file stage
 //! ([`crate::problem`]) parses and validates TOML into them, as it does into a
-//! [`Scene`].
+//! [`crate::model::Scene`].
 
 use std::time::Duration;
 
 use serde::Serialize;
 
-use crate::model::Scene;
+pub use crate::model::SceneParameter;
 
 /// A closed set of names as written in problem files.
 pub trait Named: Copy + Sized + 'static {
@@ -59,62 +59,11 @@ macro_rules! named_enum {
     };
 }
 
-named_enum! {
-    /// A scene quantity the optimiser may move (a key of `[design]`).
-    DesignQuantity {
-        /// Young's modulus (Pa) of body a, and of body b too when both share it.
-        YoungsModulus => "youngs_modulus",
-        /// E1, Young's modulus of body a alone (Pa).
-        YoungsModulusA => "youngs_modulus_a",
-        /// E2, Young's modulus of the counterface b alone (Pa).
-        YoungsModulusB => "youngs_modulus_b",
-        /// ν1, Poisson ratio of body a.
-        PoissonRatio => "poisson_ratio",
-        /// H, hardness of the softer body (Pa).
-        Hardness => "hardness",
-        /// γ, work of adhesion (J/m²).
-        WorkOfAdhesion => "work_of_adhesion",
-        /// σ, standard deviation of asperity heights (m).
-        Sigma => "sigma",
-        /// R, asperity tip radius (m).
-        AsperityRadius => "asperity_radius",
-        /// N, asperities per unit area (1/m²).
-        AsperityDensity => "asperity_density",
-    }
-}
-
-impl DesignQuantity {
-    /// Its current value in `scene` (SI).
-    pub fn get(self, scene: &Scene) -> f64 {
-        match self {
-            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
-                scene.youngs_modulus_a
-            }
-            DesignQuantity::YoungsModulusB => scene.youngs_modulus_b,
-            DesignQuantity::PoissonRatio => scene.poisson_ratio_a,
-            DesignQuantity::Hardness => scene.hardness,
-            DesignQuantity::WorkOfAdhesion => scene.work_of_adhesion,
-            DesignQuantity::Sigma => scene.sigma,
-            DesignQuantity::AsperityRadius => scene.asperity_radius,
-            DesignQuantity::AsperityDensity => scene.asperity_density,
-        }
-    }
-
-    /// Sets its value in `scene` (SI). The caller keeps it within the variable's bounds.
-    pub fn set(self, scene: &mut Scene, value: f64) {
-        let field = match self {
-            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
-                &mut scene.youngs_modulus_a
-            }
-            DesignQuantity::YoungsModulusB => &mut scene.youngs_modulus_b,
-            DesignQuantity::PoissonRatio => &mut scene.poisson_ratio_a,
-            DesignQuantity::Hardness => &mut scene.hardness,
-            DesignQuantity::WorkOfAdhesion => &mut scene.work_of_adhesion,
-            DesignQuantity::Sigma => &mut scene.sigma,
-            DesignQuantity::AsperityRadius => &mut scene.asperity_radius,
-            DesignQuantity::AsperityDensity => &mut scene.asperity_density,
-        };
-        *field = value;
+/// The scene parameters a design may move are the `[design]` keys.
+impl Named for SceneParameter {
+    const ALL: &'static [Self] = &SceneParameter::DESIGN;
+    fn as_str(self) -> &'static str {
+        SceneParameter::as_str(self)
     }
 }
 
@@ -127,7 +76,7 @@ impl DesignQuantity {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DesignVariable {
     /// Which scene quantity.
-    pub name: DesignQuantity,
+    pub name: SceneParameter,
     /// Lower bound (SI).
     pub min: f64,
     /// Upper bound (SI).
@@ -358,8 +307,8 @@ mod tests {
 
     #[test]
     fn names_round_trip() {
-        for q in DesignQuantity::ALL {
-            assert_eq!(DesignQuantity::from_name(q.as_str()), Some(*q));
+        for q in SceneParameter::DESIGN {
+            assert_eq!(<SceneParameter as Named>::from_name(q.as_str()), Some(q));
         }
         for q in ConstraintQuantity::ALL {
             assert_eq!(ConstraintQuantity::from_name(q.as_str()), Some(*q));

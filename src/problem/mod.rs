@@ -67,8 +67,8 @@ pub use topography::ScanSource;
 
 use crate::model::{AdhesionModel, AttractionKind, Scene, WearArea};
 use crate::optimize::{
-    AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Named,
-    Objective, OptimizerSettings, ParetoDirection, ParetoSpec, DEFAULT_RELEASE_MARGIN,
+    AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Named, Objective,
+    OptimizerSettings, ParetoDirection, ParetoSpec, SceneParameter, DEFAULT_RELEASE_MARGIN,
 };
 use crate::units::{format_number, format_quantity, parse_quantity, Dimension};
 use catalogue::Material;
@@ -921,13 +921,13 @@ impl Problem {
 }
 
 /// The accepted values of a design variable's bounds.
-fn design_accept(q: DesignQuantity) -> Accept {
+fn design_accept(q: SceneParameter) -> Accept {
     let dim = q.dimension();
     match q {
-        DesignQuantity::PoissonRatio => {
+        SceneParameter::PoissonRatio => {
             Accept::interval(dim, -1.0, true, 0.5, false).why("Poisson ratio")
         }
-        DesignQuantity::WorkOfAdhesion => Accept::non_negative(dim),
+        SceneParameter::WorkOfAdhesion => Accept::non_negative(dim),
         _ => Accept::positive(dim),
     }
 }
@@ -950,17 +950,21 @@ impl Reader<'_> {
                 ));
             }
             let mut placed = Vec::new();
-            for &q in DesignQuantity::ALL {
+            for q in SceneParameter::DESIGN {
                 let bound = match q {
-                    DesignQuantity::YoungsModulus => &d.youngs_modulus,
-                    DesignQuantity::YoungsModulusA => &d.youngs_modulus_a,
-                    DesignQuantity::YoungsModulusB => &d.youngs_modulus_b,
-                    DesignQuantity::PoissonRatio => &d.poisson_ratio,
-                    DesignQuantity::Hardness => &d.hardness,
-                    DesignQuantity::WorkOfAdhesion => &d.work_of_adhesion,
-                    DesignQuantity::Sigma => &d.sigma,
-                    DesignQuantity::AsperityRadius => &d.asperity_radius,
-                    DesignQuantity::AsperityDensity => &d.asperity_density,
+                    SceneParameter::YoungsModulus => &d.youngs_modulus,
+                    SceneParameter::YoungsModulusA => &d.youngs_modulus_a,
+                    SceneParameter::YoungsModulusB => &d.youngs_modulus_b,
+                    SceneParameter::PoissonRatio => &d.poisson_ratio,
+                    SceneParameter::Hardness => &d.hardness,
+                    SceneParameter::WorkOfAdhesion => &d.work_of_adhesion,
+                    SceneParameter::Sigma => &d.sigma,
+                    SceneParameter::AsperityRadius => &d.asperity_radius,
+                    SceneParameter::AsperityDensity => &d.asperity_density,
+                    // Not design variables (SceneParameter::DESIGN leaves them out).
+                    SceneParameter::NominalArea
+                    | SceneParameter::Load
+                    | SceneParameter::InteratomicDistance => &None,
                 };
                 if let Some(bound) = bound {
                     placed.push((bound.span().start, self.design_variable(q, bound, scene)?));
@@ -1105,14 +1109,14 @@ impl Reader<'_> {
                 && !study
                     .design
                     .iter()
-                    .any(|v| v.name == DesignQuantity::WorkOfAdhesion)
+                    .any(|v| v.name == SceneParameter::WorkOfAdhesion)
             {
                 return Err(self.invalid(
                     "pareto.adhesion",
                     &adhesion_raw.span(),
                     format!(
                         "trading against work_of_adhesion needs it among the design variables: add work_of_adhesion = {} to [design]",
-                        DesignQuantity::WorkOfAdhesion.example_bounds()
+                        SceneParameter::WorkOfAdhesion.example_bounds()
                     ),
                 ));
             }
@@ -1132,7 +1136,7 @@ impl Reader<'_> {
 
     fn design_variable(
         &self,
-        q: DesignQuantity,
+        q: SceneParameter,
         bound: &Spanned<RawBound>,
         scene: &Scene,
     ) -> Result<DesignVariable, ProblemError> {

@@ -7,8 +7,8 @@
 use serde::Serialize;
 
 use crate::optimize::{
-    Constraint, ConstraintQuantity, DesignQuantity, DesignVariable, Objective, OptimizerSettings,
-    ParetoSpec,
+    Constraint, ConstraintQuantity, DesignVariable, Objective, OptimizerSettings, ParetoSpec,
+    SceneParameter,
 };
 use crate::units::Dimension;
 
@@ -18,18 +18,9 @@ pub trait Dimensioned {
     fn dimension(self) -> Dimension;
 }
 
-impl Dimensioned for DesignQuantity {
+impl Dimensioned for SceneParameter {
     fn dimension(self) -> Dimension {
-        match self {
-            DesignQuantity::YoungsModulus
-            | DesignQuantity::YoungsModulusA
-            | DesignQuantity::YoungsModulusB
-            | DesignQuantity::Hardness => Dimension::Pressure,
-            DesignQuantity::PoissonRatio => Dimension::Dimensionless,
-            DesignQuantity::WorkOfAdhesion => Dimension::SurfaceEnergy,
-            DesignQuantity::Sigma | DesignQuantity::AsperityRadius => Dimension::Length,
-            DesignQuantity::AsperityDensity => Dimension::InverseArea,
-        }
+        SceneParameter::dimension(self)
     }
 }
 
@@ -55,33 +46,40 @@ pub(crate) trait DesignKeys {
     fn example_bounds(self) -> &'static str;
 }
 
-impl DesignKeys for DesignQuantity {
+impl DesignKeys for SceneParameter {
     fn scene_key(self) -> &'static str {
         match self {
-            DesignQuantity::YoungsModulus | DesignQuantity::YoungsModulusA => {
+            SceneParameter::YoungsModulus | SceneParameter::YoungsModulusA => {
                 "bodies.a.youngs_modulus"
             }
-            DesignQuantity::YoungsModulusB => "bodies.b.youngs_modulus",
-            DesignQuantity::PoissonRatio => "bodies.a.poisson_ratio",
-            DesignQuantity::Hardness => "interface.hardness",
-            DesignQuantity::WorkOfAdhesion => "interface.work_of_adhesion",
-            DesignQuantity::Sigma => "roughness.sigma",
-            DesignQuantity::AsperityRadius => "roughness.asperity_radius",
-            DesignQuantity::AsperityDensity => "roughness.asperity_density",
+            SceneParameter::YoungsModulusB => "bodies.b.youngs_modulus",
+            SceneParameter::PoissonRatio => "bodies.a.poisson_ratio",
+            SceneParameter::Hardness => "interface.hardness",
+            SceneParameter::WorkOfAdhesion => "interface.work_of_adhesion",
+            SceneParameter::Sigma => "roughness.sigma",
+            SceneParameter::AsperityRadius => "roughness.asperity_radius",
+            SceneParameter::AsperityDensity => "roughness.asperity_density",
+            SceneParameter::NominalArea => "contact.nominal_area",
+            SceneParameter::Load => "contact.load",
+            SceneParameter::InteratomicDistance => "interface.interatomic_distance",
         }
     }
 
     fn example_bounds(self) -> &'static str {
         match self {
-            DesignQuantity::YoungsModulus
-            | DesignQuantity::YoungsModulusA
-            | DesignQuantity::YoungsModulusB => "{ min = \"50 GPa\", max = \"400 GPa\" }",
-            DesignQuantity::PoissonRatio => "{ min = 0.1, max = 0.4 }",
-            DesignQuantity::Hardness => "{ min = \"1 GPa\", max = \"40 GPa\" }",
-            DesignQuantity::WorkOfAdhesion => "{ min = \"5 mJ/m^2\", max = \"0.2 J/m^2\" }",
-            DesignQuantity::Sigma => "{ min = \"0.5 nm\", max = \"20 nm\" }",
-            DesignQuantity::AsperityRadius => "{ min = \"0.2 um\", max = \"10 um\" }",
-            DesignQuantity::AsperityDensity => "{ min = \"1 um^-2\", max = \"100 um^-2\" }",
+            SceneParameter::YoungsModulus
+            | SceneParameter::YoungsModulusA
+            | SceneParameter::YoungsModulusB => "{ min = \"50 GPa\", max = \"400 GPa\" }",
+            SceneParameter::PoissonRatio => "{ min = 0.1, max = 0.4 }",
+            SceneParameter::Hardness => "{ min = \"1 GPa\", max = \"40 GPa\" }",
+            SceneParameter::WorkOfAdhesion => "{ min = \"5 mJ/m^2\", max = \"0.2 J/m^2\" }",
+            SceneParameter::Sigma => "{ min = \"0.5 nm\", max = \"20 nm\" }",
+            SceneParameter::AsperityRadius => "{ min = \"0.2 um\", max = \"10 um\" }",
+            SceneParameter::AsperityDensity => "{ min = \"1 um^-2\", max = \"100 um^-2\" }",
+            // Not design variables: bounds no message asks for.
+            SceneParameter::NominalArea
+            | SceneParameter::Load
+            | SceneParameter::InteratomicDistance => "",
         }
     }
 }

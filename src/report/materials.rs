@@ -7,7 +7,6 @@ use super::sig;
 use crate::optimize::materials::{
     Exclusion, MaterialNote, MaterialOutcome, MaterialRanking, MaterialResult,
 };
-use crate::problem::Dimensioned;
 use crate::units::{format_quantity, Dimension};
 
 /// The formats a material ranking is written in (those of `wearopt optimize`).

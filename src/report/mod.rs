@@ -60,9 +60,7 @@ pub(crate) fn zero_wear_reason(sc: &crate::model::Scene) -> &'static str {
 
 /// The dimension of a design variable (by its problem-file name).
 pub(crate) fn design_dimension(name: &str) -> crate::units::Dimension {
-    use crate::optimize::{DesignQuantity, Named};
-    use crate::problem::Dimensioned;
-    DesignQuantity::from_name(name)
+    crate::model::SceneParameter::from_key(name)
         .map_or(crate::units::Dimension::Dimensionless, |q| q.dimension())
 }
 

@@ -91,13 +91,13 @@ pub struct BaselineViolation {
 
 /// The constraints the baseline (the problem file's scene) breaks.
 pub fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
-    use crate::optimize::{ConstraintQuantity, DesignQuantity, Named};
+    use crate::optimize::{ConstraintQuantity, Named, SceneParameter};
     let Some(ev) = &o.baseline_evaluation else {
         return Vec::new();
     };
     let mut scene = o.scene.clone();
     for (n, v) in o.names.iter().zip(&o.baseline_design) {
-        if let Some(q) = DesignQuantity::from_name(n) {
+        if let Some(q) = SceneParameter::from_name(n) {
             q.set(&mut scene, *v);
         }
     }
@@ -190,7 +190,6 @@ pub fn json_value(name: &str, o: &Optimum) -> Value {
 }
 
 pub use super::trace::trace_csv;
-
 
 /// A report for people.
 pub fn text(name: &str, o: &Optimum) -> String {

@@ -4,25 +4,29 @@
 
 use serde_json::{json, Value};
 
-use crate::model::{Evaluation, Note, ScalarInput, SensitivityGap, Warning};
+use crate::model::{Evaluation, Note, SceneParameter, SensitivityGap, Warning};
 use crate::problem::{CatalogueProperty, InputNote};
 use crate::units::Dimension;
 use crate::units::{format_number, format_quantity, sig_exp};
 
-/// The symbol, name and dimension of a checked input.
-fn input_words(i: ScalarInput) -> (&'static str, Dimension) {
-    match i {
-        ScalarInput::Sigma => ("roughness σ", Dimension::Length),
-        ScalarInput::AsperityRadius => ("asperity radius R", Dimension::Length),
-        ScalarInput::AsperityDensity => ("asperity density N", Dimension::InverseArea),
-        ScalarInput::NominalArea => ("nominal area A_n", Dimension::Area),
-        ScalarInput::Load => ("load |W|", Dimension::Force),
-        ScalarInput::YoungsModulusA => ("Young's modulus E1", Dimension::Pressure),
-        ScalarInput::YoungsModulusB => ("Young's modulus E2", Dimension::Pressure),
-        ScalarInput::Hardness => ("hardness H", Dimension::Pressure),
-        ScalarInput::WorkOfAdhesion => ("work of adhesion γ", Dimension::SurfaceEnergy),
-        ScalarInput::InteratomicDistance => ("interatomic distance Z0", Dimension::Length),
-    }
+/// The name of a scene parameter in words, with its symbol, and its dimension
+/// (from the parameter table).
+fn input_words(i: SceneParameter) -> (&'static str, Dimension) {
+    let words = match i {
+        SceneParameter::Sigma => "roughness σ",
+        SceneParameter::AsperityRadius => "asperity radius R",
+        SceneParameter::AsperityDensity => "asperity density N",
+        SceneParameter::NominalArea => "nominal area A_n",
+        SceneParameter::Load => "load |W|",
+        SceneParameter::YoungsModulus => "Young's modulus E",
+        SceneParameter::YoungsModulusA => "Young's modulus E1",
+        SceneParameter::YoungsModulusB => "Young's modulus E2",
+        SceneParameter::PoissonRatio => "Poisson ratio ν",
+        SceneParameter::Hardness => "hardness H",
+        SceneParameter::WorkOfAdhesion => "work of adhesion γ",
+        SceneParameter::InteratomicDistance => "interatomic distance Z0",
+    };
+    (words, i.dimension())
 }
 
 /// The power of a length a prefix of this dimension is raised to (0: no prefix guess).
@@ -315,7 +319,7 @@ mod tests {
     #[test]
     fn a_forgotten_unit_is_guessed() {
         let w = Warning::ImplausibleInput {
-            input: ScalarInput::Sigma,
+            input: SceneParameter::Sigma,
             value: 2.0,
             plausible_min: 1e-11,
             plausible_max: 1e-5,
@@ -324,7 +328,7 @@ mod tests {
         assert!(s.starts_with("roughness σ = 2 m is outside"), "{s}");
         assert!(s.contains("did you mean 2 nm or 2 µm?"), "{s}");
         let w = Warning::ImplausibleInput {
-            input: ScalarInput::YoungsModulusA,
+            input: SceneParameter::YoungsModulusA,
             value: 160.0,
             plausible_min: 1e6,
             plausible_max: 2e12,

@@ -19,7 +19,7 @@ use wearopt::accuracy::reference::ReferenceModel;
 use wearopt::accuracy::{self, Quantity, Row, RowLaw, WorkPrecision};
 use wearopt::model::{
     AsperityLaw, Attraction, AttractionKind, Coefficients, Model, Quadrature, Scaled,
-    SensitivityParameter,
+    SceneParameter,
 };
 
 const REFERENCE_TOLERANCE: f64 = 2e-15;
@@ -194,7 +194,7 @@ fn finite_differences_against_the_reference_derivative() {
     )))
     .expect("shipped problem loads");
     let scene = &problem.scene;
-    let p = SensitivityParameter::Sigma;
+    let p = SceneParameter::Sigma;
     let r = finite_difference::reference_elasticity(scene, p).expect("reference derivative");
     assert!(r.error < 1e-10, "{r:?}");
     // The model's own sensitivity (Richardson, δ = 1e-4) is the default rule.
@@ -396,4 +396,40 @@ fn dmt_reference_matches_the_mpmath_table() {
         worst.0, worst.1
     );
     assert!(worst.0 <= 1e-14, "{:e} at {}", worst.0, worst.1);
+}
+
+/// The accuracy report and `eval`'s sensitivities differentiate the same thing: on a
+/// film against itself (gold on gold, one modulus), moving `youngs_modulus` moves
+/// both bodies in both (the accuracy report used to move body a's alone, measuring
+/// another derivative than the one `eval` prints). Provenance: the reference
+/// elasticity is an independent Neville extrapolation of the reference evaluator.
+#[test]
+fn accuracy_and_sensitivities_move_a_shared_modulus_alike() {
+    let p = wearopt::problem::load(std::path::Path::new("problems/gold-switch.toml")).unwrap();
+    let scene = &p.scene;
+    assert_eq!(scene.youngs_modulus_a, scene.youngs_modulus_b);
+    let moved = finite_difference::perturbed(scene, SceneParameter::YoungsModulus, 1e-3);
+    assert!(moved.youngs_modulus_b > scene.youngs_modulus_b);
+    assert_eq!(moved.youngs_modulus_a, moved.youngs_modulus_b);
+    let reference =
+        finite_difference::reference_elasticity(scene, SceneParameter::YoungsModulus).unwrap();
+    let sens = wearopt::model::sensitivities(scene, Default::default());
+    let e = sens
+        .iter()
+        .find(|s| s.parameter == SceneParameter::YoungsModulus)
+        .and_then(|s| s.elasticity)
+        .unwrap();
+    assert!(
+        (e - reference.value).abs() < 1e-8 * (1.0 + e.abs()),
+        "eval {e}, reference {}",
+        reference.value
+    );
+    // Body a alone is another derivative (here it differs in the second digit).
+    let a_only = |d: f64| {
+        let mut s = scene.clone();
+        s.youngs_modulus_a *= d.exp();
+        finite_difference::reference_ln_wear_rate(&s).unwrap()
+    };
+    let a_alone = (a_only(1e-3) - a_only(-1e-3)) / 2e-3;
+    assert!((a_alone - e).abs() > 1e-3 * e.abs(), "{a_alone} vs {e}");
 }

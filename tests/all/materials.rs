@@ -10,7 +10,7 @@ use wearopt::optimize::materials::{
     rank_materials, Exclusion, MaterialOutcome, MaterialRanking, MaterialStatus,
 };
 use wearopt::optimize::{optimize, OptimizationStatus, Study};
-use wearopt::optimize::{DesignQuantity, DesignVariable};
+use wearopt::optimize::{DesignVariable, SceneParameter};
 use wearopt::problem::{catalogue, Problem};
 
 const FILE: &str = "problems/materials-study.toml";
@@ -56,7 +56,7 @@ fn ranking_agrees_with_each_material_studied_alone() {
             .design
             .iter()
             .map(|v| {
-                if v.name == DesignQuantity::WorkOfAdhesion {
+                if v.name == SceneParameter::WorkOfAdhesion {
                     let (lo, hi) = m.work_of_adhesion;
                     DesignVariable {
                         name: v.name,
@@ -70,7 +70,7 @@ fn ranking_agrees_with_each_material_studied_alone() {
             .collect();
         let wa = design
             .iter()
-            .find(|v| v.name == DesignQuantity::WorkOfAdhesion)
+            .find(|v| v.name == SceneParameter::WorkOfAdhesion)
             .unwrap();
         scene.work_of_adhesion = scene.work_of_adhesion.clamp(wa.min, wa.max);
         let alone = optimize(&Study {

@@ -197,7 +197,7 @@ fn default_quadrature_agrees_with_a_finer_rule() {
 /// different step (independent of the Richardson rule used inside).
 #[test]
 fn sensitivities_match_plain_central_differences() {
-    use wearopt::model::{evaluate, sensitivities, EvaluationOptions, SensitivityParameter};
+    use wearopt::model::{evaluate, sensitivities, EvaluationOptions, SceneParameter};
     let p = wearopt::problem::load(std::path::Path::new("problems/gold-switch.toml")).unwrap();
     let opts = EvaluationOptions::default();
     let sens = sensitivities(&p.scene, opts.quadrature);
@@ -209,29 +209,30 @@ fn sensitivities_match_plain_central_differences() {
         let mut down = p.scene.clone();
         let f = d.exp();
         match s.parameter {
-            SensitivityParameter::YoungsModulus => {
+            SceneParameter::YoungsModulus => {
                 up.youngs_modulus_a *= f;
                 down.youngs_modulus_a /= f;
                 // gold on gold: both bodies share E and move together.
                 up.youngs_modulus_b *= f;
                 down.youngs_modulus_b /= f;
             }
-            SensitivityParameter::Hardness => {
+            SceneParameter::Hardness => {
                 up.hardness *= f;
                 down.hardness /= f;
             }
-            SensitivityParameter::WorkOfAdhesion => {
+            SceneParameter::WorkOfAdhesion => {
                 up.work_of_adhesion *= f;
                 down.work_of_adhesion /= f;
             }
-            SensitivityParameter::Sigma => {
+            SceneParameter::Sigma => {
                 up.sigma *= f;
                 down.sigma /= f;
             }
-            SensitivityParameter::AsperityRadius => {
+            SceneParameter::AsperityRadius => {
                 up.asperity_radius *= f;
                 down.asperity_radius /= f;
             }
+            other => panic!("{other} is not one of eval's sensitivities"),
         }
         let plain = (ln_wear(&up) - ln_wear(&down)) / (2.0 * d);
         let got = s.elasticity.unwrap();
@@ -256,9 +257,9 @@ fn sensitivities_match_plain_central_differences() {
 /// micro-gear wears over its whole real area, so H = ∞ still wears.)
 #[test]
 fn sensitivities_say_why_they_are_missing() {
-    use wearopt::model::{sensitivities, Quadrature, SensitivityGap, SensitivityParameter};
+    use wearopt::model::{sensitivities, Quadrature, SceneParameter, SensitivityGap};
     let p = wearopt::problem::load(std::path::Path::new("problems/micro-gear.toml")).unwrap();
-    let gap = |scene: &wearopt::model::Scene, which: SensitivityParameter| {
+    let gap = |scene: &wearopt::model::Scene, which: SceneParameter| {
         let s = sensitivities(scene, Quadrature::default());
         let s = s.iter().find(|s| s.parameter == which).unwrap();
         assert_eq!(s.elasticity.is_none(), s.note.is_some(), "{s:?}");
@@ -268,17 +269,17 @@ fn sensitivities_say_why_they_are_missing() {
     limits.hardness = f64::INFINITY;
     limits.work_of_adhesion = 0.0;
     assert_eq!(
-        gap(&limits, SensitivityParameter::Hardness),
+        gap(&limits, SceneParameter::Hardness),
         Some(SensitivityGap::InfiniteParameter)
     );
     assert_eq!(
-        gap(&limits, SensitivityParameter::WorkOfAdhesion),
+        gap(&limits, SceneParameter::WorkOfAdhesion),
         Some(SensitivityGap::ZeroParameter)
     );
-    assert_eq!(gap(&limits, SensitivityParameter::Sigma), None);
+    assert_eq!(gap(&limits, SceneParameter::Sigma), None);
     let mut no_wear = p.scene.clone();
     no_wear.wear_coefficient = 0.0;
-    for which in SensitivityParameter::ALL {
+    for which in SceneParameter::SENSITIVITIES {
         assert_eq!(gap(&no_wear, which), Some(SensitivityGap::NoWear));
     }
 }

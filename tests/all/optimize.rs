@@ -8,8 +8,8 @@ use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 use wearopt::model::Scene;
 use wearopt::optimize::{
-    optimize, Constraint, ConstraintQuantity, DesignQuantity, DesignSpace, DesignVariable,
-    Objective, OptimizationStatus, OptimizerSettings, Optimum, Point, Study, StudyFunctions,
+    optimize, Constraint, ConstraintQuantity, DesignSpace, DesignVariable, Objective,
+    OptimizationStatus, OptimizerSettings, Optimum, Point, SceneParameter, Study, StudyFunctions,
 };
 use wearopt::problem::{self, Problem};
 
@@ -206,7 +206,7 @@ fn closed_form_optimum_to_1e_8() {
     let p = load("micro-gear");
     let psi_max = 0.5;
     let design = [DesignVariable {
-        name: DesignQuantity::Sigma,
+        name: SceneParameter::Sigma,
         min: 0.5e-9,
         max: 20e-9,
     }];
@@ -311,7 +311,7 @@ fn bad_problems_end_with_clear_statuses() {
     };
     // Bounds spanning twelve decades (σ from 1 fm to 1 mm).
     let wide = [DesignVariable {
-        name: DesignQuantity::Sigma,
+        name: SceneParameter::Sigma,
         min: 1e-15,
         max: 1e-3,
     }];
@@ -327,12 +327,12 @@ fn bad_problems_end_with_clear_statuses() {
     // Nearly parallel constraints: ψ ≤ 1 and ψ ≤ 1 + 1e-9.
     let design = [
         DesignVariable {
-            name: DesignQuantity::Sigma,
+            name: SceneParameter::Sigma,
             min: 0.5e-9,
             max: 20e-9,
         },
         DesignVariable {
-            name: DesignQuantity::AsperityRadius,
+            name: SceneParameter::AsperityRadius,
             min: 0.2e-6,
             max: 10e-6,
         },
@@ -355,7 +355,7 @@ fn bad_problems_end_with_clear_statuses() {
 
     // A flat objective: hardness does not change an elastic contact's wear.
     let flat = [DesignVariable {
-        name: DesignQuantity::Hardness,
+        name: SceneParameter::Hardness,
         min: 5e9,
         max: 40e9,
     }];
@@ -396,17 +396,17 @@ fn modulus_design_variables_move_the_named_bodies() {
         }]
     };
     let at = |name| DesignSpace::new(&p.scene, &var(name)).scene_at(&[1.0]);
-    let both = at(DesignQuantity::YoungsModulus);
+    let both = at(SceneParameter::YoungsModulus);
     assert_eq!(
         (both.youngs_modulus_a, both.youngs_modulus_b),
         (400e9, 400e9)
     );
-    let a = at(DesignQuantity::YoungsModulusA);
+    let a = at(SceneParameter::YoungsModulusA);
     assert_eq!(
         (a.youngs_modulus_a, a.youngs_modulus_b),
         (400e9, p.scene.youngs_modulus_b)
     );
-    let b = at(DesignQuantity::YoungsModulusB);
+    let b = at(SceneParameter::YoungsModulusB);
     assert_eq!(
         (b.youngs_modulus_a, b.youngs_modulus_b),
         (p.scene.youngs_modulus_a, 400e9)
@@ -416,7 +416,7 @@ fn modulus_design_variables_move_the_named_bodies() {
         starts: 1,
         ..OptimizerSettings::default()
     };
-    let design = var(DesignQuantity::YoungsModulusB);
+    let design = var(SceneParameter::YoungsModulusB);
     let o = custom(&p.scene, &design, &[], &settings);
     assert_eq!(o.status, OptimizationStatus::Optimal);
     assert_eq!(o.design, vec![400e9]);

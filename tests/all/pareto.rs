@@ -11,8 +11,8 @@ use assert_cmd::Command;
 use wearopt::model::{evaluate, EvaluationOptions, Scene, Status};
 use wearopt::optimize::pareto::{pareto, Front, FrontStatus, Silent, PULL_OFF_FLOOR};
 use wearopt::optimize::{
-    optimize, AdhesionMeasure, Constraint, ConstraintQuantity, DesignQuantity, OptimizationStatus,
-    ParetoDirection, ParetoSpec, Study,
+    optimize, AdhesionMeasure, Constraint, ConstraintQuantity, OptimizationStatus, ParetoDirection,
+    ParetoSpec, SceneParameter, Study,
 };
 use wearopt::problem::Problem;
 use wearopt::report::pareto as report;
@@ -263,7 +263,7 @@ fn elastic_adhesion_index_is_inverted_and_work_of_adhesion_is_fixed_in_the_scene
         .study
         .design
         .iter()
-        .position(|d| d.name == DesignQuantity::WorkOfAdhesion)
+        .position(|d| d.name == SceneParameter::WorkOfAdhesion)
         .unwrap();
     for q in &gamma.points {
         if q.target_kind == "equal" && q.feasible {

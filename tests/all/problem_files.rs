@@ -6,8 +6,8 @@ use std::path::{Path, PathBuf};
 
 use wearopt::model::WearArea;
 use wearopt::optimize::{
-    AdhesionMeasure, ConstraintQuantity, DesignQuantity, Objective, OptimizerSettings,
-    ParetoDirection,
+    AdhesionMeasure, ConstraintQuantity, Objective, OptimizerSettings, ParetoDirection,
+    SceneParameter,
 };
 use wearopt::problem::{self, ProblemError};
 
@@ -92,9 +92,9 @@ fn micro_gear_in_si() {
     assert_eq!(
         names,
         [
-            DesignQuantity::Sigma,
-            DesignQuantity::AsperityRadius,
-            DesignQuantity::WorkOfAdhesion
+            SceneParameter::Sigma,
+            SceneParameter::AsperityRadius,
+            SceneParameter::WorkOfAdhesion
         ]
     );
     assert_eq!(study.design[0].min, 0.5e-9);

@@ -1,0 +1,322 @@
+//! The scene's scalar parameters in one table: each one's key, symbol and
+//! dimension, how it is read from and set on a [`Scene`], and which roles it takes
+//! (a design variable, a wear-rate sensitivity, a magnitude checked for
+//! plausibility, with its range). Design variables (`optimize`), sensitivities,
+//! the plausibility warnings and the accuracy report all read it from here, so a
+//! parameter means the same thing to each: moving `youngs_modulus` moves body b's
+//! modulus too wherever the two bodies share one.
+//!
+//! A new scene parameter is one variant and one row here (and its problem-file key
+//! in `problem`).
+
+use serde::Serialize;
+
+use super::scene::Scene;
+use crate::units::Dimension;
+
+/// A scalar of a scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SceneParameter {
+    /// E, Young's modulus (Pa) of body a, and of body b too when both share it
+    /// (the same modulus and Poisson ratio).
+    YoungsModulus,
+    /// E1, Young's modulus of body a alone (Pa).
+    YoungsModulusA,
+    /// E2, Young's modulus of the counterface b alone (Pa).
+    YoungsModulusB,
+    /// ν, Poisson ratio of body a, and of body b too when both share it.
+    PoissonRatio,
+    /// H, hardness of the softer body (Pa).
+    Hardness,
+    /// γ, work of adhesion (J/m²).
+    WorkOfAdhesion,
+    /// σ, standard deviation of asperity heights (m).
+    Sigma,
+    /// R, asperity tip radius (m).
+    AsperityRadius,
+    /// N, asperities per unit area (1/m²).
+    AsperityDensity,
+    /// A_n, nominal contact area (m²).
+    NominalArea,
+    /// |W|, the magnitude of the normal load (N).
+    Load,
+    /// Z0, the interatomic (equilibrium) distance (m).
+    InteratomicDistance,
+}
+
+/// One row of the table.
+struct Row {
+    key: &'static str,
+    symbol: &'static str,
+    dimension: Dimension,
+    design_variable: bool,
+    sensitivity: bool,
+    /// The range of magnitudes found in MEMS, NEMS and storage contacts; `None`:
+    /// not checked.
+    plausible: Option<(f64, f64)>,
+}
+
+impl SceneParameter {
+    /// Every parameter, in table order.
+    pub const ALL: [SceneParameter; 12] = [
+        SceneParameter::YoungsModulus,
+        SceneParameter::YoungsModulusA,
+        SceneParameter::YoungsModulusB,
+        SceneParameter::PoissonRatio,
+        SceneParameter::Hardness,
+        SceneParameter::WorkOfAdhesion,
+        SceneParameter::Sigma,
+        SceneParameter::AsperityRadius,
+        SceneParameter::AsperityDensity,
+        SceneParameter::NominalArea,
+        SceneParameter::Load,
+        SceneParameter::InteratomicDistance,
+    ];
+
+    /// The parameters a design may move (the keys of `[design]`), in the order
+    /// problem files and messages list them.
+    pub const DESIGN: [SceneParameter; 9] = [
+        SceneParameter::YoungsModulus,
+        SceneParameter::YoungsModulusA,
+        SceneParameter::YoungsModulusB,
+        SceneParameter::PoissonRatio,
+        SceneParameter::Hardness,
+        SceneParameter::WorkOfAdhesion,
+        SceneParameter::Sigma,
+        SceneParameter::AsperityRadius,
+        SceneParameter::AsperityDensity,
+    ];
+
+    /// The parameters of the wear rate's elasticities, in report order.
+    pub const SENSITIVITIES: [SceneParameter; 5] = [
+        SceneParameter::YoungsModulus,
+        SceneParameter::Hardness,
+        SceneParameter::WorkOfAdhesion,
+        SceneParameter::Sigma,
+        SceneParameter::AsperityRadius,
+    ];
+
+    /// The magnitudes checked for plausibility, in warning order.
+    pub const CHECKED: [SceneParameter; 10] = [
+        SceneParameter::Sigma,
+        SceneParameter::AsperityRadius,
+        SceneParameter::AsperityDensity,
+        SceneParameter::NominalArea,
+        SceneParameter::Load,
+        SceneParameter::YoungsModulusA,
+        SceneParameter::YoungsModulusB,
+        SceneParameter::Hardness,
+        SceneParameter::WorkOfAdhesion,
+        SceneParameter::InteratomicDistance,
+    ];
+
+    /// The table. Plausible ranges, SI units: σ 0.01 nm – 10 µm; R 1 nm – 10 mm;
+    /// N 1 mm⁻² – 1000 µm⁻²; A_n 10 nm² – 100 cm²; |W| 1 pN – 100 N; E 1 MPa
+    /// (elastomers) – 2 TPa (diamond is 1.1 TPa); H 1 MPa – 200 GPa; γ 10 µJ/m² –
+    /// 10 J/m²; Z0 0.05 – 2 nm: generously wide, so that outside a value is more
+    /// likely a forgotten unit than a design. Zero loads and γ, and infinite E or H
+    /// (a rigid body, no plasticity) are limits the model treats exactly and are
+    /// not checked.
+    fn row(self) -> Row {
+        let row = |key, symbol, dimension, design_variable, sensitivity, plausible| Row {
+            key,
+            symbol,
+            dimension,
+            design_variable,
+            sensitivity,
+            plausible,
+        };
+        use Dimension::*;
+        match self {
+            SceneParameter::YoungsModulus => row("youngs_modulus", "E", Pressure, true, true, None),
+            SceneParameter::YoungsModulusA => row(
+                "youngs_modulus_a",
+                "E1",
+                Pressure,
+                true,
+                false,
+                Some((1e6, 2e12)),
+            ),
+            SceneParameter::YoungsModulusB => row(
+                "youngs_modulus_b",
+                "E2",
+                Pressure,
+                true,
+                false,
+                Some((1e6, 2e12)),
+            ),
+            SceneParameter::PoissonRatio => {
+                row("poisson_ratio", "ν", Dimensionless, true, false, None)
+            }
+            SceneParameter::Hardness => {
+                row("hardness", "H", Pressure, true, true, Some((1e6, 2e11)))
+            }
+            SceneParameter::WorkOfAdhesion => row(
+                "work_of_adhesion",
+                "γ",
+                SurfaceEnergy,
+                true,
+                true,
+                Some((1e-5, 10.0)),
+            ),
+            SceneParameter::Sigma => row("sigma", "σ", Length, true, true, Some((1e-11, 1e-5))),
+            SceneParameter::AsperityRadius => row(
+                "asperity_radius",
+                "R",
+                Length,
+                true,
+                true,
+                Some((1e-9, 1e-2)),
+            ),
+            SceneParameter::AsperityDensity => row(
+                "asperity_density",
+                "N",
+                InverseArea,
+                true,
+                false,
+                Some((1e6, 1e15)),
+            ),
+            SceneParameter::NominalArea => row(
+                "nominal_area",
+                "A_n",
+                Area,
+                false,
+                false,
+                Some((1e-17, 1e-2)),
+            ),
+            SceneParameter::Load => row("load", "|W|", Force, false, false, Some((1e-12, 100.0))),
+            SceneParameter::InteratomicDistance => row(
+                "interatomic_distance",
+                "Z0",
+                Length,
+                false,
+                false,
+                Some((5e-11, 2e-9)),
+            ),
+        }
+    }
+
+    /// The key as problem files and reports write it.
+    pub fn as_str(self) -> &'static str {
+        self.row().key
+    }
+
+    /// The parameter whose key is `name`.
+    pub fn from_key(name: &str) -> Option<SceneParameter> {
+        Self::ALL.into_iter().find(|p| p.as_str() == name)
+    }
+
+    /// The paper's symbol.
+    pub fn symbol(self) -> &'static str {
+        self.row().symbol
+    }
+
+    /// The dimension of its values.
+    pub fn dimension(self) -> Dimension {
+        self.row().dimension
+    }
+
+    /// Whether a design may move it.
+    pub fn is_design_variable(self) -> bool {
+        self.row().design_variable
+    }
+
+    /// Whether `eval` reports the wear rate's elasticity with respect to it.
+    pub fn is_sensitivity(self) -> bool {
+        self.row().sensitivity
+    }
+
+    /// The range of plausible magnitudes (SI), for the parameters checked.
+    pub fn plausible_range(self) -> Option<(f64, f64)> {
+        self.row().plausible
+    }
+
+    /// Its value in `scene` (SI; |W| for the load; body a's for a shared modulus or
+    /// Poisson ratio).
+    pub fn get(self, s: &Scene) -> f64 {
+        match self {
+            SceneParameter::YoungsModulus | SceneParameter::YoungsModulusA => s.youngs_modulus_a,
+            SceneParameter::YoungsModulusB => s.youngs_modulus_b,
+            SceneParameter::PoissonRatio => s.poisson_ratio_a,
+            SceneParameter::Hardness => s.hardness,
+            SceneParameter::WorkOfAdhesion => s.work_of_adhesion,
+            SceneParameter::Sigma => s.sigma,
+            SceneParameter::AsperityRadius => s.asperity_radius,
+            SceneParameter::AsperityDensity => s.asperity_density,
+            SceneParameter::NominalArea => s.nominal_area,
+            SceneParameter::Load => s.load.abs(),
+            SceneParameter::InteratomicDistance => s.interatomic_distance,
+        }
+    }
+
+    /// Sets its value in `scene` (SI). `youngs_modulus` and `poisson_ratio` move
+    /// body b's value too when the bodies share modulus and Poisson ratio (one film
+    /// on itself), as a design variable and a sensitivity both mean them; the load
+    /// keeps its sign.
+    pub fn set(self, s: &mut Scene, value: f64) {
+        let shared =
+            s.youngs_modulus_b == s.youngs_modulus_a && s.poisson_ratio_b == s.poisson_ratio_a;
+        match self {
+            SceneParameter::YoungsModulus => {
+                if shared {
+                    s.youngs_modulus_b = value;
+                }
+                s.youngs_modulus_a = value;
+            }
+            SceneParameter::YoungsModulusA => s.youngs_modulus_a = value,
+            SceneParameter::YoungsModulusB => s.youngs_modulus_b = value,
+            SceneParameter::PoissonRatio => {
+                if shared {
+                    s.poisson_ratio_b = value;
+                }
+                s.poisson_ratio_a = value;
+            }
+            SceneParameter::Hardness => s.hardness = value,
+            SceneParameter::WorkOfAdhesion => s.work_of_adhesion = value,
+            SceneParameter::Sigma => s.sigma = value,
+            SceneParameter::AsperityRadius => s.asperity_radius = value,
+            SceneParameter::AsperityDensity => s.asperity_density = value,
+            SceneParameter::NominalArea => s.nominal_area = value,
+            SceneParameter::Load => s.load = value.copysign(s.load),
+            SceneParameter::InteratomicDistance => s.interatomic_distance = value,
+        }
+    }
+}
+
+impl std::fmt::Display for SceneParameter {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_role_lists_agree_with_the_table() {
+        let with = |f: fn(SceneParameter) -> bool| -> Vec<SceneParameter> {
+            SceneParameter::ALL.into_iter().filter(|&p| f(p)).collect()
+        };
+        assert_eq!(
+            with(SceneParameter::is_design_variable),
+            SceneParameter::DESIGN
+        );
+        assert_eq!(
+            with(SceneParameter::is_sensitivity).len(),
+            SceneParameter::SENSITIVITIES.len()
+        );
+        for p in SceneParameter::SENSITIVITIES {
+            assert!(p.is_sensitivity(), "{p}");
+        }
+        for p in SceneParameter::ALL {
+            assert_eq!(SceneParameter::from_key(p.as_str()), Some(p));
+            assert_eq!(
+                p.plausible_range().is_some(),
+                SceneParameter::CHECKED.contains(&p),
+                "{p}"
+            );
+        }
+    }
+}
