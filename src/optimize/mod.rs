@@ -39,7 +39,10 @@ use crate::model::{Evaluation, Scene};
 pub use design::DesignSpace;
 pub use functions::{Point, Row, Side, StudyFunctions};
 pub use program::{NonlinearProgram, Values};
-pub use sqp::{minimize, minimize_observed, SqpResult, SqpSettings, SqpState, SqpStatus, TraceRow};
+pub use qp::QpFailure;
+pub use sqp::{
+    minimize, minimize_observed, SqpExit, SqpResult, SqpSettings, SqpState, SqpStatus, TraceRow,
+};
 pub use study::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Named, Objective,
     OptimizerSettings, ParetoDirection, ParetoSpec, SceneParameter, SettingsError,
@@ -80,8 +83,8 @@ pub struct StartOutcome {
     pub evaluations: usize,
     /// Per-iteration trace.
     pub trace: Vec<TraceRow>,
-    /// Subproblem statuses other than Solved met on the way.
-    pub qp_failures: Vec<String>,
+    /// Subproblem failures met on the way (clarabel's statuses other than Solved).
+    pub qp_failures: Vec<qp::QpFailure>,
 }
 
 /// One `[[constraint]]` at the reported design.

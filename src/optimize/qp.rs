@@ -44,6 +44,8 @@ pub struct Subproblem<'a> {
     pub penalty: f64,
     /// clarabel's duality-gap tolerance (absolute and relative).
     pub gap_tolerance: f64,
+    /// clarabel's interior-point iteration cap.
+    pub max_iterations: u32,
 }
 
 /// What the subproblem gave.
@@ -61,9 +63,12 @@ pub struct Step {
 
 /// Why a subproblem gave no usable step.
 #[derive(Debug, Clone, PartialEq)]
-pub struct QpFailure {
-    /// clarabel's status, as text.
-    pub status: String,
+pub enum QpFailure {
+    /// clarabel ended with a status other than `Solved` (kept as clarabel's enum).
+    Status(SolverStatus),
+    /// clarabel refused the settings or the problem data (a bug of ours: the
+    /// subproblem is built well-formed), with its message.
+    Setup(String),
 }
 
 /// Solves the subproblem.
@@ -142,23 +147,17 @@ pub fn solve(sp: &Subproblem) -> Result<Step, QpFailure> {
     let cones = [NonnegativeConeT(linear_rows), SecondOrderConeT(n + 1)];
     let settings = DefaultSettingsBuilder::default()
         .verbose(false)
-        .max_iter(100)
+        .max_iter(sp.max_iterations)
         .tol_gap_abs(sp.gap_tolerance)
         .tol_gap_rel(sp.gap_tolerance)
         .build()
-        .map_err(|e| QpFailure {
-            status: format!("settings: {e:?}"),
-        })?;
-    let mut solver =
-        DefaultSolver::new(&P, &q, &A, &b, &cones, settings).map_err(|e| QpFailure {
-            status: format!("setup: {e:?}"),
-        })?;
+        .map_err(|e| QpFailure::Setup(format!("settings: {e:?}")))?;
+    let mut solver = DefaultSolver::new(&P, &q, &A, &b, &cones, settings)
+        .map_err(|e| QpFailure::Setup(format!("setup: {e:?}")))?;
     solver.solve();
     let sol = &solver.solution;
     if sol.status != SolverStatus::Solved {
-        return Err(QpFailure {
-            status: format!("{:?}", sol.status),
-        });
+        return Err(QpFailure::Status(sol.status));
     }
     let p: Vec<f64> = sol.x[..n].to_vec();
     let mut slack = vec![0.0; sp.rows.len()];
@@ -204,6 +203,7 @@ mod tests {
             radius: 10.0,
             penalty: 100.0,
             gap_tolerance: 1e-12,
+            max_iterations: 100,
         };
         let s = solve(&sp).unwrap();
         assert!(
@@ -240,6 +240,7 @@ mod tests {
             radius: 1.0,
             penalty: 10.0,
             gap_tolerance: 1e-12,
+            max_iterations: 100,
         };
         let s = solve(&sp).unwrap();
         assert!((s.slack[0] - 1.0).abs() < 1e-6);

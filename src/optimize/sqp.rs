@@ -20,7 +20,7 @@ use serde::Serialize;
 use super::fd::{gradients, Accuracy, Gradients};
 use super::multipliers::{kkt, least_squares, Kkt, KktData};
 use super::program::{NonlinearProgram, Values};
-use super::qp::{self, Subproblem};
+use super::qp::{self, QpFailure, Subproblem};
 
 /// The argmin state the SQP runs on: parameter and gradient are `Vec<f64>`.
 pub type SqpState = IterState<Vec<f64>, Vec<f64>, (), (), (), f64>;
@@ -106,6 +106,9 @@ pub struct SqpSettings {
     /// solution, where a step need not be exact (default 1e-8: about two
     /// interior-point iterations fewer per subproblem).
     pub far_qp_tolerance: f64,
+    /// clarabel's interior-point iteration cap per subproblem (default 100; a
+    /// well-scaled subproblem takes 10–20).
+    pub qp_max_iterations: u32,
 }
 
 impl SqpSettings {
@@ -159,6 +162,7 @@ impl Default for SqpSettings {
             extend_ratio: 1.25,
             qp_tolerance: 1e-12,
             far_qp_tolerance: 1e-8,
+            qp_max_iterations: 100,
         }
     }
 }
@@ -244,8 +248,8 @@ pub struct SqpResult {
     pub gradient_error: f64,
     /// Per-iteration trace.
     pub trace: Vec<TraceRow>,
-    /// Subproblem statuses other than Solved met on the way.
-    pub qp_failures: Vec<String>,
+    /// Subproblem failures met on the way (clarabel's statuses other than Solved).
+    pub qp_failures: Vec<QpFailure>,
     /// The program's warm-start data at x.
     pub warm_start: Vec<f64>,
 }
@@ -282,8 +286,8 @@ pub(crate) struct Sqp {
     rejections: usize,
     started: Option<Instant>,
     trace: Vec<TraceRow>,
-    exit: Option<&'static str>,
-    qp_failures: Vec<String>,
+    exit: Option<SqpExit>,
+    qp_failures: Vec<QpFailure>,
     last_step: f64,
     last_ratio: f64,
     last_kkt: f64,
@@ -523,6 +527,7 @@ impl Sqp {
             radius,
             penalty: self.penalty,
             gap_tolerance: self.gap_tolerance(),
+            max_iterations: self.settings.qp_max_iterations,
         })
     }
 
@@ -564,6 +569,7 @@ impl Sqp {
             radius,
             penalty: 1.0,
             gap_tolerance: self.gap_tolerance(),
+            max_iterations: self.settings.qp_max_iterations,
         };
         qp::solve(&sp)
             .ok()
@@ -596,9 +602,9 @@ impl Sqp {
             if v.max_violation() > self.settings.feasibility_tolerance
                 && self.violation_stationary(&v)
             {
-                "infeasible"
+                SqpExit::Infeasible
             } else {
-                "stalled"
+                SqpExit::Stalled
             },
         );
     }
@@ -767,7 +773,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             .as_ref()
             .and_then(|v| self.gradients_at(prog, &x, v, None));
         let (Some(values), Some(grads)) = (values, grads) else {
-            self.exit = Some("unevaluable");
+            self.exit = Some(SqpExit::Unevaluable);
             return Ok((state, None));
         };
         self.penalty = self.settings.penalty_initial * norm_inf(&grads.objective).max(1.0);
@@ -808,13 +814,13 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             self.last_kkt = least.0.residual;
             self.kkt = Some(least);
             self.record(state.get_iter() as usize);
-            self.exit = Some("converged");
+            self.exit = Some(SqpExit::Converged);
             return Ok((state.cost(v.objective), Some(self.kv())));
         }
         let step = match self.subproblem(&v.constraints, self.radius) {
             Ok(s) => s,
             Err(fail) => {
-                self.qp_failures.push(fail.status);
+                self.qp_failures.push(fail);
                 let r = self.radius;
                 self.reject(r);
                 return Ok((state.cost(v.objective), Some(self.kv())));
@@ -838,7 +844,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         self.last_kkt = self.kkt.as_ref().map_or(f64::NAN, |k| k.0.residual);
         self.record(state.get_iter() as usize);
         if self.kkt.as_ref().is_some_and(|k| self.settings.met(&k.0)) {
-            self.exit = Some("converged");
+            self.exit = Some(SqpExit::Converged);
             return Ok((state.cost(v.objective), Some(self.kv())));
         }
         // No step: the subproblem's, put into the box, does not move x.
@@ -943,11 +949,39 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
 
     fn terminate(&mut self, _state: &SqpState) -> TerminationStatus {
         match self.exit {
-            Some("converged") => TerminationStatus::Terminated(TerminationReason::SolverConverged),
-            Some(other) => {
-                TerminationStatus::Terminated(TerminationReason::SolverExit(other.to_string()))
+            Some(SqpExit::Converged) => {
+                TerminationStatus::Terminated(TerminationReason::SolverConverged)
             }
+            Some(other) => TerminationStatus::Terminated(TerminationReason::SolverExit(
+                other.as_str().to_string(),
+            )),
             None => TerminationStatus::NotTerminated,
+        }
+    }
+}
+
+/// Why the solver itself ended a run (before the driver's caps): what the
+/// result's status is made from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SqpExit {
+    /// The KKT test was met.
+    Converged,
+    /// A stationary point of the violation with the violation above tolerance.
+    Infeasible,
+    /// No progress: the radius collapsed or steps kept being rejected.
+    Stalled,
+    /// The program could not be evaluated at the start.
+    Unevaluable,
+}
+
+impl SqpExit {
+    /// The word argmin's termination reason carries.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SqpExit::Converged => "converged",
+            SqpExit::Infeasible => "infeasible",
+            SqpExit::Stalled => "stalled",
+            SqpExit::Unevaluable => "unevaluable",
         }
     }
 }
@@ -1001,7 +1035,7 @@ where
         }
         Err(_) => {
             let mut s = Sqp::new(settings, problem.bounds(), problem.scale());
-            s.exit = Some("unevaluable");
+            s.exit = Some(SqpExit::Unevaluable);
             (s, None, 0)
         }
     };
@@ -1043,9 +1077,9 @@ fn finish<P: NonlinearProgram + Sync + ?Sized>(
     }
     let (k, lambda) = solver.kkt.clone().expect("set above");
     let status = match (solver.exit, &reason) {
-        (Some("converged"), _) => SqpStatus::Optimal,
-        (Some("infeasible"), _) => SqpStatus::Infeasible,
-        (Some(_), _) => SqpStatus::Stalled,
+        (Some(SqpExit::Converged), _) => SqpStatus::Optimal,
+        (Some(SqpExit::Infeasible), _) => SqpStatus::Infeasible,
+        (Some(SqpExit::Stalled | SqpExit::Unevaluable), _) => SqpStatus::Stalled,
         (None, Some(TerminationReason::Timeout)) => SqpStatus::TimeLimit,
         (None, Some(TerminationReason::MaxItersReached)) => SqpStatus::IterationLimit,
         (None, _) => SqpStatus::Stalled,
