@@ -1,14 +1,74 @@
 //! `wearopt optimize`: a design study's optimum, or the ranking of catalogue
 //! materials when `[design]` lists them.
 
-use crate::model::{self, EvaluationOptions, LoadCurve};
+use crate::model::{self, EvaluationOptions, LoadCurve, SceneParameter};
+use crate::optimize::functions::quantity_value;
 use crate::optimize::materials::rank_materials;
+use crate::optimize::{ConstraintQuantity, Named, Side, FEASIBILITY_TOLERANCE};
 use crate::problem::{catalogue, Problem};
 
 use super::{study, valid_scene, AppError};
 
 pub use crate::optimize::materials::MaterialRanking;
 pub use crate::optimize::{ObserverFactory, OptimizationStatus, Optimum, SqpState, StartObserver};
+
+/// A constraint the baseline design breaks.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BaselineViolation {
+    /// The constrained quantity.
+    pub quantity: ConstraintQuantity,
+    /// Its value at the baseline (SI); None where it does not exist there.
+    pub value: Option<f64>,
+    /// The limit it breaks (SI).
+    pub limit: f64,
+    /// Which limit.
+    pub side: Side,
+}
+
+/// The constraints the baseline (the problem file's scene at its baseline design)
+/// breaks by more than the optimiser's feasibility tolerance, relative to the limit
+/// ([`crate::optimize::FEASIBILITY_TOLERANCE`]: what its scaled rows allow).
+fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
+    let Some(ev) = &o.baseline_evaluation else {
+        return Vec::new();
+    };
+    let mut scene = o.scene.clone();
+    for (n, v) in o.names.iter().zip(&o.baseline_design) {
+        if let Some(q) = SceneParameter::from_key(n) {
+            q.set(&mut scene, *v);
+        }
+    }
+    let tol = |limit: f64| FEASIBILITY_TOLERANCE * limit.abs().max(f64::MIN_POSITIVE);
+    let mut out = Vec::new();
+    for c in &o.constraints {
+        let Some(q) = ConstraintQuantity::from_name(c.quantity) else {
+            continue;
+        };
+        let value = quantity_value(q, ev, &scene);
+        for (side, limit, breaks) in [
+            (
+                Side::Min,
+                c.min,
+                value.is_none_or(|v| c.min.is_some_and(|m| v < m - tol(m))),
+            ),
+            (
+                Side::Max,
+                c.max,
+                value.is_none_or(|v| c.max.is_some_and(|m| v > m + tol(m))),
+            ),
+        ] {
+            if let (Some(limit), true) = (limit, breaks) {
+                out.push(BaselineViolation {
+                    quantity: q,
+                    value,
+                    limit,
+                    side,
+                });
+            }
+        }
+    }
+    out
+}
 
 /// The options of `wearopt optimize`.
 #[derive(Default)]
@@ -30,6 +90,8 @@ pub enum OptimizeDocument {
         name: String,
         /// The optimum.
         optimum: Box<Optimum>,
+        /// The constraints the baseline design (the problem file's scene) breaks.
+        baseline_violations: Vec<BaselineViolation>,
         /// The optimum's load–separation curve, when asked for.
         load_curve: Option<LoadCurve>,
     },
@@ -80,6 +142,7 @@ pub fn optimize(
         });
         return Ok(OptimizeDocument::Optimum {
             name: problem.name.clone(),
+            baseline_violations: baseline_violations(&optimum),
             optimum: Box::new(optimum),
             load_curve,
         });

@@ -5,7 +5,8 @@ use serde_json::{json, Map, Value};
 
 use super::format::FormatError;
 use super::{si, sig, sig_exp};
-use crate::app::optimize::{OptimizeDocument, OptimizeOptions};
+use crate::app::optimize::{BaselineViolation, OptimizeDocument, OptimizeOptions};
+use crate::optimize::Side;
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::units::format_quantity;
 
@@ -29,20 +30,42 @@ pub fn options<'a>(format: super::Format) -> OptimizeOptions<'a> {
 /// materials ([`super::materials`]).
 pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, FormatError> {
     match (doc, format) {
-        (OptimizeDocument::Optimum { name, optimum, .. }, super::Format::Text) => {
-            Ok(text(name, optimum))
-        }
-        (OptimizeDocument::Optimum { name, optimum, .. }, super::Format::Json) => {
-            Ok(super::json_text(&json_value(name, optimum)))
-        }
         (
             OptimizeDocument::Optimum {
                 name,
                 optimum,
+                baseline_violations,
+                ..
+            },
+            super::Format::Text,
+        ) => Ok(text(name, optimum, baseline_violations)),
+        (
+            OptimizeDocument::Optimum {
+                name,
+                optimum,
+                baseline_violations,
+                ..
+            },
+            super::Format::Json,
+        ) => Ok(super::json_text(&json_value(
+            name,
+            optimum,
+            baseline_violations,
+        ))),
+        (
+            OptimizeDocument::Optimum {
+                name,
+                optimum,
+                baseline_violations,
                 load_curve,
             },
             super::Format::Html,
-        ) => Ok(html(name, optimum, load_curve.as_ref())),
+        ) => Ok(html(
+            name,
+            optimum,
+            baseline_violations,
+            load_curve.as_ref(),
+        )),
         (OptimizeDocument::Ranking { name, ranking }, super::Format::Text) => {
             Ok(super::materials::text(name, ranking))
         }
@@ -63,7 +86,12 @@ pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, F
 /// The JSON document as a value (what Python reads).
 pub fn json_document(doc: &OptimizeDocument) -> Value {
     match doc {
-        OptimizeDocument::Optimum { name, optimum, .. } => json_value(name, optimum),
+        OptimizeDocument::Optimum {
+            name,
+            optimum,
+            baseline_violations,
+            ..
+        } => json_value(name, optimum, baseline_violations),
         OptimizeDocument::Ranking { name, ranking } => super::materials::json_value(name, ranking),
     }
 }
@@ -76,61 +104,12 @@ pub fn trace(doc: &OptimizeDocument) -> String {
     }
 }
 
-/// A constraint the baseline design breaks: its name, the baseline's value, the limit
-/// broken and which side ("min" or "max").
-pub struct BaselineViolation {
-    /// The constrained quantity.
-    pub quantity: &'static str,
-    /// Its value at the baseline (SI); None where it does not exist there.
-    pub value: Option<f64>,
-    /// The limit it breaks (SI).
-    pub limit: f64,
-    /// "min" or "max".
-    pub side: &'static str,
-}
-
-/// The constraints the baseline (the problem file's scene) breaks.
-pub fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
-    use crate::optimize::{ConstraintQuantity, Named, SceneParameter};
-    let Some(ev) = &o.baseline_evaluation else {
-        return Vec::new();
-    };
-    let mut scene = o.scene.clone();
-    for (n, v) in o.names.iter().zip(&o.baseline_design) {
-        if let Some(q) = SceneParameter::from_name(n) {
-            q.set(&mut scene, *v);
-        }
+/// How a side of a constraint reads: "min" or "max".
+fn side_word(side: Side) -> &'static str {
+    match side {
+        Side::Min => "min",
+        Side::Max => "max",
     }
-    let mut out = Vec::new();
-    for c in &o.constraints {
-        let Some(q) = ConstraintQuantity::from_name(c.quantity) else {
-            continue;
-        };
-        let value = crate::optimize::functions::quantity_value(q, ev, &scene);
-        // Relative slack as the optimiser's feasibility test allows.
-        let tol = |limit: f64| 1e-9 * limit.abs().max(f64::MIN_POSITIVE);
-        if let Some(min) = c.min {
-            if value.is_none_or(|v| v < min - tol(min)) {
-                out.push(BaselineViolation {
-                    quantity: c.quantity,
-                    value,
-                    limit: min,
-                    side: "min",
-                });
-            }
-        }
-        if let Some(max) = c.max {
-            if value.is_none_or(|v| v > max + tol(max)) {
-                out.push(BaselineViolation {
-                    quantity: c.quantity,
-                    value,
-                    limit: max,
-                    side: "max",
-                });
-            }
-        }
-    }
-    out
 }
 
 /// A constraint's value or limit with its unit.
@@ -151,12 +130,12 @@ fn design_object(names: &[&str], values: &[f64]) -> Value {
 }
 
 /// One JSON object, SI units.
-pub fn json(name: &str, o: &Optimum) -> String {
-    super::json_text(&json_value(name, o))
+pub fn json(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
+    super::json_text(&json_value(name, o, broken))
 }
 
 /// The object [`json()`] writes, as a value.
-pub fn json_value(name: &str, o: &Optimum) -> Value {
+pub fn json_value(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> Value {
     json!({
         "name": name,
         "status": o.status.as_str(),
@@ -179,12 +158,12 @@ pub fn json_value(name: &str, o: &Optimum) -> Value {
         "time_seconds": o.time_seconds,
         "evaluation": super::words::evaluation_json(&o.evaluation),
         "warnings": super::words::warnings(&o.evaluation),
-        "baseline_feasible": baseline_violations(o).is_empty(),
-        "baseline_violations": baseline_violations(o).iter().map(|b| json!({
+        "baseline_feasible": broken.is_empty(),
+        "baseline_violations": broken.iter().map(|b| json!({
             "quantity": b.quantity,
             "value": b.value,
             "limit": b.limit,
-            "side": b.side,
+            "side": side_word(b.side),
         })).collect::<Vec<_>>(),
     })
 }
@@ -192,7 +171,7 @@ pub fn json_value(name: &str, o: &Optimum) -> Value {
 pub use super::trace::trace_csv;
 
 /// A report for people.
-pub fn text(name: &str, o: &Optimum) -> String {
+pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
     let mut out = String::new();
     let mut line = |s: String| {
         out.push_str(&s);
@@ -245,7 +224,6 @@ pub fn text(name: &str, o: &Optimum) -> String {
     }
     line(String::new());
     let unit = super::objective_unit(o.objective_name);
-    let broken = baseline_violations(o);
     if o.baseline_evaluation.is_none() {
         line(format!(
             "{}: {} at the optimum; the baseline has no contact (the load pulls its surfaces apart)",
@@ -275,16 +253,17 @@ pub fn text(name: &str, o: &Optimum) -> String {
             }
         ));
     }
-    for b in &broken {
+    for b in broken {
         line(format!(
             "  the baseline is INFEASIBLE: {} = {} breaks its {} of {}{}",
             b.quantity,
             b.value
                 .map_or("(undefined)".to_string(), |v| constraint_quantity(
-                    b.quantity, v
+                    b.quantity.as_str(),
+                    v
                 )),
-            b.side,
-            constraint_quantity(b.quantity, b.limit),
+            side_word(b.side),
+            constraint_quantity(b.quantity.as_str(), b.limit),
             if !o.feasible() {
                 ""
             } else {
@@ -420,10 +399,14 @@ pub fn convergence_svg(name: &str, o: &Optimum) -> String {
 
 /// A self-contained HTML page: status, design, objective, constraints, warnings, the
 /// convergence of every start and the optimum's load–separation curve.
-pub fn html(name: &str, o: &Optimum, curve: Option<&crate::model::LoadCurve>) -> String {
+pub fn html(
+    name: &str,
+    o: &Optimum,
+    broken: &[BaselineViolation],
+    curve: Option<&crate::model::LoadCurve>,
+) -> String {
     let mut p = super::html::Page::new(&format!("wearopt optimize — {name}"));
     p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status"));
-    let broken = baseline_violations(o);
     let mut warnings: Vec<String> = broken
         .iter()
         .map(|b| {
@@ -432,10 +415,11 @@ pub fn html(name: &str, o: &Optimum, curve: Option<&crate::model::LoadCurve>) ->
                 b.quantity,
                 b.value
                     .map_or("(undefined)".to_string(), |v| constraint_quantity(
-                        b.quantity, v
+                        b.quantity.as_str(),
+                        v
                     )),
-                b.side,
-                constraint_quantity(b.quantity, b.limit)
+                side_word(b.side),
+                constraint_quantity(b.quantity.as_str(), b.limit)
             )
         })
         .collect();
