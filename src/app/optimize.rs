@@ -1,10 +1,10 @@
 //! `wearopt optimize`: a design study's optimum, or the ranking of catalogue
 //! materials when `[design]` lists them.
 
-use crate::model::{self, EvaluationOptions, LoadCurve, SceneParameter};
+use crate::model::{self, EvaluationOptions, LoadCurve};
 use crate::optimize::functions::quantity_value;
 use crate::optimize::materials::rank_materials;
-use crate::optimize::{ConstraintQuantity, Named, Side, FEASIBILITY_TOLERANCE};
+use crate::optimize::{ConstraintQuantity, Side, FEASIBILITY_TOLERANCE};
 use crate::problem::{catalogue, Problem};
 
 use super::{study, valid_scene, AppError};
@@ -33,17 +33,13 @@ fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
         return Vec::new();
     };
     let mut scene = o.scene.clone();
-    for (n, v) in o.names.iter().zip(&o.baseline_design) {
-        if let Some(q) = SceneParameter::from_key(n) {
-            q.set(&mut scene, *v);
-        }
+    for (q, v) in o.names.iter().zip(&o.baseline_design) {
+        q.set(&mut scene, *v);
     }
     let tol = |limit: f64| FEASIBILITY_TOLERANCE * limit.abs().max(f64::MIN_POSITIVE);
     let mut out = Vec::new();
     for c in &o.constraints {
-        let Some(q) = ConstraintQuantity::from_name(c.quantity) else {
-            continue;
-        };
+        let q = c.quantity;
         let value = quantity_value(q, ev, &scene);
         for (side, limit, breaks) in [
             (

@@ -12,7 +12,9 @@ use super::{study, valid_scene, AppError, OptionName};
 pub use crate::optimize::pareto::{
     Front, FrontPoint, FrontStatus, Observer, ParetoError, Reference, Silent,
 };
-pub use crate::optimize::{AdhesionMeasure, Constraint, Objective, ParetoDirection, ParetoSpec};
+pub use crate::optimize::{
+    AdhesionMeasure, Constraint, Objective, ParetoDirection, ParetoSpec, SceneParameter,
+};
 
 /// The options of `wearopt pareto`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -35,8 +37,8 @@ pub struct ParetoPlan {
     pub spec: ParetoSpec,
     /// The objective the front minimises.
     pub objective: Objective,
-    /// Design variable names, in file order.
-    pub names: Vec<&'static str>,
+    /// The design variables, in file order.
+    pub names: Vec<SceneParameter>,
     /// The study's constraints.
     pub constraints: Vec<Constraint>,
 }
@@ -99,12 +101,7 @@ pub fn plan(
         name: problem.name.clone(),
         spec,
         objective,
-        names: problem
-            .study
-            .design
-            .iter()
-            .map(|d| d.name.as_str())
-            .collect(),
+        names: problem.study.design.iter().map(|d| d.name).collect(),
         constraints: problem.study.constraints.clone(),
     })
 }

@@ -286,13 +286,20 @@ impl SceneParameter {
 
 impl std::fmt::Display for SceneParameter {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.as_str())
+        f.pad(self.as_str())
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Reports align tables with `{:<20}`: a name must honour the width.
+    #[test]
+    fn names_pad_in_tables() {
+        assert_eq!(format!("{:<8}|", SceneParameter::Sigma), "sigma   |");
+        assert_eq!(format!("{:>6}", SceneParameter::Load), "  load");
+    }
 
     #[test]
     fn the_role_lists_agree_with_the_table() {

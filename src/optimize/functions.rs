@@ -24,13 +24,30 @@ fn ln_clamped(x: f64) -> f64 {
     }
 }
 
-/// Which side of a constraint a row enforces.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// Which side of a constraint a row enforces (or of a bound the design lies on).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Side {
     /// quantity ≥ limit.
     Min,
     /// quantity ≤ limit.
     Max,
+}
+
+impl Side {
+    /// "min" or "max", as problem files and reports write it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Side::Min => "min",
+            Side::Max => "max",
+        }
+    }
+}
+
+impl std::fmt::Display for Side {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.as_str())
+    }
 }
 
 /// How a quantity is scaled into a row.

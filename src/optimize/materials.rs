@@ -31,7 +31,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::functions::{objective_value, quantity_value};
-use super::study::{Constraint, DesignVariable, SceneParameter};
+use super::study::{Constraint, ConstraintQuantity, DesignVariable, Objective, SceneParameter};
 use super::{OptimizationStatus, OptimizeError, Optimum, Study};
 use crate::model::Material;
 use crate::model::{evaluate, Evaluation, EvaluationOptions, Scene, Status};
@@ -209,7 +209,7 @@ impl MaterialStatus {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FixedConstraint {
     /// The quantity.
-    pub quantity: &'static str,
+    pub quantity: ConstraintQuantity,
     /// Its value (SI).
     pub value: Option<f64>,
     /// Lower limit.
@@ -295,7 +295,7 @@ impl MaterialResult {
 #[derive(Debug, Clone)]
 pub struct MaterialRanking {
     /// The objective's name.
-    pub objective_name: &'static str,
+    pub objective_name: Objective,
     /// Ranked rows first (by objective), then the others in list order.
     pub results: Vec<MaterialResult>,
     /// Wall time (s).
@@ -319,7 +319,7 @@ fn check_fixed(constraints: &[Constraint], ev: &Evaluation, scene: &Scene) -> Ve
                 c.min.is_none_or(|m| v >= m - slack(m)) && c.max.is_none_or(|m| v <= m + slack(m))
             });
             FixedConstraint {
-                quantity: c.quantity.as_str(),
+                quantity: c.quantity,
                 value,
                 min: c.min,
                 max: c.max,
@@ -419,7 +419,7 @@ pub fn rank_materials(
         }
     }
     Ok(MaterialRanking {
-        objective_name: objective.as_str(),
+        objective_name: objective,
         results,
         time_seconds: t0.elapsed().as_secs_f64(),
     })

@@ -90,8 +90,8 @@ pub struct StartOutcome {
 /// One `[[constraint]]` at the reported design.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ConstraintReport {
-    /// The quantity's name.
-    pub quantity: &'static str,
+    /// The constrained quantity.
+    pub quantity: ConstraintQuantity,
     /// Its value (SI).
     pub value: Option<f64>,
     /// Lower limit.
@@ -113,9 +113,9 @@ pub struct ConstraintReport {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ActiveBound {
     /// The design variable.
-    pub variable: &'static str,
-    /// "min" or "max".
-    pub side: &'static str,
+    pub variable: SceneParameter,
+    /// Which bound.
+    pub side: Side,
     /// The bound's value (SI).
     pub value: f64,
 }
@@ -146,8 +146,8 @@ pub struct StartsSummary {
 pub struct Optimum {
     /// How it ended.
     pub status: OptimizationStatus,
-    /// Variable names, in file order.
-    pub names: Vec<&'static str>,
+    /// The design variables, in file order.
+    pub names: Vec<SceneParameter>,
     /// The design found (SI), by variable.
     pub design: Vec<f64>,
     /// The baseline design (SI).
@@ -157,13 +157,13 @@ pub struct Optimum {
     /// The objective at the baseline (SI).
     pub baseline_objective: f64,
     /// Which objective.
-    pub objective_name: &'static str,
+    pub objective_name: Objective,
     /// Constraints at the design.
     pub constraints: Vec<ConstraintReport>,
     /// Bounds on which the design lies.
     pub active_bounds: Vec<ActiveBound>,
     /// For an infeasible study: the constraints still violated at the least-violating design.
-    pub conflicting: Vec<&'static str>,
+    pub conflicting: Vec<ConstraintQuantity>,
     /// KKT residual at the design.
     pub kkt_residual: f64,
     /// Finite-difference error estimate at the design.
@@ -624,11 +624,11 @@ fn assemble(
     } else {
         Vec::new()
     };
-    let names: Vec<&'static str> = functions
+    let names: Vec<SceneParameter> = functions
         .space
         .variables
         .iter()
-        .map(|v| v.quantity.as_str())
+        .map(|v| v.quantity)
         .collect();
     let design = functions.space.values(&best_point.x);
     let active_bounds = functions
@@ -639,14 +639,14 @@ fn assemble(
         .filter_map(|(v, &u)| {
             if u <= 1e-6 {
                 Some(ActiveBound {
-                    variable: v.quantity.as_str(),
-                    side: "min",
+                    variable: v.quantity,
+                    side: Side::Min,
                     value: v.min,
                 })
             } else if u >= 1.0 - 1e-6 {
                 Some(ActiveBound {
-                    variable: v.quantity.as_str(),
-                    side: "max",
+                    variable: v.quantity,
+                    side: Side::Max,
                     value: v.max,
                 })
             } else {
@@ -663,7 +663,7 @@ fn assemble(
         baseline_objective: baseline_evaluation
             .as_ref()
             .map_or(f64::NAN, |ev| functions::objective_value(objective, ev)),
-        objective_name: objective.as_str(),
+        objective_name: objective,
         constraints,
         active_bounds,
         conflicting,
@@ -721,7 +721,7 @@ fn constraint_reports(
                 }
             }
             ConstraintReport {
-                quantity: c.quantity.as_str(),
+                quantity: c.quantity,
                 value: functions::quantity_value(c.quantity, ev, scene),
                 min: c.min,
                 max: c.max,

@@ -179,9 +179,9 @@ pub struct Front {
     /// The preferred end.
     pub direction: ParetoDirection,
     /// The objective minimised.
-    pub objective_name: &'static str,
-    /// Design variable names, in file order.
-    pub names: Vec<&'static str>,
+    pub objective_name: Objective,
+    /// The design variables, in file order.
+    pub names: Vec<SceneParameter>,
     /// Every point of the sweep, from the preferred adhesion end.
     pub points: Vec<FrontPoint>,
     /// Index in `points` of the knee.
@@ -1009,7 +1009,7 @@ pub fn pareto(
             ..*study.settings
         },
     };
-    let names: Vec<&'static str> = study.design.iter().map(|d| d.name.as_str()).collect();
+    let names: Vec<SceneParameter> = study.design.iter().map(|d| d.name).collect();
 
     // The least-wear design: the study without an adhesion target.
     observer.range_started();
@@ -1074,7 +1074,7 @@ pub fn pareto(
         status,
         measure,
         direction: spec.direction,
-        objective_name: objective.as_str(),
+        objective_name: objective,
         names,
         knee: knee(&points, (lo, hi)),
         points,

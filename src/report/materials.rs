@@ -128,7 +128,7 @@ fn best_sentence(ranking: &MaterialRanking) -> String {
             let runner = ranking.results.get(1).filter(|r| r.rank.is_some());
             format!(
                 "Least {}: {} ({}){}",
-                ranking.objective_name.replace('_', " "),
+                ranking.objective_name.as_str().replace('_', " "),
                 best.name(),
                 super::si(best.objective().unwrap_or(f64::NAN), unit, 4),
                 runner.map_or(String::new(), |r| format!(
@@ -239,7 +239,7 @@ pub fn text(name: &str, ranking: &MaterialRanking) -> String {
     line(format!("wearopt optimize — {name}: material ranking"));
     line(String::new());
     let unit = super::objective_unit(ranking.objective_name);
-    let show_objective = ranking.objective_name != "wear_rate";
+    let show_objective = ranking.objective_name != crate::optimize::Objective::WearRate;
     let mut header = format!(
         "{:>4}  {:<24} {:<16} {:>14}",
         "rank", "material", "status", "wear rate"
@@ -329,7 +329,7 @@ pub fn html(name: &str, ranking: &MaterialRanking) -> String {
     let mut p = super::html::Page::new(&format!("wearopt optimize — {name}: material ranking"));
     p.paragraph(&best_sentence(ranking), Some("status"));
     let unit = super::objective_unit(ranking.objective_name);
-    let objective = ranking.objective_name.replace('_', " ");
+    let objective = ranking.objective_name.as_str().replace('_', " ");
     let bars: Vec<(String, f64, String)> = ranking
         .results
         .iter()
@@ -357,7 +357,7 @@ pub fn html(name: &str, ranking: &MaterialRanking) -> String {
         "The objective at each material's best design; ranked materials meet every constraint, the others are named with their status.",
     );
     p.heading("Ranking");
-    let show_objective = ranking.objective_name != "wear_rate";
+    let show_objective = ranking.objective_name != crate::optimize::Objective::WearRate;
     let mut header: Vec<String> = vec![
         "rank".into(),
         "material".into(),

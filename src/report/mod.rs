@@ -34,13 +34,14 @@ pub fn json_text(v: &serde_json::Value) -> String {
     s
 }
 
-/// The SI unit of an objective (by its problem-file name).
-pub(crate) fn objective_unit(name: &str) -> &'static str {
-    match name {
-        "wear_rate" => "m³/m",
-        "wear_volume" => "m³",
-        "real_area" => "m²",
-        "friction_coefficient" => "",
+/// The SI unit of an objective.
+pub(crate) fn objective_unit(objective: crate::optimize::Objective) -> &'static str {
+    use crate::optimize::Objective;
+    match objective {
+        Objective::WearRate => "m³/m",
+        Objective::WearVolume => "m³",
+        Objective::RealArea => "m²",
+        Objective::FrictionCoefficient => "",
         _ => "N",
     }
 }
@@ -58,10 +59,9 @@ pub(crate) fn zero_wear_reason(sc: &crate::model::Scene) -> &'static str {
     }
 }
 
-/// The dimension of a design variable (by its problem-file name).
-pub(crate) fn design_dimension(name: &str) -> crate::units::Dimension {
-    crate::model::SceneParameter::from_key(name)
-        .map_or(crate::units::Dimension::Dimensionless, |q| q.dimension())
+/// The dimension of a design variable.
+pub(crate) fn design_dimension(p: crate::model::SceneParameter) -> crate::units::Dimension {
+    p.dimension()
 }
 
 pub use crate::units::{number, si, sig, sig_exp};

@@ -6,7 +6,7 @@ use serde_json::{json, Map, Value};
 use super::format::FormatError;
 use super::{si, sig, sig_exp};
 use crate::app::optimize::{BaselineViolation, OptimizeDocument, OptimizeOptions};
-use crate::optimize::Side;
+use crate::optimize::{ConstraintQuantity, Objective, SceneParameter, Side};
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::units::format_quantity;
 
@@ -113,18 +113,15 @@ fn side_word(side: Side) -> &'static str {
 }
 
 /// A constraint's value or limit with its unit.
-fn constraint_quantity(name: &str, x: f64) -> String {
-    use crate::optimize::{ConstraintQuantity, Named};
+fn constraint_quantity(q: ConstraintQuantity, x: f64) -> String {
     use crate::problem::Dimensioned;
-    let d = ConstraintQuantity::from_name(name)
-        .map_or(crate::units::Dimension::Dimensionless, |q| q.dimension());
-    crate::units::quantity(x, d, 4)
+    crate::units::quantity(x, q.dimension(), 4)
 }
 
-fn design_object(names: &[&str], values: &[f64]) -> Value {
+fn design_object(names: &[SceneParameter], values: &[f64]) -> Value {
     let mut m = Map::new();
     for (n, v) in names.iter().zip(values) {
-        m.insert((*n).to_string(), json!(v));
+        m.insert(n.as_str().to_string(), json!(v));
     }
     Value::Object(m)
 }
@@ -203,7 +200,7 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
         "design", "optimum", "baseline"
     ));
     for ((n, v), b) in o.names.iter().zip(&o.design).zip(&o.baseline_design) {
-        let d = super::design_dimension(n);
+        let d = super::design_dimension(*n);
         line(format!(
             "{:<18} {:>16} {:>16}",
             n,
@@ -259,11 +256,10 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
             b.quantity,
             b.value
                 .map_or("(undefined)".to_string(), |v| constraint_quantity(
-                    b.quantity.as_str(),
-                    v
+                    b.quantity, v
                 )),
             side_word(b.side),
-            constraint_quantity(b.quantity.as_str(), b.limit),
+            constraint_quantity(b.quantity, b.limit),
             if !o.feasible() {
                 ""
             } else {
@@ -271,7 +267,7 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
             }
         ));
     }
-    if o.objective_name != "wear_rate" {
+    if o.objective_name != Objective::WearRate {
         line(format!(
             "wear rate: {} at the optimum, {} at the baseline",
             si(o.evaluation.wear_rate, "m³/m", 4),
@@ -306,7 +302,11 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
     if !o.conflicting.is_empty() {
         line(format!(
             "  conflicting constraints (violated at the least-violating design): {}",
-            o.conflicting.join(", ")
+            o.conflicting
+                .iter()
+                .map(|q| q.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
         ));
     }
     let warnings = super::words::warnings(&o.evaluation);
@@ -415,11 +415,10 @@ pub fn html(
                 b.quantity,
                 b.value
                     .map_or("(undefined)".to_string(), |v| constraint_quantity(
-                        b.quantity.as_str(),
-                        v
+                        b.quantity, v
                     )),
                 side_word(b.side),
-                constraint_quantity(b.quantity.as_str(), b.limit)
+                constraint_quantity(b.quantity, b.limit)
             )
         })
         .collect();
@@ -436,7 +435,7 @@ pub fn html(
         .zip(&o.design)
         .zip(&o.baseline_design)
         .map(|((n, v), b)| {
-            let d = super::design_dimension(n);
+            let d = super::design_dimension(*n);
             vec![
                 n.to_string(),
                 format_quantity(*v, d),
@@ -466,7 +465,7 @@ pub fn html(
         si(o.baseline_objective, unit, 4),
     ]];
     // The wear rate beside another objective (not twice when it is the objective).
-    if o.objective_name != "wear_rate" {
+    if o.objective_name != Objective::WearRate {
         rows.push(vec![
             "wear_rate".into(),
             si(o.evaluation.wear_rate, "m³/m", 4),
@@ -478,8 +477,9 @@ pub fn html(
     p.table(&["quantity", "optimum", "baseline"], &rows, &[]);
     if !o.constraints.is_empty() {
         p.heading("Constraints");
-        let f =
-            |q: &str, x: Option<f64>| x.map_or("—".to_string(), |v| constraint_quantity(q, v));
+        let f = |q: ConstraintQuantity, x: Option<f64>| {
+            x.map_or("—".to_string(), |v| constraint_quantity(q, v))
+        };
         let rows: Vec<Vec<String>> = o
             .constraints
             .iter()

@@ -11,7 +11,7 @@ use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, si, sig, sig_exp};
 use crate::app::pareto::{ParetoDocument, ParetoOptions, ParetoPlan};
 use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
-use crate::optimize::{AdhesionMeasure, Constraint, ParetoDirection};
+use crate::optimize::{AdhesionMeasure, Constraint, Objective, ParetoDirection, SceneParameter};
 use crate::problem::Dimensioned;
 use crate::units::format_quantity;
 
@@ -33,9 +33,9 @@ pub struct Head<'a> {
     /// The preferred end.
     pub direction: ParetoDirection,
     /// The objective minimised.
-    pub objective_name: &'a str,
-    /// Design variable names.
-    pub names: &'a [&'static str],
+    pub objective_name: Objective,
+    /// The design variables.
+    pub names: &'a [SceneParameter],
 }
 
 impl<'a> Head<'a> {
@@ -76,7 +76,7 @@ pub fn head_of(plan: &ParetoPlan) -> Head<'_> {
         name: &plan.name,
         measure: plan.spec.adhesion,
         direction: plan.spec.direction,
-        objective_name: plan.objective.as_str(),
+        objective_name: plan.objective,
         names: &plan.names,
     }
 }
@@ -141,13 +141,13 @@ pub fn json_document(doc: &ParetoDocument) -> Value {
 // ---------------------------------------------------------------- CSV
 
 /// The CSV header: fixed columns, then one column per design variable.
-pub fn csv_header(names: &[&str]) -> String {
+pub fn csv_header(names: &[SceneParameter]) -> String {
     let mut h = String::from(
         "index,target,adhesion,log10_adhesion,wear_rate,objective,status,dominated,on_front",
     );
     for n in names {
         h.push(',');
-        h.push_str(n);
+        h.push_str(n.as_str());
     }
     h.push('\n');
     h
@@ -186,7 +186,7 @@ pub fn csv(front: &Front) -> String {
 
 // ---------------------------------------------------------------- JSON
 
-fn design_object(names: &[&str], values: &[f64]) -> Value {
+fn design_object(names: &[SceneParameter], values: &[f64]) -> Value {
     let mut m = Map::new();
     for (n, v) in names.iter().zip(values) {
         m.insert((*n).to_string(), json!(v));
@@ -221,7 +221,7 @@ pub fn json_head(h: &Head) -> String {
 }
 
 /// One point of `points`, on one line; `first` leaves out the separating comma.
-pub fn json_point(names: &[&str], p: &FrontPoint, first: bool) -> String {
+pub fn json_point(names: &[SceneParameter], p: &FrontPoint, first: bool) -> String {
     format!(
         "{}    {}",
         if first { "" } else { ",\n" },
@@ -230,7 +230,7 @@ pub fn json_point(names: &[&str], p: &FrontPoint, first: bool) -> String {
 }
 
 /// One point of `points`, as a value.
-fn point_value(names: &[&str], p: &FrontPoint) -> Value {
+fn point_value(names: &[SceneParameter], p: &FrontPoint) -> Value {
     json!({
         "index": p.index,
         "target": p.target,
@@ -470,7 +470,7 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
             let _ = write!(
                 row,
                 " {:>16}",
-                format_quantity(*v, super::design_dimension(n))
+                format_quantity(*v, super::design_dimension(*n))
             );
         }
         line(row);
@@ -601,7 +601,7 @@ pub fn svg(name: &str, front: &Front) -> String {
             "elastic adhesion index θ (larger: less adhesion)".to_string()
         }
     };
-    let ylabel = front.objective_name.replace('_', " ");
+    let ylabel = front.objective_name.as_str().replace('_', " ");
     let title = format!(
         "{name}: {} against {} ({})",
         ylabel,
@@ -740,7 +740,7 @@ pub fn html(
 ) -> String {
     let m = front.measure;
     let ounit = super::objective_unit(front.objective_name);
-    let show_wear = front.objective_name != "wear_rate";
+    let show_wear = front.objective_name != Objective::WearRate;
     let mut p = super::html::Page::new(&format!("wearopt pareto — {name}"));
     p.paragraph(
         &format!("Status: {}", status_sentence(front)),
@@ -780,13 +780,13 @@ pub fn html(
         AdhesionMeasure::WorkOfAdhesion => "work of adhesion γ".to_string(),
         AdhesionMeasure::ElasticAdhesionIndex => "elastic adhesion index θ".to_string(),
     };
-    let objective_header = front.objective_name.replace('_', " ");
+    let objective_header = front.objective_name.as_str().replace('_', " ");
     let design_cells = |design: &[f64]| -> Vec<String> {
         front
             .names
             .iter()
             .zip(design)
-            .map(|(n, v)| format_quantity(*v, super::design_dimension(n)))
+            .map(|(n, v)| format_quantity(*v, super::design_dimension(*n)))
             .collect()
     };
     let mut header: Vec<&str> = vec!["design", &adhesion_header, &objective_header];
@@ -794,7 +794,7 @@ pub fn html(
         header.push("wear rate");
     }
     header.push("meets the constraints");
-    header.extend(front.names.iter().copied());
+    header.extend(front.names.iter().map(|n| n.as_str()));
 
     p.heading("End points, knee and baseline");
     let mut rows: Vec<Vec<String>> = Vec::new();

@@ -42,7 +42,10 @@ fn ranking_agrees_with_each_material_studied_alone() {
     assert!(p.study.materials.len() >= 3);
     let ranking = rank(&p);
     assert_eq!(ranking.results.len(), p.study.materials.len());
-    assert_eq!(ranking.objective_name, "wear_rate");
+    assert_eq!(
+        ranking.objective_name,
+        wearopt::optimize::Objective::WearRate
+    );
 
     for r in &ranking.results {
         // The single-material study, built here from the catalogue by hand.

@@ -245,7 +245,10 @@ fn infeasible_study_is_reported_infeasible() {
     let p = load("infeasible-study");
     let o = run(&p);
     assert_eq!(o.status, OptimizationStatus::Infeasible);
-    assert_eq!(o.conflicting, vec!["plasticity_index"]);
+    assert_eq!(
+        o.conflicting,
+        vec![wearopt::optimize::ConstraintQuantity::PlasticityIndex]
+    );
     // The least-violating design: smallest σ, largest R (ψ ∝ (σ/R)^{1/2}).
     assert_eq!(o.design, vec![0.5e-9, 10e-6]);
     assert!(o.kkt_residual.is_finite());
@@ -371,7 +374,10 @@ fn bad_problems_end_with_clear_statuses() {
     }];
     let o = custom(&p.scene, &design, &impossible, &quick);
     assert_eq!(o.status, OptimizationStatus::Infeasible);
-    assert_eq!(o.conflicting, vec!["real_area_fraction"]);
+    assert_eq!(
+        o.conflicting,
+        vec![wearopt::optimize::ConstraintQuantity::RealAreaFraction]
+    );
 
     // A time limit of zero: the starts are evaluated, then time is up.
     let no_time = OptimizerSettings {
