@@ -83,6 +83,44 @@ pub const MAX_REFINE_ROUNDS: usize = 4;
 /// Most feasibility probes per end of the range.
 pub const MAX_PROBES: usize = 12;
 
+/// The front's tuning, one documented field each (defaults: the constants above).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParetoSettings {
+    /// Points solved together (default [`WAVE`]); fixed, so that warm starts do
+    /// not depend on the thread count.
+    pub wave: usize,
+    /// Relative wear difference below which two points count as equally good
+    /// (default [`WEAR_TOLERANCE`]).
+    pub wear_tolerance: f64,
+    /// Strength difference (log10 units) below which two adhesions count as equal
+    /// (default [`STRENGTH_TOLERANCE`]).
+    pub strength_tolerance: f64,
+    /// Smallest normalised distance to the chord for a knee (default
+    /// [`KNEE_MIN_DISTANCE`]).
+    pub knee_min_distance: f64,
+    /// Bisection of a range end stops when its bracket is this narrow, in decades
+    /// (default [`RANGE_RESOLUTION`]).
+    pub range_resolution: f64,
+    /// Most re-solve rounds of the sweep (default [`MAX_REFINE_ROUNDS`]).
+    pub max_refine_rounds: usize,
+    /// Most feasibility probes per end of the range (default [`MAX_PROBES`]).
+    pub max_probes: usize,
+}
+
+impl Default for ParetoSettings {
+    fn default() -> Self {
+        ParetoSettings {
+            wave: WAVE,
+            wear_tolerance: WEAR_TOLERANCE,
+            strength_tolerance: STRENGTH_TOLERANCE,
+            knee_min_distance: KNEE_MIN_DISTANCE,
+            range_resolution: RANGE_RESOLUTION,
+            max_refine_rounds: MAX_REFINE_ROUNDS,
+            max_probes: MAX_PROBES,
+        }
+    }
+}
+
 /// How the front came out (contract words).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -307,6 +345,7 @@ struct Sweep<'a> {
     objective: Objective,
     options: EvaluationOptions,
     warm_settings: OptimizerSettings,
+    settings: ParetoSettings,
 }
 
 impl Sweep<'_> {
@@ -562,11 +601,11 @@ fn find_end(
     let mut bad: Option<f64> = None;
     let mut probes = 0;
     let mut evaluations = 0;
-    if (bound - good_s).abs() <= STRENGTH_TOLERANCE {
+    if (bound - good_s).abs() <= sweep.settings.strength_tolerance {
         return (good_s, good, probes, evaluations);
     }
     let mut probe = bound;
-    while probes < MAX_PROBES {
+    while probes < sweep.settings.max_probes {
         let target = if up {
             Target::AtLeast(probe)
         } else {
@@ -585,7 +624,7 @@ fn find_end(
         }
         match bad {
             None => break, // the bound itself is reachable
-            Some(b) if (b - good_s).abs() <= RANGE_RESOLUTION => break,
+            Some(b) if (b - good_s).abs() <= sweep.settings.range_resolution => break,
             Some(b) => probe = 0.5 * (good_s + b),
         }
     }
@@ -601,6 +640,7 @@ pub fn targets(
     points: usize,
     direction: ParetoDirection,
     snap: Option<f64>,
+    settings: &ParetoSettings,
 ) -> Vec<f64> {
     let n = points.max(1);
     let frac = |k: usize| {
@@ -622,7 +662,8 @@ pub fn targets(
     s[0] = lo;
     s[n - 1] = hi;
     if let Some(w) = snap {
-        if w > lo + STRENGTH_TOLERANCE && w < hi - STRENGTH_TOLERANCE && n > 2 {
+        let tol = settings.strength_tolerance;
+        if w > lo + tol && w < hi - tol && n > 2 {
             let k = (1..n - 1)
                 .min_by(|&a, &b| (s[a] - w).abs().total_cmp(&(s[b] - w).abs()))
                 .unwrap_or(1);
@@ -640,21 +681,22 @@ fn dominated_by_earlier(
     earlier: &[FrontPoint],
     p: &FrontPoint,
     direction: ParetoDirection,
+    settings: &ParetoSettings,
 ) -> bool {
     let pref = |s: f64| match direction {
         ParetoDirection::Low => s,
         ParetoDirection::High => -s,
     };
     earlier.iter().filter(|q| q.feasible).any(|q| {
-        pref(q.strength) <= pref(p.strength) + STRENGTH_TOLERANCE
-            && q.objective <= p.objective * (1.0 + WEAR_TOLERANCE)
+        pref(q.strength) <= pref(p.strength) + settings.strength_tolerance
+            && q.objective <= p.objective * (1.0 + settings.wear_tolerance)
     })
 }
 
 /// The knee of the front (see the module docs), with strengths clamped to
 /// `range`, the range the report prints (a pull-off of 10^-1105 N sits at its
 /// floor end, not a thousand decades beyond it).
-pub fn knee(points: &[FrontPoint], range: (f64, f64)) -> Option<usize> {
+pub fn knee(points: &[FrontPoint], range: (f64, f64), settings: &ParetoSettings) -> Option<usize> {
     let front: Vec<&FrontPoint> = points.iter().filter(|p| p.on_front).collect();
     if front.len() < 3 {
         return None;
@@ -693,7 +735,7 @@ pub fn knee(points: &[FrontPoint], range: (f64, f64)) -> Option<usize> {
         .take(norm.len() - 2)
         .map(|(k, &(x, y))| (k, ((x - a.0) * cy - (y - a.1) * cx).abs() / len))
         .fold((0, -1.0), |best, c| if c.1 > best.1 { c } else { best });
-    (d >= KNEE_MIN_DISTANCE).then(|| front[k].index)
+    (d >= settings.knee_min_distance).then(|| front[k].index)
 }
 
 /// One ε-point of the sweep while it is being solved.
@@ -730,8 +772,12 @@ fn improves(a: &Solved, b: Option<&Solved>, tolerance: f64) -> bool {
 /// the same design. Each round reads the previous round's designs only, so the result
 /// does not depend on the thread count.
 fn refine(sweep: &Sweep, slots: &mut [Slot]) {
-    let tolerance = sweep.study.settings.tolerance.max(WEAR_TOLERANCE * 1e-3);
-    for _ in 0..MAX_REFINE_ROUNDS {
+    let tolerance = sweep
+        .study
+        .settings
+        .tolerance
+        .max(sweep.settings.wear_tolerance * 1e-3);
+    for _ in 0..sweep.settings.max_refine_rounds {
         let designs: Vec<Option<&Solved>> = slots
             .iter()
             .map(|s| s.solved.as_ref().filter(|r| r.feasible && r.log10 > -300.0))
@@ -871,7 +917,7 @@ fn reachable_range(sweep: &Sweep, start: &Solved, observer: &dyn Observer) -> Ra
         let (lo, solved, p, e) = find_end(sweep, start, box_lo.max(floor), corner, observer);
         probes += p;
         evaluations += e;
-        (lo, solved, lo <= floor + STRENGTH_TOLERANCE)
+        (lo, solved, lo <= floor + sweep.settings.strength_tolerance)
     };
     let (hi, hi_solved) = if start.feasible {
         let corner = strongest.map(|c| &c.1);
@@ -915,12 +961,13 @@ fn sweep_waves(
         remember(&mut known, r);
     }
     let mut slots: Vec<Slot> = Vec::with_capacity(strengths.len());
-    for (w, wave) in strengths.chunks(WAVE).enumerate() {
+    let size = sweep.settings.wave.max(1);
+    for (w, wave) in strengths.chunks(size).enumerate() {
         let solved: Vec<Slot> = wave
             .par_iter()
             .enumerate()
             .map(|(j, &s)| {
-                let target = if Some(w * WAVE + j) == floor_index {
+                let target = if Some(w * size + j) == floor_index {
                     Target::AtMost(s)
                 } else {
                     Target::Equal(s)
@@ -957,13 +1004,14 @@ fn points_of(
     measure: AdhesionMeasure,
     n: usize,
     direction: ParetoDirection,
+    settings: &ParetoSettings,
     observer: &dyn Observer,
 ) -> Vec<FrontPoint> {
     let mut points: Vec<FrontPoint> = Vec::with_capacity(slots.len());
     for (index, slot) in slots.iter().enumerate() {
         let mut p = front_point(index, slot, measure, n);
         if p.feasible {
-            p.dominated = dominated_by_earlier(&points, &p, direction);
+            p.dominated = dominated_by_earlier(&points, &p, direction, settings);
             p.on_front = !p.dominated;
         }
         observer.point_done(&p);
@@ -972,11 +1020,22 @@ fn points_of(
     points
 }
 
-/// Sweeps the wear–adhesion curve of a study (see the module docs). The
-/// result is the same for any number of rayon threads.
+/// Sweeps the wear–adhesion curve of a study (see the module docs) with the
+/// default [`ParetoSettings`]. The result is the same for any number of rayon
+/// threads.
 pub fn pareto(
     study: &Study,
     spec: &ParetoSpec,
+    observer: &dyn Observer,
+) -> Result<Front, ParetoError> {
+    pareto_with(study, spec, &ParetoSettings::default(), observer)
+}
+
+/// As [`pareto`], with `settings`.
+pub fn pareto_with(
+    study: &Study,
+    spec: &ParetoSpec,
+    settings: &ParetoSettings,
     observer: &dyn Observer,
 ) -> Result<Front, ParetoError> {
     let t0 = Instant::now();
@@ -1008,6 +1067,7 @@ pub fn pareto(
             starts: 1,
             ..*study.settings
         },
+        settings: *settings,
     };
     let names: Vec<SceneParameter> = study.design.iter().map(|d| d.name).collect();
 
@@ -1047,7 +1107,7 @@ pub fn pareto(
     evaluations += range.evaluations;
     let (lo, hi, floor_end, probes) = (range.lo, range.hi, range.floor_end, range.probes);
     let snap = (s_w > lo).then_some(s_w);
-    let strengths = targets(measure, lo, hi, spec.points, spec.direction, snap);
+    let strengths = targets(measure, lo, hi, spec.points, spec.direction, snap, settings);
 
     // The sweep, in waves from the preferred end.
     observer.sweep_started(strengths.len());
@@ -1063,7 +1123,14 @@ pub fn pareto(
     );
     refine(&sweep, &mut slots);
     evaluations += slots.iter().map(|s| s.evaluations).sum::<usize>();
-    let points = points_of(&slots, measure, names.len(), spec.direction, observer);
+    let points = points_of(
+        &slots,
+        measure,
+        names.len(),
+        spec.direction,
+        settings,
+        observer,
+    );
     let front = points.iter().filter(|p| p.on_front).count();
     let status = match front {
         0 => FrontStatus::Infeasible,
@@ -1076,7 +1143,7 @@ pub fn pareto(
         direction: spec.direction,
         objective_name: objective,
         names,
-        knee: knee(&points, (lo, hi)),
+        knee: knee(&points, (lo, hi), settings),
         points,
         strength_range: (lo, hi),
         floor_end,
@@ -1102,6 +1169,7 @@ mod tests {
             5,
             ParetoDirection::Low,
             Some(-7.9),
+            &ParetoSettings::default(),
         );
         assert_eq!(s, vec![-12.0, -10.0, -7.9, -6.0, -4.0]);
         let s = targets(
@@ -1111,6 +1179,7 @@ mod tests {
             3,
             ParetoDirection::High,
             None,
+            &ParetoSettings::default(),
         );
         assert_eq!(s, vec![-4.0, -8.0, -12.0]);
         // Less than a decade: even in value.
@@ -1121,6 +1190,7 @@ mod tests {
             5,
             ParetoDirection::Low,
             None,
+            &ParetoSettings::default(),
         );
         let v: Vec<f64> = s
             .iter()
