@@ -197,16 +197,15 @@ fn sweep_text(
             "json" => report::sweep::Encoding::Json,
             other => return Err(format!("format={other:?}: expected \"csv\" or \"json\"")),
         };
-        let options = |shard| SweepOptions {
+        let options = SweepOptions {
             samples,
             method,
             seed,
-            shard,
         };
         // The sweep is checked before the shard, as the command line does.
-        app::sweep::plan(&problem, &origin, &options(app::sweep::Shard::WHOLE)).map_err(words)?;
+        let plan = app::sweep::plan(&problem, &origin, &options).map_err(words)?;
         let shard = app::sweep::shard(shard_index, shard_count).map_err(words)?;
-        let plan = app::sweep::plan(&problem, &origin, &options(shard)).map_err(words)?;
+        let plan = plan.part(shard);
         let mut text = report::sweep::head(
             format,
             &report::sweep::Head {

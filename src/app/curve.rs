@@ -122,25 +122,27 @@ pub struct CurveModel {
     critical_interference: f64,
 }
 
-fn index_error(option: &'static str, x: f64, what: &str) -> AppError {
-    AppError::Invalid {
-        options: vec![(OptionName(option), x.to_string())],
-        rule: format!("must be > 0 (or inf for no {what})"),
+/// θ, λ and c_h each > 0 (∞ allowed), checked in that order.
+fn check_indices(theta: f64, lambda: f64, c_h: f64) -> Result<(), AppError> {
+    for (option, x, what) in [
+        ("theta", theta, "adhesion"),
+        ("lambda", lambda, "plasticity"),
+        ("hardness_coefficient", c_h, "plasticity"),
+    ] {
+        if x.is_nan() || x <= 0.0 {
+            return Err(AppError::Invalid {
+                options: vec![(OptionName(option), x.to_string())],
+                rule: format!("must be > 0 (or inf for no {what})"),
+            });
+        }
     }
+    Ok(())
 }
 
 impl CurveModel {
     /// The model at θ, λ and c_h (c_h read only with θ = ∞) under `law`.
     pub fn new(theta: f64, lambda: f64, c_h: f64, law: AsperityLaw) -> Result<Self, AppError> {
-        if theta.is_nan() || theta <= 0.0 {
-            return Err(index_error("theta", theta, "adhesion"));
-        }
-        if lambda.is_nan() || lambda <= 0.0 {
-            return Err(index_error("lambda", lambda, "plasticity"));
-        }
-        if c_h.is_nan() || c_h <= 0.0 {
-            return Err(index_error("hardness_coefficient", c_h, "plasticity"));
-        }
+        check_indices(theta, lambda, c_h)?;
         let coefficients = if theta.is_infinite() {
             Coefficients::new(0.0, c_h)
         } else if lambda.is_infinite() {
@@ -193,15 +195,7 @@ pub fn curve(options: &CurveOptions) -> Result<CurveDocument, AppError> {
         rule,
     };
     // The indices first, as the command line always checked them.
-    for (name, x, what) in [
-        ("theta", theta, "adhesion"),
-        ("lambda", lambda, "plasticity"),
-        ("hardness_coefficient", hardness_coefficient, "plasticity"),
-    ] {
-        if x.is_nan() || x <= 0.0 {
-            return Err(index_error(name, x, what));
-        }
-    }
+    check_indices(theta, lambda, hardness_coefficient)?;
     let range = || vec![("from", from.to_string()), ("to", to.to_string())];
     if !from.is_finite() || !to.is_finite() {
         return Err(invalid(range(), "separations must be finite".to_string()));
@@ -278,19 +272,7 @@ pub fn curve_at(
         }
     };
     for i in 0..n {
-        for (name, x, what) in [
-            ("theta", theta[i], "adhesion"),
-            ("lambda", lambda[i], "plasticity"),
-            (
-                "hardness_coefficient",
-                hardness_coefficient[i],
-                "plasticity",
-            ),
-        ] {
-            if x.is_nan() || x <= 0.0 {
-                return Err(element(i, index_error(name, x, what)));
-            }
-        }
+        check_indices(theta[i], lambda[i], hardness_coefficient[i]).map_err(|e| element(i, e))?;
         if !h[i].is_finite() {
             return Err(element(
                 i,

@@ -12,7 +12,8 @@ use super::{AppError, OptionName};
 pub use crate::optimize::ParetoDirection;
 pub use crate::sweep::{Method, Shard, Sweep, SweepRow};
 
-/// The options of `wearopt sweep`.
+/// The options of `wearopt sweep` (which part of it to run is
+/// [`SweepPlan::part`]'s).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct SweepOptions {
     /// Number of designs N over all shards.
@@ -21,8 +22,6 @@ pub struct SweepOptions {
     pub method: Method,
     /// Seed of the Sobol′ shift or the Latin hypercube.
     pub seed: u64,
-    /// The part of the sweep to run.
-    pub shard: Shard,
 }
 
 /// A sweep ready to run: what its output's head says and the rows it will compute.
@@ -32,7 +31,7 @@ pub struct SweepPlan {
     pub name: String,
     /// The sweep.
     pub sweep: Sweep,
-    /// The rows of this shard.
+    /// The rows to run: all of them, or a shard's ([`SweepPlan::part`]).
     pub range: Range<u64>,
     /// Which end of the pull-off the study prefers (its `[pareto]` direction;
     /// low without one): what the map's Pareto-optimal designs minimise.
@@ -60,7 +59,7 @@ pub fn shard(index: u64, count: u64) -> Result<Shard, AppError> {
     })
 }
 
-/// The sweep of the problem's study under `options`, checked up front.
+/// The whole sweep of the problem's study under `options`, checked up front.
 pub fn plan(
     problem: &Problem,
     origin: &str,
@@ -85,7 +84,7 @@ pub fn plan(
     .map_err(sweep_error)?;
     Ok(SweepPlan {
         name: problem.name.clone(),
-        range: options.shard.range(sweep.samples()),
+        range: 0..sweep.samples(),
         sweep,
         direction: problem
             .study
@@ -96,6 +95,14 @@ pub fn plan(
 }
 
 impl SweepPlan {
+    /// The plan of part `shard` of this sweep.
+    pub fn part(self, shard: Shard) -> SweepPlan {
+        SweepPlan {
+            range: shard.range(self.sweep.samples()),
+            ..self
+        }
+    }
+
     /// Computes the rows of this shard in order, handing them to `sink` in blocks
     /// as they are final (memory does not grow with N).
     pub fn run<E>(&self, sink: impl FnMut(&[SweepRow]) -> Result<(), E>) -> Result<(), E> {

@@ -138,25 +138,21 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     };
     let format = Encoding::of(args.format)
         .ok_or_else(|| super::format::refuse("sweep", args.format, out::FORMATS))?;
-    let plan_of = |shard: Shard| {
-        sw::plan(
-            &problem,
-            &args.file.display().to_string(),
-            &SweepOptions {
-                samples: args.samples,
-                method,
-                seed: args.seed,
-                shard,
-            },
-        )
-    };
     // The sweep is checked before the shard, as it always was.
-    plan_of(Shard::WHOLE)?;
+    let plan = sw::plan(
+        &problem,
+        &args.file.display().to_string(),
+        &SweepOptions {
+            samples: args.samples,
+            method,
+            seed: args.seed,
+        },
+    )?;
     let shard = match &args.shard {
         Some(s) => parse_shard(s)?,
         None => slurm_shard()?.unwrap_or(Shard::WHOLE),
     };
-    let plan = plan_of(shard)?;
+    let plan = plan.part(shard);
     let sweep = &plan.sweep;
     let range = plan.range.clone();
     let head = out::head(
