@@ -344,16 +344,22 @@ fn fit_adhesion_json(
 ) -> PyResult<String> {
     detached(py, || {
         let options = (|| -> Result<FitAdhesionOptions, AppError> {
-            if mu.is_some() && fit_mu {
+            if let (Some(mu), true) = (mu, fit_mu) {
                 return Err(AppError::Invalid {
-                    options: vec![(OptionName("mu"), format!("{mu:?}"))],
-                    rule: "give mu or fit_mu=True, not both".to_string(),
+                    options: vec![
+                        (OptionName("mu"), mu.to_string()),
+                        (OptionName("fit_mu"), "True".to_string()),
+                    ],
+                    rule: "give mu (held fixed) or fit_mu=True (fitted), not both".to_string(),
                 });
             }
             let modulus = match (modulus, materials) {
-                (Some(_), Some(_)) => {
+                (Some(e), Some(m)) => {
                     return Err(AppError::Invalid {
-                        options: vec![(OptionName("modulus"), "…".to_string())],
+                        options: vec![
+                            (OptionName("modulus"), format!("{e:?}")),
+                            (OptionName("materials"), format!("{m:?}")),
+                        ],
                         rule: "give modulus or materials, not both".to_string(),
                     })
                 }

@@ -398,6 +398,8 @@ def test_new_commands_word_errors_as_keywords():
         wearopt.fit_adhesion("problems/ando-friction.csv", "-1 mm")
     with pytest.raises(ValueError, match="^materials=unobtainium: not in the catalogue"):
         wearopt.fit_adhesion("problems/ando-friction.csv", "1 mm", materials=["unobtainium"])
+    with pytest.raises(ValueError, match=r"^mu=0.1, fit_mu=True: give mu \(held fixed\) or fit_mu=True"):
+        wearopt.fit_adhesion("problems/ando-friction.csv", "1 mm", mu=0.1, fit_mu=True)
     with pytest.raises(ValueError, match="^points=2: must lie in 3..="):
         wearopt.figures(points=2)
     with pytest.raises(ValueError, match="^pixel_size=None"):
