@@ -1,4 +1,6 @@
-//! The command line: clap definitions and the wiring of problem → model → report.
+//! The command line: clap definitions, and an adapter of the application layer
+//! (`wearopt::app`): flags in, one app function called, the report stage's
+//! rendering written out, errors worded as flags.
 
 mod accuracy;
 mod figures;
