@@ -393,6 +393,11 @@ def test_new_commands_equal_the_cli_json(tmp_path):
             assert by_array[k] == by_file[k], k
 
 
+def test_fit_adhesion_quoted_values_name_no_flag():
+    c = wearopt.fit_adhesion("problems/ando-friction.csv", "0.3 mm", quoted_gamma="2 mJ/m^2")
+    assert c["comparison"]["source"] == "the quoted values"
+
+
 def test_new_commands_word_errors_as_keywords():
     with pytest.raises(ValueError, match="^radius="):
         wearopt.fit_adhesion("problems/ando-friction.csv", "-1 mm")

@@ -59,7 +59,7 @@ fn fit_data(
     let ando = data.is_ando_table() && (radius / calibrate::ANDO_RADIUS - 1.0).abs() < 1e-9;
     let quoted = if options.quoted_gamma.is_some() || options.quoted_bond_strength.is_some() {
         Some(Quoted {
-            source: "the quoted values (--quoted-gamma, --quoted-bond-strength)".into(),
+            source: "the quoted values".into(),
             work_of_adhesion: options.quoted_gamma,
             bond_strength: options.quoted_bond_strength,
         })

@@ -304,6 +304,23 @@ fn cli_reports_the_papers_table_and_the_disagreement() {
         text.contains("The quoted γ is consistent with these data."),
         "{text}"
     );
+    // Where the quoted values came from is said without a flag: Python's JSON is
+    // the same document (it used to read "(--quoted-gamma, --quoted-bond-strength)").
+    let out = common::stdout(
+        wearopt().args([
+            "fit-adhesion",
+            "problems/ando-friction.csv",
+            "--radius",
+            "0.3mm",
+            "--quoted-gamma",
+            "2 mJ/m^2",
+            "--format",
+            "json",
+        ]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["comparison"]["source"], "the quoted values");
 }
 
 fn data_file(name: &str, text: &str) -> PathBuf {
