@@ -121,40 +121,44 @@ Exit code 2 for an unreadable file or a map that cannot be analysed."
 Example:\n  wearopt curve --theta 10 --lambda 0.125 --from -2 --to 4 --points 61\n  \
 wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json   (Greenwood-Williamson)"
     )]
-    Curve {
-        /// Elastic adhesion index θ > 0 ("inf": no adhesion).
-        #[arg(long, allow_hyphen_values = true)]
-        theta: f64,
-        /// Plastic adhesion index λ > 0 ("inf": no plasticity).
-        #[arg(long, allow_hyphen_values = true)]
-        lambda: f64,
-        /// Hardness coefficient c_h = π R^{1/2} H / (K σ^{1/2}) > 0, used only with --theta inf
-        /// (θ and λ are both infinite without adhesion, so c_h cannot come from them).
-        #[arg(long, default_value_t = f64::INFINITY, allow_hyphen_values = true)]
-        hardness_coefficient: f64,
-        /// First separation h = d/σ.
-        #[arg(long, allow_hyphen_values = true)]
-        from: f64,
-        /// Last separation (inclusive).
-        #[arg(long, allow_hyphen_values = true)]
-        to: f64,
-        /// Number of points, 1 to 1,000,000 (1 gives --from alone).
-        #[arg(long)]
-        points: usize,
-        /// Output format.
-        #[arg(long, value_parser = format::formats("curve", report::curve::FORMATS), default_value = "csv")]
-        format: Format,
-        /// The asperity law: jkr (the paper's) or dmt (attraction of asperities not in contact).
-        #[arg(long, value_parser = law_parser(), default_value = "jkr")]
-        adhesion_model: AdhesionModel,
-        /// Under dmt: van_der_waals (default) or dugdale.
-        #[arg(long, value_parser = attraction_parser())]
-        attraction: Option<AttractionKind>,
-        /// Under dmt, the attraction's range over σ (required): z0 = Z0/σ for
-        /// van_der_waals, Δ_h = h0/σ for dugdale; > 0.
-        #[arg(long, allow_hyphen_values = true)]
-        attraction_range: Option<f64>,
-    },
+    Curve(CurveArgs),
+}
+
+/// Arguments of `wearopt curve`.
+#[derive(Debug, clap::Args)]
+pub struct CurveArgs {
+    /// Elastic adhesion index θ > 0 ("inf": no adhesion).
+    #[arg(long, allow_hyphen_values = true)]
+    pub theta: f64,
+    /// Plastic adhesion index λ > 0 ("inf": no plasticity).
+    #[arg(long, allow_hyphen_values = true)]
+    pub lambda: f64,
+    /// Hardness coefficient c_h = π R^{1/2} H / (K σ^{1/2}) > 0, used only with --theta inf
+    /// (θ and λ are both infinite without adhesion, so c_h cannot come from them).
+    #[arg(long, default_value_t = f64::INFINITY, allow_hyphen_values = true)]
+    pub hardness_coefficient: f64,
+    /// First separation h = d/σ.
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: f64,
+    /// Last separation (inclusive).
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: f64,
+    /// Number of points, 1 to 1,000,000 (1 gives --from alone).
+    #[arg(long)]
+    pub points: usize,
+    /// Output format.
+    #[arg(long, value_parser = format::formats("curve", report::curve::FORMATS), default_value = "csv")]
+    pub format: Format,
+    /// The asperity law: jkr (the paper's) or dmt (attraction of asperities not in contact).
+    #[arg(long, value_parser = law_parser(), default_value = "jkr")]
+    pub adhesion_model: AdhesionModel,
+    /// Under dmt: van_der_waals (default) or dugdale.
+    #[arg(long, value_parser = attraction_parser())]
+    pub attraction: Option<AttractionKind>,
+    /// Under dmt, the attraction's range over σ (required): z0 = Z0/σ for
+    /// van_der_waals, Δ_h = h0/σ for dugdale; > 0.
+    #[arg(long, allow_hyphen_values = true)]
+    pub attraction_range: Option<f64>,
 }
 
 /// `--adhesion-model`: the names of the registry of asperity laws.
@@ -192,33 +196,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::Merge(args) => sweep::merge(args),
         Command::Roughness(args) => roughness::run(args),
         Command::FitAdhesion(args) => fit_adhesion::run(args),
-        Command::Curve {
-            theta,
-            lambda,
-            hardness_coefficient,
-            from,
-            to,
-            points,
-            format,
-            adhesion_model,
-            attraction,
-            attraction_range,
-        } => curve(
-            &CurveOptions {
-                theta,
-                lambda,
-                hardness_coefficient,
-                from,
-                to,
-                points,
-                law: LawOptions {
-                    adhesion_model,
-                    attraction,
-                    attraction_range,
-                },
-            },
-            format,
-        ),
+        Command::Curve(args) => curve(args),
     }
 }
 
@@ -312,9 +290,21 @@ fn usage(msg: String) -> anyhow::Error {
     UsageError(msg).into()
 }
 
-fn curve(options: &CurveOptions, format: Format) -> Result<ExitCode> {
-    let doc = app::curve::curve(options)?;
-    print_out(&report::curve::render(&doc, format)?)?;
+fn curve(args: CurveArgs) -> Result<ExitCode> {
+    let doc = app::curve::curve(&CurveOptions {
+        theta: args.theta,
+        lambda: args.lambda,
+        hardness_coefficient: args.hardness_coefficient,
+        from: args.from,
+        to: args.to,
+        points: args.points,
+        law: LawOptions {
+            adhesion_model: args.adhesion_model,
+            attraction: args.attraction,
+            attraction_range: args.attraction_range,
+        },
+    })?;
+    print_out(&report::curve::render(&doc, args.format)?)?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -112,13 +112,18 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
     return json.loads(_wearopt.pareto_json(*_source(problem), points))
 
 
-def _length(value: Any) -> Optional[str]:
-    """A length as the command line reads it: a string with a unit, or metres."""
+def _quantity(name: str, value: Any, si_unit: str = "SI units") -> Optional[str]:
+    """A quantity as the command line reads it: a string with a unit, or a number in SI."""
     if value is None or isinstance(value, str):
         return value
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         return repr(float(value))
-    raise TypeError(f"a length must be a string with a unit or a number in metres, not {type(value).__name__}")
+    raise TypeError(f"{name} must be a string with a unit or a number in {si_unit}, not {type(value).__name__}")
+
+
+def _length(value: Any) -> Optional[str]:
+    """A length as the command line reads it: a string with a unit, or metres."""
+    return _quantity("a length", value, "metres")
 
 
 def roughness(
@@ -262,15 +267,6 @@ def merge(parts: Iterable[str], samples: Optional[int] = None) -> str:
     True
     """
     return _wearopt.merge_text(list(parts), samples)
-
-
-def _quantity(name: str, value: Any) -> Optional[str]:
-    """A quantity as the command line reads it: a string with a unit, or SI."""
-    if value is None or isinstance(value, str):
-        return value
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return repr(float(value))
-    raise TypeError(f"{name} must be a string with a unit or a number in SI units, not {type(value).__name__}")
 
 
 def fit_adhesion(
