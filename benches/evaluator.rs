@@ -109,11 +109,68 @@ fn dimensional(c: &mut Criterion) {
     g.finish();
 }
 
+/// Capillary adhesion (docs/model.md §10): P̄ and Ā at one h with a meniscus, and the
+/// humid hub (`problems/micro-gear-humid.toml`, RH = 50 %) against the same scene dry:
+/// the separation solve alone, and the whole evaluation (solve, pull-off and the
+/// apparent work of adhesion Γ, an integral over h).
+fn capillary(c: &mut Criterion) {
+    let mut g = c.benchmark_group("capillary");
+    let m = Model::with_law(
+        Coefficients::from_indices(184.0, 10.0),
+        AsperityLaw::Dmt(Attraction::VanDerWaals { range: 0.1 }),
+        Quadrature::default(),
+    );
+    let wet = m.with_capillary(Some(wearopt::model::Capillary {
+        range: 0.5,
+        wetting: 0.04,
+        flooded: 1.3,
+    }));
+    for (name, model) in [("dry", m), ("with a meniscus", wet)] {
+        g.bench_function(
+            format!("DMT van der Waals P̄, Ā theta=184 h=2, {name}"),
+            |b| {
+                b.iter(|| {
+                    let at = model.at(black_box(2.0));
+                    black_box((at.load(), at.area()))
+                })
+            },
+        );
+    }
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/");
+    let humid =
+        wearopt::problem::load(std::path::Path::new(&format!("{dir}micro-gear-humid.toml")))
+            .expect("shipped problem loads")
+            .scene;
+    let dry = wearopt::model::Scene {
+        environment: None,
+        requirements: wearopt::model::Requirements {
+            cantilever: None,
+            ..humid.requirements
+        },
+        ..humid.clone()
+    };
+    let solve_only = EvaluationOptions {
+        pull_off: false,
+        ..EvaluationOptions::default()
+    };
+    for (name, scene) in [("dry", &dry), ("RH 50 %", &humid)] {
+        g.bench_function(format!("micro-gear-humid {name}: separation solve"), |b| {
+            b.iter(|| black_box(evaluate(black_box(scene), &solve_only)))
+        });
+        g.bench_function(
+            format!("micro-gear-humid {name}: solve + pull-off (+ Γ)"),
+            |b| b.iter(|| black_box(evaluate(black_box(scene), &EvaluationOptions::default()))),
+        );
+    }
+    g.finish();
+}
+
 criterion_group!(
     benches,
     nondimensional,
     nondimensional_dmt,
     dimensional,
-    dimensional_dmt
+    dimensional_dmt,
+    capillary
 );
 criterion_main!(benches);

@@ -67,11 +67,17 @@ pub enum Dimension {
     Dimensionless,
     /// s (time limits).
     Time,
+    /// K (temperature).
+    Temperature,
+    /// rad (contact angles); read from "deg", "°" or "rad".
+    Angle,
+    /// m³/mol (a liquid's molar volume).
+    MolarVolume,
 }
 
 impl Dimension {
     /// Every dimension, for looking up which one a unit belongs to.
-    pub const ALL: [Dimension; 10] = [
+    pub const ALL: [Dimension; 13] = [
         Dimension::Pressure,
         Dimension::Force,
         Dimension::Length,
@@ -82,6 +88,9 @@ impl Dimension {
         Dimension::SurfaceEnergy,
         Dimension::Dimensionless,
         Dimension::Time,
+        Dimension::Temperature,
+        Dimension::Angle,
+        Dimension::MolarVolume,
     ];
 
     /// The dimension's name with an article: "a force".
@@ -97,6 +106,9 @@ impl Dimension {
             Dimension::SurfaceEnergy => "a surface energy",
             Dimension::Dimensionless => "a plain number",
             Dimension::Time => "a time",
+            Dimension::Temperature => "a temperature",
+            Dimension::Angle => "an angle",
+            Dimension::MolarVolume => "a molar volume",
         }
     }
 
@@ -113,6 +125,9 @@ impl Dimension {
             Dimension::SurfaceEnergy => "surface energy",
             Dimension::Dimensionless => "dimensionless number",
             Dimension::Time => "time",
+            Dimension::Temperature => "temperature",
+            Dimension::Angle => "angle",
+            Dimension::MolarVolume => "molar volume",
         }
     }
 
@@ -147,6 +162,11 @@ impl Dimension {
             }
             Dimension::Dimensionless => "a plain number without a unit, such as 1e-4",
             Dimension::Time => "a time such as \"30 s\", \"2 min\" or a number in seconds",
+            Dimension::Temperature => "a temperature such as \"298.15 K\" or a number in kelvin",
+            Dimension::Angle => "an angle such as \"20 deg\", \"0.35 rad\" or a number in radians",
+            Dimension::MolarVolume => {
+                "a molar volume such as \"18.07 cm^3/mol\" or a number in m^3/mol"
+            }
         }
     }
 }
@@ -170,5 +190,8 @@ pub fn symbol(dimension: Dimension) -> &'static str {
         Dimension::SurfaceEnergy => "J/m²",
         Dimension::Dimensionless => "",
         Dimension::Time => "s",
+        Dimension::Temperature => "K",
+        Dimension::Angle => "rad",
+        Dimension::MolarVolume => "m³/mol",
     }
 }

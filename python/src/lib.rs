@@ -109,6 +109,30 @@ fn pareto_json(
     })
 }
 
+/// `wearopt humidity FILE --from RH0 --to RH1 --points N --format json`.
+#[pyfunction]
+#[pyo3(signature = (source, is_path, from_, to, points))]
+fn humidity_json(
+    py: Python<'_>,
+    source: String,
+    is_path: bool,
+    from_: f64,
+    to: f64,
+    points: usize,
+) -> PyResult<String> {
+    detached(py, || {
+        let options = app::humidity::HumidityOptions {
+            from: from_,
+            to,
+            points,
+        };
+        options.validate().map_err(words)?;
+        let (problem, origin) = load(&source, is_path)?;
+        let doc = app::humidity::humidity(&problem, &origin, &options).map_err(words)?;
+        Ok(report::humidity::json(&doc))
+    })
+}
+
 /// The asperity law of `curve`'s keyword arguments.
 fn law(
     adhesion_model: &str,
@@ -459,6 +483,7 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(evaluate_json, m)?)?;
     m.add_function(wrap_pyfunction!(optimize_json, m)?)?;
     m.add_function(wrap_pyfunction!(pareto_json, m)?)?;
+    m.add_function(wrap_pyfunction!(humidity_json, m)?)?;
     m.add_function(wrap_pyfunction!(curve_arrays, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_text, m)?)?;
     m.add_function(wrap_pyfunction!(merge_text, m)?)?;

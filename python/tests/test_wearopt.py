@@ -417,3 +417,20 @@ def test_accuracy_equals_the_cli_json_but_for_times():
     timeless = lambda rows: [{k: v for k, v in r.items() if k != "time_per_eval_ns"} for r in rows]
     assert timeless(got["rows"]) == timeless(expected["rows"])
     assert got.keys() == expected.keys()
+
+
+def test_humidity_equals_cli_json_and_words_errors_as_keywords():
+    path = "problems/micro-gear-humid.toml"
+    expected = json.loads(
+        cli("humidity", path, "--from", "0", "--to", "0.9", "--points", "4", "--format", "json").stdout
+    )
+    got = wearopt.humidity(path, 0.0, 0.9, 4)
+    assert got == expected
+    assert [round(p["relative_humidity"], 2) for p in got["points"]] == [0.0, 0.3, 0.6, 0.9]
+    assert got["threshold_humidity"] is not None and 0.6 < got["threshold_humidity"] < 0.9
+    with pytest.raises(ValueError, match="^from=0.5 is above to=0.2"):
+        wearopt.humidity(path, 0.5, 0.2, 4)
+    with pytest.raises(ValueError, match=r"^points=1: must lie in 2..="):
+        wearopt.humidity(path, 0.0, 0.5, 1)
+    with pytest.raises(ValueError, match=r"^to=1: a relative humidity must lie in \[0, 1\)"):
+        wearopt.humidity(path, 0.0, 1.0, 4)

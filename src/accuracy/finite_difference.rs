@@ -90,6 +90,7 @@ pub fn ln_wear_rate(scene: &Scene, quadrature: Quadrature) -> Option<f64> {
         &EvaluationOptions {
             pull_off: false,
             quadrature,
+            work_of_adhesion: false,
         },
     );
     (ev.status == Status::Ok && ev.log10_wear_rate.is_finite()).then(|| {
@@ -166,6 +167,7 @@ pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
         &EvaluationOptions {
             pull_off: false,
             quadrature: Quadrature::default(),
+            work_of_adhesion: false,
         },
     );
     let h0 = fast

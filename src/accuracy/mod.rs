@@ -406,6 +406,7 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
         let eval_options = EvaluationOptions {
             pull_off: false,
             quadrature: q,
+            work_of_adhesion: false,
         };
         let (mut ew, mut tw) = (Vec::new(), Vec::new());
         for (sc, want) in &wear_scenes {
@@ -630,6 +631,7 @@ pub fn dmt_rows(kind: AttractionKind, scenes: &[Scene], repetitions: usize) -> D
     let options = EvaluationOptions {
         pull_off: false,
         quadrature: q,
+        work_of_adhesion: false,
     };
     let (mut ew, mut tw) = (Vec::new(), Vec::new());
     for s in scenes {

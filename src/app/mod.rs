@@ -20,6 +20,7 @@ pub mod curve;
 pub mod eval;
 pub mod figures;
 pub mod fit_adhesion;
+pub mod humidity;
 pub mod optimize;
 pub mod pareto;
 pub mod roughness;

@@ -68,6 +68,14 @@ Example:\n  wearopt figures\n  wearopt figures --out figs --points 101 --format 
 wearopt fit-adhesion data.csv --radius \"1 mm\" --fit-mu --format json"
     )]
     FitAdhesion(fit_adhesion::FitAdhesionArgs),
+    /// The scene across relative humidity (capillary adhesion): separation, capillary load, pull-off force, apparent work of adhesion Γ, wet fraction and wear rate, and the threshold humidity where Γ reaches ten times its dry value.
+    #[command(
+        after_help = "Columns: relative_humidity, separation, capillary_load, pull_off_force, apparent_work_of_adhesion, wetted_fraction, wear_rate, status.\n\
+The air is the file's [environment] (its relative_humidity is replaced), or water at 25 °C wetting both bodies when it has none.\n\
+Example:\n  wearopt humidity problems/micro-gear-humid.toml --from 0 --to 0.95 --points 20\n  \
+wearopt humidity problems/micro-gear-humid.toml --from 0 --to 0.95 --points 20 --format csv --plot humidity.svg"
+    )]
+    Humidity(HumidityArgs),
     /// Search the design variables of a study for the least wear under its constraints.
     #[command(
         after_help = "Example:\n  wearopt optimize problems/micro-gear-study.toml\n  \
@@ -122,6 +130,28 @@ Example:\n  wearopt curve --theta 10 --lambda 0.125 --from -2 --to 4 --points 61
 wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json   (Greenwood-Williamson)"
     )]
     Curve(CurveArgs),
+}
+
+/// Arguments of `wearopt humidity`.
+#[derive(Debug, clap::Args)]
+pub struct HumidityArgs {
+    /// The problem file (TOML).
+    pub file: PathBuf,
+    /// The first relative humidity, in [0, 1) (0.5 is 50 %).
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: f64,
+    /// The last relative humidity (inclusive), in [--from, 1).
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: f64,
+    /// Number of evenly spaced humidities, 2 or more.
+    #[arg(long)]
+    pub points: usize,
+    /// Output format.
+    #[arg(long, value_parser = format::formats("humidity", report::humidity::FORMATS), default_value = "text")]
+    pub format: Format,
+    /// Also write the plot of Γ and the pull-off force against RH (SVG).
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
 }
 
 /// Arguments of `wearopt curve`.
@@ -197,6 +227,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::Roughness(args) => roughness::run(args),
         Command::FitAdhesion(args) => fit_adhesion::run(args),
         Command::Curve(args) => curve(args),
+        Command::Humidity(args) => humidity(args),
     }
 }
 
@@ -305,6 +336,22 @@ fn curve(args: CurveArgs) -> Result<ExitCode> {
         },
     })?;
     print_out(&report::curve::render(&doc, args.format)?)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+fn humidity(args: HumidityArgs) -> Result<ExitCode> {
+    let options = app::humidity::HumidityOptions {
+        from: args.from,
+        to: args.to,
+        points: args.points,
+    };
+    options.validate()?;
+    let problem = app::load(&args.file)?;
+    let doc = app::humidity::humidity(&problem, &args.file.display().to_string(), &options)?;
+    if let Some(path) = &args.plot {
+        write_output(path, &report::humidity::plot_svg(&doc), "the plot")?;
+    }
+    print_out(&report::humidity::render(&doc, args.format)?)?;
     Ok(ExitCode::SUCCESS)
 }
 

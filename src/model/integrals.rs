@@ -12,6 +12,7 @@
 //! bounded amount. Everything else is closed form in erfc/erfcx. Every result is
 //! a mantissa scaled by `e^{κ(h)}`, κ(h) = max(h,0)²/2.
 
+use super::capillary::{Capillary, CapillaryShare};
 use super::coefficients::{Coefficients, Transition};
 use super::dmt::{hertz, noncontact, Noncontact};
 use super::gauss;
@@ -51,6 +52,8 @@ pub struct Model {
     s_touch: f64,
     /// s0³ (= c_d to an ulp), the constant of the cancellation-free Δ(v).
     c_d_cubed: f64,
+    /// The capillary term of docs/model.md §9 (None: dry, or no meniscus).
+    pub capillary: Option<Capillary>,
 }
 
 /// Everything the model says at one separation h. Every field named as an
@@ -93,6 +96,9 @@ pub struct Integrals {
     /// (Dugdale beyond its reach, where both are large: Δ_h (h - Δ_h/2)); None
     /// where the difference of the two fields is exact enough.
     pub noncontact_gap: Option<f64>,
+    /// The capillary load of docs/model.md §9 and its derivatives, at their own
+    /// scale (all 0 without a meniscus).
+    pub capillary: CapillaryShare,
 }
 
 impl Integrals {
@@ -112,9 +118,25 @@ impl Integrals {
             _ => c.plus(Scaled::new(noncontact, self.noncontact_exponent)),
         }
     }
-    /// P̄(h), contact and non-contact shares together.
+    fn with_capillary(&self, solid: Scaled, capillary: f64) -> Scaled {
+        if capillary == 0.0 {
+            solid
+        } else {
+            solid.plus(Scaled::new(capillary, self.capillary.exponent))
+        }
+    }
+    /// P̄(h): the solid law's contact and non-contact shares and the capillary load.
     pub fn load(&self) -> Scaled {
+        self.with_capillary(self.solid_load(), self.capillary.load)
+    }
+    /// The solid law's P̄(h), contact and non-contact shares together (without the
+    /// capillary load).
+    pub fn solid_load(&self) -> Scaled {
         self.with_noncontact(self.load_elastic + self.load_plastic, self.load_noncontact)
+    }
+    /// The capillary load P̄_cap(h) (≤ 0; 0 without a meniscus).
+    pub fn capillary_load(&self) -> Scaled {
+        Scaled::new(self.capillary.load, self.capillary.exponent)
     }
     /// The share of P̄ carried by asperities in contact.
     pub fn contact_load(&self) -> Scaled {
@@ -124,20 +146,31 @@ impl Integrals {
     pub fn noncontact_load(&self) -> Scaled {
         Scaled::new(self.load_noncontact, self.noncontact_exponent)
     }
-    /// True when the law has a non-contact term here (DMT with adhesion).
+    /// True when a term beside the contacts acts here: DMT's attraction with
+    /// adhesion, or a capillary load.
     pub fn has_noncontact(&self) -> bool {
-        self.load_noncontact != 0.0 || self.dload_dh_noncontact != 0.0
+        self.load_noncontact != 0.0 || self.dload_dh_noncontact != 0.0 || self.has_capillary()
+    }
+    /// True when a capillary load acts here.
+    pub fn has_capillary(&self) -> bool {
+        self.capillary.load != 0.0 || self.capillary.dload_dh != 0.0
     }
     /// dP̄/dh.
     pub fn dload_dh(&self) -> Scaled {
-        self.with_noncontact(
-            self.dload_dh_elastic + self.dload_dh_plastic,
-            self.dload_dh_noncontact,
+        self.with_capillary(
+            self.with_noncontact(
+                self.dload_dh_elastic + self.dload_dh_plastic,
+                self.dload_dh_noncontact,
+            ),
+            self.capillary.dload_dh,
         )
     }
     /// d²P̄/dh².
     pub fn d2load_dh2(&self) -> Scaled {
-        self.with_noncontact(self.d2load_dh2, self.d2load_dh2_noncontact)
+        self.with_capillary(
+            self.with_noncontact(self.d2load_dh2, self.d2load_dh2_noncontact),
+            self.capillary.d2load_dh2,
+        )
     }
     /// Ā(h).
     pub fn area(&self) -> Scaled {
@@ -196,7 +229,18 @@ impl Model {
             quadrature,
             s_touch: contact.c_d.cbrt(),
             c_d_cubed: contact.c_d.cbrt().powi(3),
+            capillary: None,
         }
+    }
+
+    /// This model with a capillary term (docs/model.md §9) added to its load.
+    pub fn with_capillary(self, capillary: Option<Capillary>) -> Self {
+        Model { capillary, ..self }
+    }
+
+    /// True when P̄ has a tensile part: γ > 0 or a meniscus.
+    pub fn has_adhesion(&self) -> bool {
+        self.coefficients.has_adhesion() || self.capillary.is_some()
     }
 
     /// Δc, the actual critical interference (∞ without plasticity).
@@ -254,6 +298,9 @@ impl Model {
     /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
         let mut out = self.contact_at(h);
+        if let Some(c) = &self.capillary {
+            out.capillary = c.at(h);
+        }
         if let AsperityLaw::Dmt(attraction) = self.law {
             let n: Noncontact = noncontact(attraction, self.coefficients.c_0, h);
             out.load_noncontact = n.load;
@@ -296,6 +343,7 @@ impl Model {
             d2load_dh2_noncontact: 0.0,
             noncontact_exponent: 0.0,
             noncontact_gap: None,
+            capillary: CapillaryShare::ZERO,
         };
         // φ̄'s tail and value at u_c = h + Δc (scaled by e^{κ(h)}; 0 beyond the
         // weight's range or without plasticity), and u_c φ̄(u_c).

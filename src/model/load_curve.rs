@@ -3,10 +3,8 @@
 
 use serde::Serialize;
 
-use super::integrals::Model;
-use super::law::AsperityLaw;
 use super::scene::Scene;
-use super::wear::{coefficients, Evaluation, EvaluationOptions};
+use super::wear::{Evaluation, EvaluationOptions};
 
 /// W(d) sampled on evenly spaced separations.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -28,13 +26,7 @@ pub fn load_curve(
     options: &EvaluationOptions,
     points: usize,
 ) -> LoadCurve {
-    let law = AsperityLaw::of(
-        scene.adhesion_model,
-        scene.attraction,
-        scene.interatomic_distance,
-        scene.sigma,
-    );
-    let model = Model::with_law(coefficients(scene), law, options.quadrature);
+    let model = super::wear::model_of(scene, options.quadrature);
     let s = scene.sigma;
     let h_op = evaluation.nondimensional_separation;
     let h_po = evaluation.nondimensional_pull_off_separation;

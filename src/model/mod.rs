@@ -9,6 +9,7 @@
 //! Gaussian special functions (`special`).
 
 pub mod asperity;
+pub mod capillary;
 pub mod coefficients;
 pub(crate) mod dmt;
 pub mod gauss;
@@ -25,7 +26,9 @@ pub mod separation;
 pub(crate) mod special;
 pub mod warnings;
 pub mod wear;
+pub mod work;
 
+pub use capillary::{Capillary, Environment, Liquid, Meniscus};
 pub use coefficients::{Coefficients, DomainError, Transition};
 pub use integrals::{Integrals, Model};
 pub use law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};
@@ -34,7 +37,7 @@ pub use material::Material;
 pub use parameter::SceneParameter;
 pub use quadrature::Quadrature;
 pub use scaled::Scaled;
-pub use scene::{InputError, Requirements, Scene, WearArea};
+pub use scene::{Cantilever, InputError, Requirements, Scene, WearArea};
 pub use sensitivity::{sensitivities, Sensitivity, SensitivityGap};
 pub use separation::{
     find_pull_off, landscape, landscape_from, pull_off_of, solve_separation, solve_separation_at,

@@ -43,6 +43,15 @@ pub enum SceneParameter {
     Load,
     /// Z0, the interatomic (equilibrium) distance (m).
     InteratomicDistance,
+    /// θ, the liquid's contact angle on both bodies (rad; docs/model.md §10): body a's
+    /// is read, both are set.
+    ContactAngle,
+    /// θ_a, the contact angle on body a alone (rad).
+    ContactAngleA,
+    /// θ_b, the contact angle on body b alone (rad).
+    ContactAngleB,
+    /// T, the temperature of the air and the liquid (K).
+    Temperature,
 }
 
 /// One row of the table.
@@ -59,7 +68,7 @@ struct Row {
 
 impl SceneParameter {
     /// Every parameter, in table order.
-    pub const ALL: [SceneParameter; 12] = [
+    pub const ALL: [SceneParameter; 16] = [
         SceneParameter::YoungsModulus,
         SceneParameter::YoungsModulusA,
         SceneParameter::YoungsModulusB,
@@ -72,11 +81,15 @@ impl SceneParameter {
         SceneParameter::NominalArea,
         SceneParameter::Load,
         SceneParameter::InteratomicDistance,
+        SceneParameter::ContactAngle,
+        SceneParameter::ContactAngleA,
+        SceneParameter::ContactAngleB,
+        SceneParameter::Temperature,
     ];
 
     /// The parameters a design may move (the keys of `[design]`), in the order
     /// problem files and messages list them.
-    pub const DESIGN: [SceneParameter; 9] = [
+    pub const DESIGN: [SceneParameter; 13] = [
         SceneParameter::YoungsModulus,
         SceneParameter::YoungsModulusA,
         SceneParameter::YoungsModulusB,
@@ -86,6 +99,10 @@ impl SceneParameter {
         SceneParameter::Sigma,
         SceneParameter::AsperityRadius,
         SceneParameter::AsperityDensity,
+        SceneParameter::ContactAngle,
+        SceneParameter::ContactAngleA,
+        SceneParameter::ContactAngleB,
+        SceneParameter::Temperature,
     ];
 
     /// The parameters of the wear rate's elasticities, in report order.
@@ -194,6 +211,14 @@ impl SceneParameter {
                 false,
                 Some((5e-11, 2e-9)),
             ),
+            SceneParameter::ContactAngle => row("contact_angle", "θ", Angle, true, false, None),
+            SceneParameter::ContactAngleA => {
+                row("contact_angle_a", "θ_a", Angle, true, false, None)
+            }
+            SceneParameter::ContactAngleB => {
+                row("contact_angle_b", "θ_b", Angle, true, false, None)
+            }
+            SceneParameter::Temperature => row("temperature", "T", Temperature, true, false, None),
         }
     }
 
@@ -233,7 +258,8 @@ impl SceneParameter {
     }
 
     /// Its value in `scene` (SI; |W| for the load; body a's for a shared modulus or
-    /// Poisson ratio).
+    /// Poisson ratio; the dry air's defaults for the environment's values of a scene
+    /// without one).
     pub fn get(self, s: &Scene) -> f64 {
         match self {
             SceneParameter::YoungsModulus | SceneParameter::YoungsModulusA => s.youngs_modulus_a,
@@ -247,13 +273,19 @@ impl SceneParameter {
             SceneParameter::NominalArea => s.nominal_area,
             SceneParameter::Load => s.load.abs(),
             SceneParameter::InteratomicDistance => s.interatomic_distance,
+            SceneParameter::ContactAngle | SceneParameter::ContactAngleA => {
+                s.environment.unwrap_or_default().contact_angle_a
+            }
+            SceneParameter::ContactAngleB => s.environment.unwrap_or_default().contact_angle_b,
+            SceneParameter::Temperature => s.environment.unwrap_or_default().temperature,
         }
     }
 
     /// Sets its value in `scene` (SI). `youngs_modulus` and `poisson_ratio` move
     /// body b's value too when the bodies share modulus and Poisson ratio (one film
     /// on itself), as a design variable and a sensitivity both mean them; the load
-    /// keeps its sign.
+    /// keeps its sign. An environment's value set on a dry scene gives it dry air
+    /// (RH = 0) with that value.
     pub fn set(self, s: &mut Scene, value: f64) {
         let shared =
             s.youngs_modulus_b == s.youngs_modulus_a && s.poisson_ratio_b == s.poisson_ratio_a;
@@ -280,6 +312,26 @@ impl SceneParameter {
             SceneParameter::NominalArea => s.nominal_area = value,
             SceneParameter::Load => s.load = value.copysign(s.load),
             SceneParameter::InteratomicDistance => s.interatomic_distance = value,
+            SceneParameter::ContactAngle => {
+                let env = s.environment.get_or_insert_with(Default::default);
+                env.contact_angle_a = value;
+                env.contact_angle_b = value;
+            }
+            SceneParameter::ContactAngleA => {
+                s.environment
+                    .get_or_insert_with(Default::default)
+                    .contact_angle_a = value
+            }
+            SceneParameter::ContactAngleB => {
+                s.environment
+                    .get_or_insert_with(Default::default)
+                    .contact_angle_b = value
+            }
+            SceneParameter::Temperature => {
+                s.environment
+                    .get_or_insert_with(Default::default)
+                    .temperature = value
+            }
         }
     }
 }

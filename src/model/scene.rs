@@ -2,6 +2,7 @@
 
 use serde::Serialize;
 
+use super::capillary::Environment;
 use super::law::{AdhesionModel, AttractionKind};
 
 /// Which real area wears (paper eq. 13): all contacts, or only the plastic
@@ -66,6 +67,10 @@ pub struct Scene {
     /// Under DMT: how non-contacting asperities are attracted (ignored under JKR).
     #[serde(skip)]
     pub attraction: AttractionKind,
+    /// The humid air around the contact (docs/model.md §9: the problem file's
+    /// `[environment]`); None is dry air, the paper's scene.
+    #[serde(skip)]
+    pub environment: Option<Environment>,
 }
 
 /// The optional inputs of the numbers a designer decides on: life, stiction, friction.
@@ -79,6 +84,35 @@ pub struct Requirements {
     pub restoring_force: Option<f64>,
     /// τ, the shear strength of the junctions (Pa), > 0: friction F = τ A_r (Bowden–Tabor).
     pub shear_strength: Option<f64>,
+    /// A cantilever beam held down by the interface: turns the apparent work of
+    /// adhesion into the longest beam that comes free (de Boer & Michalske 1999).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cantilever: Option<Cantilever>,
+}
+
+/// A cantilever beam over the contact (the `[stiction] cantilever` table), SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Cantilever {
+    /// t, the beam's thickness (m), > 0.
+    pub thickness: f64,
+    /// h_g, the gap under the beam (m), > 0.
+    pub gap: f64,
+    /// E_b, the beam's Young's modulus (Pa), > 0.
+    pub youngs_modulus: f64,
+}
+
+impl Cantilever {
+    /// l_c = (3 E_b t³ h_g² / (2Γ))^{1/4}: the longest beam that does not stay stuck
+    /// in an S-shape at an apparent work of adhesion Γ (J/m²); None for Γ ≤ 0
+    /// (every length comes free).
+    pub fn detachment_length(&self, work_of_adhesion: f64) -> Option<f64> {
+        let (t, g) = (self.thickness, self.gap);
+        (work_of_adhesion > 0.0).then(|| {
+            (1.5 * self.youngs_modulus * t * t * t * g * g / work_of_adhesion)
+                .sqrt()
+                .sqrt()
+        })
+    }
 }
 
 /// A scene or quadrature setting the model cannot use: the field, its value and
@@ -165,6 +199,60 @@ impl Scene {
         ] {
             if let Some(x) = value {
                 check(field, x, positive(x), POSITIVE)?;
+            }
+        }
+        if let Some(c) = r.cantilever {
+            for (field, value) in [
+                ("requirements.cantilever.thickness", c.thickness),
+                ("requirements.cantilever.gap", c.gap),
+                ("requirements.cantilever.youngs_modulus", c.youngs_modulus),
+            ] {
+                check(field, value, positive(value), POSITIVE)?;
+            }
+        }
+        if let Some(env) = &self.environment {
+            let rh = env.relative_humidity;
+            check(
+                "environment.relative_humidity",
+                rh,
+                (0.0..1.0).contains(&rh),
+                "in [0, 1)",
+            )?;
+            let t = env.temperature;
+            check(
+                "environment.temperature",
+                t,
+                positive(t),
+                "finite and > 0 K",
+            )?;
+            for (field, value) in [
+                ("environment.contact_angle_a", env.contact_angle_a),
+                ("environment.contact_angle_b", env.contact_angle_b),
+            ] {
+                check(
+                    field,
+                    value,
+                    (0.0..=std::f64::consts::PI).contains(&value),
+                    "in [0, π] rad (0° to 180°)",
+                )?;
+            }
+            if let super::capillary::Liquid::Given {
+                surface_tension,
+                molar_volume,
+            } = env.liquid
+            {
+                check(
+                    "environment.liquid.surface_tension",
+                    surface_tension,
+                    positive(surface_tension),
+                    POSITIVE,
+                )?;
+                check(
+                    "environment.liquid.molar_volume",
+                    molar_volume,
+                    positive(molar_volume),
+                    POSITIVE,
+                )?;
             }
         }
         Ok(())

@@ -58,6 +58,7 @@ pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensit
     let options = EvaluationOptions {
         pull_off: false,
         quadrature,
+        work_of_adhesion: false,
     };
     let ln_wear = |sc: &Scene| -> Option<f64> {
         let ev = evaluate(sc, &options);

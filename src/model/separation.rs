@@ -189,7 +189,7 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     };
     let c = model.coefficients;
     let jump = model.transition.jump;
-    if !c.has_adhesion() && jump >= 0.0 {
+    if !model.has_adhesion() && jump >= 0.0 {
         // P̄' < 0 everywhere: no critical point.
         return Landscape {
             critical_points: Vec::new(),
@@ -213,11 +213,18 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         f.minus(bump).signum()
     };
     // The large-h expansion puts the minimum near h ≈ p'(0)/|p(0)| = (3/2) c_d^{-1/3}/c_a.
-    let guess = match model.law {
-        _ if !c.has_adhesion() => 1.0,
+    let law_guess = match model.law {
+        _ if !c.has_adhesion() => f64::INFINITY,
         super::law::AsperityLaw::Jkr => (1.5 / (c.c_d.cbrt() * c.c_a)).clamp(0.5, 1e6),
         // The minimum lies within a few units of the attraction's reach.
         super::law::AsperityLaw::Dmt(a) => 1.0 + a.range().min(1e3),
+    };
+    // A meniscus reaches k = d_K/σ: the minimum lies within a few units of it too,
+    // or nearer where the solid law's own minimum is.
+    let guess = match model.capillary {
+        Some(cap) => law_guess.min(1.0 + cap.range.min(1e3)),
+        None if law_guess.is_finite() => law_guess,
+        None => 1.0,
     };
     if neg_jump == 0.0 {
         // One sign change of P̄': Newton on P̄' with P̄'' from the quadrature.
@@ -245,7 +252,10 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     let mut left_h = if neg_jump > 0.0 {
         // For h ≤ -Δc: P̄' ≤ (|p(0)| + |J|) φ(u_c) - c_p √(π/2), negative once
         // φ(u_c) < c_p √(π/2) / (|p(0)| + |J|).
-        let ratio = (-c.load_at_touch() + neg_jump) / (c.c_p * super::special::SQRT_HALF_PI);
+        // A meniscus adds P̄_cap' ≤ c_cap φ(h) ≤ c_cap φ(u_c) there (capillary.rs).
+        let capillary = model.capillary.map_or(0.0, |cap| cap.independent());
+        let ratio =
+            (-c.load_at_touch() + neg_jump + capillary) / (c.c_p * super::special::SQRT_HALF_PI);
         let u_left = if ratio > 1.0 {
             -(2.0 * ratio.ln()).sqrt()
         } else {
@@ -460,6 +470,22 @@ fn steady(a: f64, b: f64, c: f64) -> bool {
 /// Waals). None where the form does not apply (the caller's Newton on P̄' then).
 fn balance_newton(at: &Integrals) -> Option<f64> {
     let s_c = at.dload_dh_elastic + at.dload_dh_plastic;
+    if at.has_capillary() {
+        // The attracted share is the attraction's and the meniscus's together,
+        // each at its own scale: the same φ, in scaled arithmetic.
+        let contact = Scaled::new(s_c, at.scale_exponent);
+        let attracted = Scaled::new(at.dload_dh_noncontact, at.noncontact_exponent)
+            .plus(Scaled::new(at.capillary.dload_dh, at.capillary.exponent));
+        if !(s_c < 0.0 && attracted.mantissa > 0.0) {
+            return None;
+        }
+        let attracted_d2 = Scaled::new(at.d2load_dh2_noncontact, at.noncontact_exponent)
+            .plus(Scaled::new(at.capillary.d2load_dh2, at.capillary.exponent));
+        let phi = contact.ln_abs() - attracted.ln_abs();
+        let dphi = at.d2load_dh2 / s_c - attracted_d2.ratio(attracted);
+        let next = at.separation - phi / dphi;
+        return (dphi < 0.0 && next.is_finite()).then_some(next);
+    }
     let s_n = at.dload_dh_noncontact;
     if !(s_c < 0.0 && s_n > 0.0) {
         return None;
@@ -588,7 +614,6 @@ pub fn solve_separation_at(
         model,
         evaluations: 0,
     };
-    let c = model.coefficients;
     if target.is_nan() || target.abs() > MAX_LOAD {
         // Beyond any contact the model describes (h would be below -1e8), or
         // not a number: no search, an honest outcome.
@@ -600,7 +625,7 @@ pub fn solve_separation_at(
             None,
         );
     }
-    if target <= 0.0 && !c.has_adhesion() {
+    if target <= 0.0 && !model.has_adhesion() {
         return (SeparationOutcome::Separated { evaluations: 0 }, None);
     }
     if target > 0.0 && model.transition.jump >= 0.0 {

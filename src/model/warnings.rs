@@ -78,6 +78,12 @@ pub enum Warning {
         /// The plausible range (SI).
         plausible_max: f64,
     },
+    /// The Kelvin radius is below 0.5 nm (RH ≲ 35 % for water at 25 °C): the
+    /// continuum Kelvin and Laplace equations of docs/model.md §9 are doubtful there.
+    KelvinRadiusBelowContinuum {
+        /// r_K (m).
+        kelvin_radius: f64,
+    },
     /// The scene has adhesion but the pull-off search found no minimum of P̄(h)
     /// (not expected: docs/model.md §4 proves there is one; reported, not hidden).
     PullOffNotFound {

@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
+use super::capillary::{Capillary, Environment};
 use super::integrals::Model;
 use super::law::{AdhesionModel, AsperityLaw, AttractionKind};
 use super::quadrature::Quadrature;
@@ -25,6 +26,10 @@ pub struct EvaluationOptions {
     pub pull_off: bool,
     /// Quadrature settings of the elastic integral.
     pub quadrature: Quadrature,
+    /// In humid air (or with a cantilever), also the apparent work of adhesion Γ, an
+    /// integral of the load over the separation (about a hundred model evaluations:
+    /// `eval` asks for it, studies and sensitivities do not). Needs `pull_off`.
+    pub work_of_adhesion: bool,
 }
 
 /// Starting points for the separation and pull-off searches (non-dimensional
@@ -43,6 +48,7 @@ impl Default for EvaluationOptions {
         EvaluationOptions {
             pull_off: true,
             quadrature: Quadrature::default(),
+            work_of_adhesion: true,
         }
     }
 }
@@ -197,6 +203,41 @@ pub struct Evaluation {
     /// For 0.3 ≤ φ0 ≤ 3, where neither law is exact: the other law's numbers.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub other_model: Option<OtherModel>,
+    /// Capillary adhesion (docs/model.md §9): present when the scene has an
+    /// `[environment]` or a cantilever; its keys sit at the top level.
+    #[serde(flatten)]
+    pub humidity: Option<Humidity>,
+}
+
+/// The humid air's numbers at the operating point (docs/model.md §9), SI.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Humidity {
+    /// RH, 0 to below 1.
+    pub relative_humidity: f64,
+    /// T (K).
+    pub temperature: f64,
+    /// γ_L of the liquid at T (N/m).
+    pub surface_tension: f64,
+    /// θ_a (rad).
+    pub contact_angle_a: f64,
+    /// θ_b (rad).
+    pub contact_angle_b: f64,
+    /// r_K (m); None without a meniscus (RH = 0, or cos θ_a + cos θ_b ≤ 0).
+    pub kelvin_radius: Option<f64>,
+    /// d_K = r_K (cos θ_a + cos θ_b), the widest gap the liquid bridges (m).
+    pub meniscus_height: Option<f64>,
+    /// Δp = γ_L / r_K (Pa).
+    pub laplace_pressure: Option<f64>,
+    /// P_cap A_n at the operating point (N, ≤ 0); None when separated.
+    pub capillary_load: Option<f64>,
+    /// 1 - e^{-F_w}, the wet fraction of the nominal area; None when separated.
+    pub wetted_fraction: Option<f64>,
+    /// Γ = -∫_{d0}^∞ (P_solid + P_cap) dd from the unloaded equilibrium (J/m²): what
+    /// a cantilever-beam test measures; None when the pull-off is not computed.
+    pub apparent_work_of_adhesion: Option<f64>,
+    /// The longest cantilever of the scene's thickness and gap that comes free (m);
+    /// None without a cantilever, or where Γ is not computed or 0.
+    pub detachment_length: Option<f64>,
 }
 
 impl Evaluation {
@@ -361,7 +402,14 @@ pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evalua
             adhesion_model: other,
             ..scene.clone()
         };
-        let o = evaluate(&other_scene, options);
+        // Its headline numbers only: no Γ integral.
+        let o = evaluate(
+            &other_scene,
+            &EvaluationOptions {
+                work_of_adhesion: false,
+                ..*options
+            },
+        );
         ev.other_model = Some(OtherModel {
             adhesion_model: other_scene.adhesion_model,
             status: o.status,
@@ -374,18 +422,46 @@ pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evalua
     ev
 }
 
-/// As [`evaluate`], starting the searches from `hints`.
-pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHints) -> Evaluation {
-    let e = equivalent_modulus(scene);
-    let k = 4.0 / 3.0 * e;
-    let coeffs = coefficients(scene);
+/// The air an evaluation reports on: the scene's `[environment]`, or dry air when it
+/// has only a cantilever (whose detachment length needs Γ); None for a dry scene.
+fn environment_of(scene: &Scene) -> Option<Environment> {
+    scene.environment.or(scene
+        .requirements
+        .cantilever
+        .map(|_| Environment::default()))
+}
+
+/// The non-dimensional model of a scene: its asperity law, with the capillary term
+/// of docs/model.md §10 where its environment condenses a meniscus.
+pub fn model_of(scene: &Scene, quadrature: super::Quadrature) -> Model {
     let law = AsperityLaw::of(
         scene.adhesion_model,
         scene.attraction,
         scene.interatomic_distance,
         scene.sigma,
     );
-    let model = Model::with_law(coeffs, law, options.quadrature);
+    let k = 4.0 / 3.0 * equivalent_modulus(scene);
+    let capillary = environment_of(scene).and_then(|e| e.meniscus()).map(|m| {
+        Capillary::new(
+            &m,
+            k,
+            scene.sigma,
+            scene.asperity_radius,
+            scene.asperity_density,
+        )
+    });
+    Model::with_law(coefficients(scene), law, quadrature).with_capillary(capillary)
+}
+
+/// As [`evaluate`], starting the searches from `hints`.
+pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHints) -> Evaluation {
+    let e = equivalent_modulus(scene);
+    let k = 4.0 / 3.0 * e;
+    let coeffs = coefficients(scene);
+    let env = environment_of(scene);
+    let meniscus = env.and_then(|e| e.meniscus());
+    let model = model_of(scene, options.quadrature);
+    let adhesive = model.has_adhesion();
     let idx = indices(scene);
     let reg = regime(&idx, coeffs.has_adhesion());
     let (r, s, n, an) = (
@@ -428,15 +504,20 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
     if model.transition.jump < 0.0 {
         notes.push(Note::LoadDropsAtTransition);
     }
+    if let Some(m) = meniscus.filter(|m| m.kelvin_radius < super::capillary::MIN_KELVIN_RADIUS) {
+        warnings.push(Warning::KelvinRadiusBelowContinuum {
+            kelvin_radius: m.kelvin_radius,
+        });
+    }
 
     // The critical points of P̄(h): needed for the pull-off, for a tensile load,
     // and where the load law jumps down (several branches).
-    let need_landscape = coeffs.has_adhesion()
-        && (options.pull_off || scene.load <= 0.0 || model.transition.jump < 0.0);
+    let need_landscape =
+        adhesive && (options.pull_off || scene.load <= 0.0 || model.transition.jump < 0.0);
     let land = need_landscape.then(|| landscape_from(&model, hints.pull_off));
     let mut evaluations = land.as_ref().map_or(0, |l| l.evaluations);
     let mut pull_off: Option<PullOff> = land.as_ref().and_then(pull_off_of);
-    if coeffs.has_adhesion() && (options.pull_off || scene.load <= 0.0) {
+    if adhesive && (options.pull_off || scene.load <= 0.0) {
         // No accepted scene reports a silent null: a minimum the model cannot
         // resolve (|h| > 1e6, where P̄'s shares cancel below ε) or none at all is a warning.
         let limit = super::coefficients::MAX_SEPARATION;
@@ -486,9 +567,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         }
     };
     if status == Status::Separated {
-        notes.push(Note::Separated {
-            adhesion: coeffs.has_adhesion(),
-        });
+        notes.push(Note::Separated { adhesion: adhesive });
     }
 
     let (pull_off_force, log10_pull_off_force, pull_off_separation) = match &pull_off {
@@ -506,7 +585,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
                 Some(p.separation * s),
             )
         }
-        _ if !coeffs.has_adhesion() => (Some(0.0), None, None),
+        _ if !adhesive => (Some(0.0), None, None),
         _ => (None, None, None),
     };
 
@@ -592,6 +671,47 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
             .then(|| 12.0 * PI * scene.interatomic_distance.powi(2) * scene.work_of_adhesion),
         noncontact_load: at.map(|a| a.noncontact_load().scale(load_scale).value()),
         other_model: None,
+        humidity: None,
+    };
+    let humidity = env.map(|env| {
+        // Γ from the unloaded equilibrium (the tensile rule's root of P̄ = 0),
+        // when the pull-off (and so the landscape) is computed.
+        let work = if !adhesive {
+            Some(0.0)
+        } else if options.pull_off && options.work_of_adhesion {
+            match solve_separation_at(&model, 0.0, land.as_ref(), None).0 {
+                SeparationOutcome::Contact { separation, .. } => {
+                    let (w, _) = super::work::work_of_separation(&model, separation);
+                    Some(w * load_scale / an * s)
+                }
+                SeparationOutcome::Separated { .. } => Some(0.0),
+                SeparationOutcome::NotConverged { .. } => None,
+            }
+        } else {
+            None
+        };
+        Humidity {
+            relative_humidity: env.relative_humidity,
+            temperature: env.temperature,
+            surface_tension: env.liquid.surface_tension(env.temperature),
+            contact_angle_a: env.contact_angle_a,
+            contact_angle_b: env.contact_angle_b,
+            kelvin_radius: meniscus.map(|m| m.kelvin_radius),
+            meniscus_height: meniscus.map(|m| m.height),
+            laplace_pressure: meniscus.map(|m| m.laplace_pressure),
+            capillary_load: at.map(|a| a.capillary_load().scale(load_scale).value()),
+            wetted_fraction: at.map(|a| a.capillary.wetted_fraction),
+            apparent_work_of_adhesion: work,
+            detachment_length: scene
+                .requirements
+                .cantilever
+                .zip(work)
+                .and_then(|(c, w)| c.detachment_length(w)),
+        }
+    });
+    let evaluation = Evaluation {
+        humidity,
+        ..evaluation
     };
     with_contact_checks(with_designer_numbers(evaluation, scene))
 }

@@ -71,8 +71,16 @@ impl DesignSpace {
                     quantity: d.name,
                     min: d.min,
                     max: d.max,
-                    // Poisson ratios may be negative: always linear.
-                    logarithmic: d.min > 0.0 && d.name != SceneParameter::PoissonRatio,
+                    // Poisson ratios may be negative, and contact angles are
+                    // read on a linear scale (cos θ drives the meniscus): linear.
+                    logarithmic: d.min > 0.0
+                        && !matches!(
+                            d.name,
+                            SceneParameter::PoissonRatio
+                                | SceneParameter::ContactAngle
+                                | SceneParameter::ContactAngleA
+                                | SceneParameter::ContactAngleB
+                        ),
                 })
                 .collect(),
             baseline: baseline.clone(),

@@ -288,6 +288,8 @@ impl StudyFunctions {
             options: EvaluationOptions {
                 pull_off,
                 quadrature: Quadrature::default(),
+                // No objective or constraint reads Γ: the integral is not needed.
+                work_of_adhesion: false,
             },
         }
     }

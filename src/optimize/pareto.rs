@@ -1062,6 +1062,7 @@ pub fn pareto_with(
         options: EvaluationOptions {
             pull_off: measure == AdhesionMeasure::PullOffForce,
             quadrature: Quadrature::default(),
+            work_of_adhesion: false,
         },
         warm_settings: OptimizerSettings {
             starts: 1,

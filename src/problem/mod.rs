@@ -65,7 +65,9 @@ pub use notes::{BodyKey, CatalogueProperty, InputNote};
 pub use study::{Dimensioned, Study};
 pub use topography::ScanSource;
 
-use crate::model::{AdhesionModel, AttractionKind, Scene, WearArea};
+use crate::model::{
+    AdhesionModel, AttractionKind, Cantilever, Environment, Liquid, Scene, WearArea,
+};
 use crate::optimize::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Named, Objective,
     OptimizerSettings, ParetoDirection, ParetoSpec, SceneParameter, DEFAULT_RELEASE_MARGIN,
@@ -883,6 +885,8 @@ impl Problem {
             &i.shear_strength,
             Accept::positive(Dimension::Pressure).why("the junctions' shear strength τ"),
         )?;
+        let environment = r.environment(&raw, i)?;
+        let cantilever = r.cantilever(&raw)?;
         let scene = Scene {
             youngs_modulus_a: body_a.youngs_modulus,
             poisson_ratio_a: body_a.poisson_ratio,
@@ -904,9 +908,11 @@ impl Problem {
                 sliding_per_cycle,
                 restoring_force,
                 shear_strength,
+                cantilever,
             },
             adhesion_model,
             attraction,
+            environment,
         };
 
         let study = r.study(&raw, &scene)?;
@@ -924,6 +930,12 @@ impl Problem {
 fn design_accept(q: SceneParameter) -> Accept {
     let dim = q.dimension();
     match q {
+        SceneParameter::ContactAngle
+        | SceneParameter::ContactAngleA
+        | SceneParameter::ContactAngleB => {
+            Accept::interval(dim, 0.0, false, std::f64::consts::PI, false)
+                .why("the liquid's contact angle, 0° to 180°")
+        }
         SceneParameter::PoissonRatio => {
             Accept::interval(dim, -1.0, true, 0.5, false).why("Poisson ratio")
         }
@@ -933,6 +945,174 @@ fn design_accept(q: SceneParameter) -> Accept {
 }
 
 impl Reader<'_> {
+    /// `[environment]` and `[interface] contact_angle` (docs/model.md §9): None
+    /// without an `[environment]` table.
+    fn environment(
+        &self,
+        raw: &RawProblem,
+        i: &raw::RawInterface,
+    ) -> Result<Option<Environment>, ProblemError> {
+        let angle = Accept::interval(Dimension::Angle, 0.0, false, std::f64::consts::PI, false)
+            .why("the liquid's contact angle, 0° to 180°");
+        let one = self.optional_quantity("interface.contact_angle", &i.contact_angle, angle)?;
+        let a = self.optional_quantity("interface.contact_angle_a", &i.contact_angle_a, angle)?;
+        let b = self.optional_quantity("interface.contact_angle_b", &i.contact_angle_b, angle)?;
+        if let (Some(w), true) = (&i.contact_angle, a.is_some() || b.is_some()) {
+            return Err(self.invalid(
+                "interface.contact_angle",
+                &w.span(),
+                "give either contact_angle (both bodies) or contact_angle_a / contact_angle_b (one each), not both",
+            ));
+        }
+        let Some(env) = &raw.environment else {
+            if let Some(w) = i
+                .contact_angle
+                .as_ref()
+                .or(i.contact_angle_a.as_ref())
+                .or(i.contact_angle_b.as_ref())
+            {
+                return Err(self.invalid(
+                    "interface.contact_angle",
+                    &w.span(),
+                    "a contact angle needs a liquid: add an [environment] table with relative_humidity, e.g. relative_humidity = \"50 %\"",
+                ));
+            }
+            return Ok(None);
+        };
+        let espan = env.span();
+        let e = env.get_ref();
+        let rh = self.quantity(
+            "environment.relative_humidity",
+            self.required(
+                &e.relative_humidity,
+                "environment.relative_humidity",
+                Some(&espan),
+                "the relative humidity, e.g. relative_humidity = 0.5 or \"50 %\"",
+            )?,
+            Accept::interval(Dimension::Dimensionless, 0.0, false, 1.0, true)
+                .why("the relative humidity, 0 (dry) to below 1 (saturated)"),
+        )?;
+        let temperature = self
+            .optional_quantity(
+                "environment.temperature",
+                &e.temperature,
+                Accept::positive(Dimension::Temperature).why("the absolute temperature"),
+            )?
+            .unwrap_or(crate::model::capillary::ROOM_TEMPERATURE);
+        let liquid = match &e.liquid {
+            None => Liquid::Water,
+            Some(v) => self.liquid(v)?,
+        };
+        if liquid == Liquid::Water
+            && temperature >= crate::model::capillary::WATER_CRITICAL_TEMPERATURE
+        {
+            let at = e.temperature.as_ref().map_or(espan.clone(), |t| t.span());
+            return Err(self.invalid(
+                "environment.temperature",
+                &at,
+                "must be below water's critical point, 647.096 K (no liquid water above it)",
+            ));
+        }
+        let (theta_a, theta_b) = match (one, a, b) {
+            (Some(t), _, _) => (t, t),
+            (None, a, b) => (a.unwrap_or(0.0), b.unwrap_or(0.0)),
+        };
+        Ok(Some(Environment {
+            relative_humidity: rh,
+            temperature,
+            liquid,
+            contact_angle_a: theta_a,
+            contact_angle_b: theta_b,
+        }))
+    }
+
+    /// `environment.liquid`: `"water"` or a table of its two properties.
+    fn liquid(&self, value: &Spanned<toml::Value>) -> Result<Liquid, ProblemError> {
+        let span = value.span();
+        match value.get_ref() {
+            toml::Value::String(s) if s == "water" => Ok(Liquid::Water),
+            toml::Value::Table(t) => {
+                for key in t.keys() {
+                    if key != "surface_tension" && key != "molar_volume" {
+                        return Err(self.invalid(
+                            "environment.liquid",
+                            &span,
+                            format!("unknown key {key:?}: a liquid is {{ surface_tension = \"…\", molar_volume = \"…\" }}"),
+                        ));
+                    }
+                }
+                let get = |key: &str, dim: Dimension, example: &str| -> Result<f64, ProblemError> {
+                    let field = format!("environment.liquid.{key}");
+                    let raw = match t.get(key) {
+                        Some(toml::Value::String(s)) => RawQuantity::Text(s.clone()),
+                        Some(toml::Value::Float(x)) => RawQuantity::Number(*x),
+                        Some(toml::Value::Integer(x)) => RawQuantity::Number(*x as f64),
+                        Some(_) => {
+                            return Err(self.invalid(&field, &span, dim.expectation()));
+                        }
+                        None => {
+                            return Err(self.invalid(
+                                &field,
+                                &span,
+                                format!("missing: give {key}, e.g. {key} = \"{example}\""),
+                            ));
+                        }
+                    };
+                    let x = crate::units::parse_quantity(raw.as_input(), dim)
+                        .map_err(|e| self.invalid(&field, &span, e.to_string()))?;
+                    Accept::positive(dim)
+                        .check(x)
+                        .map_err(|reason| self.invalid(&field, &span, reason))?;
+                    Ok(x)
+                };
+                Ok(Liquid::Given {
+                    surface_tension: get("surface_tension", Dimension::SurfaceEnergy, "72 mN/m")?,
+                    molar_volume: get("molar_volume", Dimension::MolarVolume, "18.07 cm^3/mol")?,
+                })
+            }
+            _ => Err(self.invalid(
+                "environment.liquid",
+                &span,
+                "must be \"water\" or a table { surface_tension = \"…\", molar_volume = \"…\" }",
+            )),
+        }
+    }
+
+    /// `[stiction] cantilever = { thickness, gap, youngs_modulus }`.
+    fn cantilever(&self, raw: &RawProblem) -> Result<Option<Cantilever>, ProblemError> {
+        let Some(st) = &raw.stiction else {
+            return Ok(None);
+        };
+        let Some(c) = &st.get_ref().cantilever else {
+            return Ok(None);
+        };
+        let span = c.span();
+        let c = c.get_ref();
+        let get = |key: &str, value: &Option<Spanned<RawQuantity>>, dim, example: &str| {
+            let field = format!("stiction.cantilever.{key}");
+            let v = self.required(
+                value,
+                &field,
+                Some(&span),
+                &format!(
+                    "the beam's {}, e.g. {key} = \"{example}\"",
+                    key.replace('_', " ")
+                ),
+            )?;
+            self.quantity(&field, v, Accept::positive(dim))
+        };
+        Ok(Some(Cantilever {
+            thickness: get("thickness", &c.thickness, Dimension::Length, "2 um")?,
+            gap: get("gap", &c.gap, Dimension::Length, "2 um")?,
+            youngs_modulus: get(
+                "youngs_modulus",
+                &c.youngs_modulus,
+                Dimension::Pressure,
+                "160 GPa",
+            )?,
+        }))
+    }
+
     fn study(&mut self, raw: &RawProblem, scene: &Scene) -> Result<Study, ProblemError> {
         let mut study = Study::default();
 
@@ -961,12 +1141,30 @@ impl Reader<'_> {
                     SceneParameter::Sigma => &d.sigma,
                     SceneParameter::AsperityRadius => &d.asperity_radius,
                     SceneParameter::AsperityDensity => &d.asperity_density,
+                    SceneParameter::ContactAngle => &d.contact_angle,
+                    SceneParameter::ContactAngleA => &d.contact_angle_a,
+                    SceneParameter::ContactAngleB => &d.contact_angle_b,
+                    SceneParameter::Temperature => &d.temperature,
                     // Not design variables (SceneParameter::DESIGN leaves them out).
                     SceneParameter::NominalArea
                     | SceneParameter::Load
                     | SceneParameter::InteratomicDistance => &None,
                 };
                 if let Some(bound) = bound {
+                    let environmental = matches!(
+                        q,
+                        SceneParameter::ContactAngle
+                            | SceneParameter::ContactAngleA
+                            | SceneParameter::ContactAngleB
+                            | SceneParameter::Temperature
+                    );
+                    if environmental && scene.environment.is_none() {
+                        return Err(self.invalid(
+                            &format!("design.{}", q.as_str()),
+                            &bound.span(),
+                            "moves the humid air's liquid, and the file has no [environment]: add one with relative_humidity, e.g. relative_humidity = \"90 %\"",
+                        ));
+                    }
                     placed.push((bound.span().start, self.design_variable(q, bound, scene)?));
                 }
             }

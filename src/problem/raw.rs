@@ -103,6 +103,34 @@ pub struct RawProblem {
     pub constraint: Vec<Spanned<RawConstraint>>,
     pub pareto: Option<Spanned<RawPareto>>,
     pub optimizer: Option<Spanned<RawOptimizer>>,
+    pub environment: Option<Spanned<RawEnvironment>>,
+    pub stiction: Option<Spanned<RawStiction>>,
+}
+
+/// `[environment]`: the humid air around the contact (docs/model.md §9).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawEnvironment {
+    pub relative_humidity: Option<Spanned<RawQuantity>>,
+    pub temperature: Option<Spanned<RawQuantity>>,
+    /// `"water"` or `{ surface_tension = …, molar_volume = … }`.
+    pub liquid: Option<Spanned<toml::Value>>,
+}
+
+/// `[stiction]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawStiction {
+    pub cantilever: Option<Spanned<RawCantilever>>,
+}
+
+/// `stiction.cantilever`: a beam held down by the interface.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCantilever {
+    pub thickness: Option<Spanned<RawQuantity>>,
+    pub gap: Option<Spanned<RawQuantity>>,
+    pub youngs_modulus: Option<Spanned<RawQuantity>>,
 }
 
 /// `[contact]`.
@@ -147,6 +175,9 @@ pub struct RawInterface {
     pub adhesion_model: Option<Spanned<String>>,
     pub attraction: Option<Spanned<String>>,
     pub shear_strength: Option<Spanned<RawQuantity>>,
+    pub contact_angle: Option<Spanned<RawQuantity>>,
+    pub contact_angle_a: Option<Spanned<RawQuantity>>,
+    pub contact_angle_b: Option<Spanned<RawQuantity>>,
 }
 
 /// `[roughness]`.
@@ -185,6 +216,10 @@ pub struct RawDesign {
     pub sigma: Option<Spanned<RawBound>>,
     pub asperity_radius: Option<Spanned<RawBound>>,
     pub asperity_density: Option<Spanned<RawBound>>,
+    pub contact_angle: Option<Spanned<RawBound>>,
+    pub contact_angle_a: Option<Spanned<RawBound>>,
+    pub contact_angle_b: Option<Spanned<RawBound>>,
+    pub temperature: Option<Spanned<RawBound>>,
     pub materials: Option<Spanned<Vec<Spanned<String>>>>,
 }
 

@@ -62,6 +62,10 @@ impl DesignKeys for SceneParameter {
             SceneParameter::NominalArea => "contact.nominal_area",
             SceneParameter::Load => "contact.load",
             SceneParameter::InteratomicDistance => "interface.interatomic_distance",
+            SceneParameter::ContactAngle => "interface.contact_angle",
+            SceneParameter::ContactAngleA => "interface.contact_angle_a",
+            SceneParameter::ContactAngleB => "interface.contact_angle_b",
+            SceneParameter::Temperature => "environment.temperature",
         }
     }
 
@@ -76,6 +80,10 @@ impl DesignKeys for SceneParameter {
             SceneParameter::Sigma => "{ min = \"0.5 nm\", max = \"20 nm\" }",
             SceneParameter::AsperityRadius => "{ min = \"0.2 um\", max = \"10 um\" }",
             SceneParameter::AsperityDensity => "{ min = \"1 um^-2\", max = \"100 um^-2\" }",
+            SceneParameter::ContactAngle
+            | SceneParameter::ContactAngleA
+            | SceneParameter::ContactAngleB => "{ min = \"0 deg\", max = \"110 deg\" }",
+            SceneParameter::Temperature => "{ min = \"273 K\", max = \"350 K\" }",
             // Not design variables: bounds no message asks for.
             SceneParameter::NominalArea
             | SceneParameter::Load

@@ -133,6 +133,73 @@ pub fn json_value(r: &EvalReport) -> Value {
     v
 }
 
+/// The humid air's numbers as (label, value) rows, for the text and HTML pages.
+fn humidity_rows(h: &crate::model::wear::Humidity) -> Vec<[String; 2]> {
+    let deg = |rad: f64| format!("{}°", sig(rad.to_degrees(), 4));
+    let mut rows = vec![
+        [
+            "relative humidity RH".to_string(),
+            format!("{} %", sig(100.0 * h.relative_humidity, 4)),
+        ],
+        [
+            "temperature T".into(),
+            format!(
+                "{} (surface tension γ_L = {})",
+                si(h.temperature, "K", 5),
+                si(h.surface_tension, "N/m", 4)
+            ),
+        ],
+        [
+            "contact angles θ_a, θ_b".into(),
+            format!("{}, {}", deg(h.contact_angle_a), deg(h.contact_angle_b)),
+        ],
+    ];
+    match (h.kelvin_radius, h.meniscus_height, h.laplace_pressure) {
+        (Some(r), Some(d), Some(p)) => {
+            rows.push(["Kelvin radius r_K".into(), si(r, "m", 4)]);
+            rows.push([
+                "meniscus height d_K".into(),
+                format!("{} (the widest gap the liquid bridges)", si(d, "m", 4)),
+            ]);
+            rows.push(["Laplace pressure Δp".into(), si(p, "Pa", 4)]);
+        }
+        _ if h.relative_humidity == 0.0 => {
+            rows.push(["meniscus".into(), "none: dry air (RH = 0)".into()])
+        }
+        _ => rows.push([
+            "meniscus".into(),
+            "none: the liquid does not wet the pair (cos θ_a + cos θ_b ≤ 0)".into(),
+        ]),
+    }
+    if let (Some(load), Some(wet)) = (h.capillary_load, h.wetted_fraction) {
+        rows.push([
+            "capillary load".into(),
+            format!(
+                "{} (in the load balance and the pull-off force)",
+                si(load, "N", 4)
+            ),
+        ]);
+        rows.push(["wet fraction of the nominal area".into(), sig_exp(wet, 3)]);
+    }
+    rows.push([
+        "apparent work of adhesion Γ".into(),
+        h.apparent_work_of_adhesion
+            .map_or("— (computed with the pull-off)".into(), |g| {
+                format!(
+                    "{} (what a cantilever-beam test measures)",
+                    si(g, "J/m²", 4)
+                )
+            }),
+    ]);
+    if let Some(l) = h.detachment_length {
+        rows.push([
+            "cantilever detachment length".into(),
+            format!("{} (longer beams stay stuck)", si(l, "m", 4)),
+        ]);
+    }
+    rows
+}
+
 /// The asperity law in words, with the attraction's range under DMT.
 fn law_words(ev: &Evaluation, sc: &Scene) -> String {
     match ev.adhesion_model {
@@ -451,6 +518,11 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
         rows.push(vec!["friction coefficient F/W".into(), sig_exp(mu, 3)]);
     }
     p.table(&["result", "value"], &rows, &[]);
+    if let Some(hum) = &ev.humidity {
+        p.heading("Humid air (capillary adhesion)");
+        let rows: Vec<Vec<String>> = humidity_rows(hum).into_iter().map(Vec::from).collect();
+        p.table(&["quantity", "value"], &rows, &[1]);
+    }
     if let Some(curve) = curve {
         p.figure(
             "load-separation",
@@ -682,6 +754,13 @@ pub fn text(r: &EvalReport) -> String {
             }
         ));
     }
+    if let Some(hum) = &ev.humidity {
+        line(String::new());
+        line("Humid air (capillary adhesion)".into());
+        for [label, value] in humidity_rows(hum) {
+            line(format!("  {label}: {value}"));
+        }
+    }
     line(String::new());
     line("Wear (Archard, V = k A L)".into());
     line(format!(
@@ -740,6 +819,12 @@ pub fn text(r: &EvalReport) -> String {
             verdict_words(st.verdict)
         ));
         line(format!("  adhesion law: {}", law_words(ev, sc)));
+        if let Some(hum) = ev.humidity.filter(|h| h.kelvin_radius.is_some()) {
+            line(format!(
+                "  the pull-off force includes the capillary pull of the liquid at RH = {} % (the dry-air force: `wearopt humidity` at RH 0)",
+                sig(100.0 * hum.relative_humidity, 4)
+            ));
+        }
         let phi = ev.indices.tabor_parameter;
         if let Some((law, o)) = other_stiction(ev) {
             line(format!(

@@ -6,7 +6,7 @@
 //! One module per result type, each with one renderer per [`Format`] it writes and
 //! the list of those formats (`FORMATS`, checked by [`format::parse`]):
 //! [`eval`], [`optimize`], [`materials`], [`pareto`], [`sweep`], [`accuracy`],
-//! [`calibrate`] (fit-adhesion), [`roughness`], [`curve`], [`figures`]. Shared
+//! [`calibrate`] (fit-adhesion), [`humidity`], [`roughness`], [`curve`], [`figures`]. Shared
 //! pieces: [`crate::units`] (SI prefixes and the numbers' text), [`words`] (the library's
 //! warnings and notes in words), [`svg`] (line plots and bar charts).
 
@@ -17,6 +17,7 @@ pub mod eval;
 pub mod figures;
 pub mod format;
 pub(crate) mod html;
+pub mod humidity;
 pub mod materials;
 pub mod optimize;
 pub mod pareto;

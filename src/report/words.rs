@@ -25,6 +25,10 @@ fn input_words(i: SceneParameter) -> (&'static str, Dimension) {
         SceneParameter::Hardness => "hardness H",
         SceneParameter::WorkOfAdhesion => "work of adhesion γ",
         SceneParameter::InteratomicDistance => "interatomic distance Z0",
+        SceneParameter::ContactAngle => "contact angle θ",
+        SceneParameter::ContactAngleA => "contact angle θ_a",
+        SceneParameter::ContactAngleB => "contact angle θ_b",
+        SceneParameter::Temperature => "temperature T",
     };
     (words, i.dimension())
 }
@@ -130,6 +134,10 @@ pub fn warning(w: &Warning) -> String {
                 }
             )
         }
+        Warning::KelvinRadiusBelowContinuum { kelvin_radius } => format!(
+            "the Kelvin radius is {} (< 0.5 nm, a few molecules of water): the continuum Kelvin–Laplace picture of the capillary force is doubtful at this humidity; read the capillary numbers as an estimate",
+            format_quantity(*kelvin_radius, Dimension::Length)
+        ),
         Warning::PullOffNotFound { evaluations } => format!(
             "the pull-off search found no minimum of the load curve after {evaluations} evaluations: no pull-off force is reported (a defect of the search, not of the scene: please report it)"
         ),

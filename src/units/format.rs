@@ -115,6 +115,8 @@ pub fn axis_unit(max_abs: f64, unit: &str) -> (f64, String) {
 pub fn quantity(x: f64, dimension: Dimension, prec: usize) -> String {
     match dimension {
         Dimension::Dimensionless => sig_exp(x, prec),
+        // Angles in degrees, as designers quote contact angles (read back as "deg").
+        Dimension::Angle if x.is_finite() => format!("{} deg", sig(x.to_degrees(), prec)),
         d => si(x, symbol(d), prec),
     }
 }
@@ -124,6 +126,9 @@ pub fn quantity(x: f64, dimension: Dimension, prec: usize) -> String {
 pub fn format_quantity(value: f64, dimension: Dimension) -> String {
     if value.is_infinite() {
         return if value > 0.0 { "inf" } else { "-inf" }.to_string();
+    }
+    if dimension == Dimension::Angle {
+        return format!("{} deg", trim(&sig(value.to_degrees(), 4)));
     }
     let unit = symbol(dimension);
     if unit.is_empty() {
@@ -272,6 +277,9 @@ mod tests {
             Dimension::SurfaceEnergy,
             Dimension::Time,
             Dimension::Dimensionless,
+            Dimension::Temperature,
+            Dimension::Angle,
+            Dimension::MolarVolume,
         ];
         for d in dims {
             for k in -150..=150 {

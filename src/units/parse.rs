@@ -292,7 +292,20 @@ fn prefixed(unit: &str, base: &str) -> Option<i32> {
 fn factor_in(unit: &str, dimension: Dimension) -> Option<Factor> {
     let pow10 = |e: Option<i32>| e.map(Factor::pow10);
     match dimension {
-        Dimension::Dimensionless => unit.is_empty().then_some(Factor::ONE),
+        Dimension::Dimensionless => match unit {
+            "" => Some(Factor::ONE),
+            "%" => Some(Factor::pow10(-2)),
+            _ => None,
+        },
+        Dimension::Temperature => pow10(prefixed(unit, "K")),
+        Dimension::Angle => match unit {
+            "deg" | "\u{00b0}" | "degree" | "degrees" => Some(Factor {
+                exp10: 0,
+                mult: std::f64::consts::PI / 180.0,
+            }),
+            _ => pow10(prefixed(unit, "rad")),
+        },
+        Dimension::MolarVolume => pow10(prefixed(unit, "m^3/mol").map(|e| 3 * e)),
         Dimension::Pressure => pow10(prefixed(unit, "Pa")),
         Dimension::Force => pow10(prefixed(unit, "N")),
         Dimension::Length => pow10(

@@ -7,6 +7,7 @@ mod common;
 mod accuracy;
 mod app;
 mod calibrate;
+mod capillary;
 mod cli;
 mod dmt;
 mod dmt_reference;

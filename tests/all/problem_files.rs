@@ -263,6 +263,41 @@ fn catalogue_override_is_noted() {
 /// Each malformed file, the line its error must point at, and the parts its message
 /// must contain (field, value, accepted range or fix).
 const BAD: &[(&str, Option<usize>, &[&str])] = &[
+    (
+        "design-contact-angle-without-environment",
+        Some(17),
+        &["design.contact_angle", "no [environment]", "relative_humidity = \"90 %\""],
+    ),
+    (
+        "environment-humidity-one",
+        Some(17),
+        &["environment.relative_humidity = \"100 %\"", "must be in [0, 1)"],
+    ),
+    (
+        "environment-liquid-negative-tension",
+        Some(18),
+        &["environment.liquid.surface_tension", "must be > 0 J/m²"],
+    ),
+    (
+        "environment-temperature-zero",
+        Some(18),
+        &["environment.temperature = \"0 K\"", "must be > 0 K"],
+    ),
+    (
+        "interface-contact-angle-above-180",
+        Some(16),
+        &["interface.contact_angle = \"200 deg\"", "0° to 180°"],
+    ),
+    (
+        "interface-contact-angle-without-environment",
+        Some(16),
+        &["interface.contact_angle", "add an [environment] table"],
+    ),
+    (
+        "stiction-cantilever-without-gap",
+        Some(17),
+        &["missing stiction.cantilever.gap", "gap = \"2 um\""],
+    ),
     ("syntax-error", Some(3), &["TOML syntax error"]),
     ("duplicate-key", Some(5), &["TOML syntax error", "duplicate key"]),
     (

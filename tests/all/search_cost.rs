@@ -361,9 +361,11 @@ fn a_root_near_the_zero_of_the_load_is_found_to_rounding() {
             sliding_per_cycle: None,
             restoring_force: None,
             shear_strength: None,
+            cantilever: None,
         },
         adhesion_model: AdhesionModel::Dmt,
         attraction: AttractionKind::VanDerWaals,
+        environment: None,
     };
     let options = EvaluationOptions::default();
     let cold = evaluate(&scene, &options);

@@ -526,6 +526,7 @@ fn scene() -> impl Strategy<Value = Scene> {
                 } else {
                     AttractionKind::VanDerWaals
                 },
+                environment: None,
             },
         )
 }
@@ -649,9 +650,15 @@ fn scene_outputs_sane(scene: &Scene) -> Result<(), TestCaseError> {
             // Under DMT the attracted, non-contacting asperities carry a share too.
             let nc = ev.noncontact_load.unwrap_or(f64::NAN);
             prop_assert!(nc <= 0.0, "noncontact_load {nc} for {scene:?}");
-            let (el, pl) = (ev.elastic_load, ev.plastic_load + nc);
-            let scale =
-                el.abs() + pl.abs() + nc.abs() + ev.asperity_pull_off_force * ev.contact_count;
+            // In humid air the menisci pull too (docs/model.md §10).
+            let cap = ev.humidity.and_then(|h| h.capillary_load).unwrap_or(0.0);
+            prop_assert!(cap <= 0.0, "capillary_load {cap} for {scene:?}");
+            let (el, pl) = (ev.elastic_load, ev.plastic_load + nc + cap);
+            let scale = el.abs()
+                + pl.abs()
+                + nc.abs()
+                + cap.abs()
+                + ev.asperity_pull_off_force * ev.contact_count;
             // Only where the parts are representable (not underflowed) doubles.
             if scale > 1e-290 && scene.load.abs() > 1e-290 {
                 prop_assert!(
@@ -839,6 +846,61 @@ proptest! {
     }
 }
 
+/// [`scene_outputs_sane`], and the humid air's numbers: a capillary load ≤ 0, a wet
+/// fraction in [0, 1], a finite Γ ≥ 0, a meniscus of positive, finite size.
+fn humid_scene_sane(s: &Scene) -> Result<(), TestCaseError> {
+    scene_outputs_sane(s)?;
+    let ev = evaluate(s, &EvaluationOptions::default());
+    let h = ev.humidity.expect("an environment reports its block");
+    if let Some(f) = h.capillary_load {
+        prop_assert!(f.is_finite() && f <= 0.0, "capillary_load {f} for {s:?}");
+    }
+    if let Some(w) = h.wetted_fraction {
+        prop_assert!((0.0..=1.0).contains(&w), "wetted_fraction {w} for {s:?}");
+    }
+    if let Some(g) = h.apparent_work_of_adhesion {
+        prop_assert!(g.is_finite() && g >= 0.0, "Γ {g} for {s:?}");
+    }
+    for x in [h.kelvin_radius, h.meniscus_height, h.laplace_pressure]
+        .into_iter()
+        .flatten()
+    {
+        prop_assert!(x.is_finite() && x > 0.0, "meniscus {h:?} for {s:?}");
+    }
+    Ok(())
+}
+
+/// A scene of [`scene`] in humid air (docs/model.md §10): any humidity the schema
+/// accepts, contact angles over the whole range, temperatures from frost to hot.
+fn humid_scene() -> impl Strategy<Value = Scene> {
+    (
+        scene(),
+        prop_oneof![1 => Just(0.0), 4 => 0.0..0.999f64, 1 => log_uniform(1e-6, 1e-2)],
+        0.0..=std::f64::consts::PI,
+        0.0..=std::f64::consts::PI,
+        250.0..450.0f64,
+    )
+        .prop_map(|(s, rh, a, b, t)| Scene {
+            environment: Some(wearopt::model::Environment {
+                relative_humidity: rh,
+                temperature: t,
+                contact_angle_a: a,
+                contact_angle_b: b,
+                ..Default::default()
+            }),
+            ..s
+        })
+}
+
+proptest! {
+    #![proptest_config(config(CASES / 4))]
+
+    #[test]
+    fn humid_scenes_evaluate_sanely(s in humid_scene()) {
+        humid_scene_sane(&s)?;
+    }
+}
+
 proptest! {
     #![proptest_config(config(256))]
 
@@ -941,6 +1003,10 @@ fn long_run_million_cases() {
     });
     run("scenes", &|r| {
         r.run(&scene(), |s| scene_outputs_sane(&s))
+            .map_err(|e| fail(&e))
+    });
+    run("humid scenes", &|r| {
+        r.run(&humid_scene(), |s| humid_scene_sane(&s))
             .map_err(|e| fail(&e))
     });
     run("problem text", &|r| {

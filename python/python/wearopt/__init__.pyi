@@ -24,6 +24,10 @@ def optimize(problem: Problem) -> Dict[str, Any]:
     'optimal'
     """
 
+def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:
+    """The JSON of `wearopt humidity FILE --from RH0 --to RH1 --points N --format json` as a dict."""
+    ...
+
 def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
     """The JSON of `wearopt pareto FILE [--points N] --format json` as a dict.
 

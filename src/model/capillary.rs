@@ -1,0 +1,351 @@
+//! Capillary adhesion at a relative humidity (docs/model.md §9).
+//!
+//! A liquid (water unless given) condenses in every gap narrower than the Kelvin
+//! length d_K = r_K (cos θ_a + cos θ_b), r_K = γ_L V_m / (R_g T ln(1/RH)), and
+//! pulls with the Laplace pressure Δp = γ_L / r_K on the wetted area. One summit at
+//! interference δ wets 2πR (d_K + δ) for -d_K ≤ δ < 0 and 2πR d_K in contact (a
+//! Dugdale law of range d_K, docs/model.md §7's table). Per unit nominal area the
+//! independent menisci cover F_w(d) = N ∫ a_w(z - d) φ(z) dz; placed at random they
+//! overlap, and the wet fraction is 1 - e^{-F_w} (the Boolean model of random
+//! discs). The load is
+//!
+//! ```text
+//! P_cap(d) = -Δp (1 - e^{-F_w(d)})            (≤ 0, per unit nominal area)
+//! ```
+//!
+//! **Non-dimensional form** (the scales of §3: lengths by σ, loads by
+//! K N R^{1/2} σ^{3/2} / √(2π)). With k = d_K/σ and
+//!
+//! ```text
+//! J(h) = ∫_{-k}^{0} (1 + Δ/k) φ̄(Δ) dΔ + ∫_0^∞ φ̄(Δ) dΔ,   φ̄ = e^{-(h+Δ)²/2}
+//! F_w = f J,   f = √(2π) R N d_K,      P̄_cap = -p (1 - e^{-F_w}),   p = √(2π) Δp / (K N R^{1/2} σ^{3/2})
+//! ```
+//!
+//! so that p f = c_cap = 2π γ_c R^{1/2} / (K σ^{3/2}) with γ_c = Δp d_K = γ_L (cos θ_a +
+//! cos θ_b): while F_w ≪ 1, P̄_cap = -c_cap J, the §7 Dugdale law of range k with c_0
+//! replaced by c_cap, contact term included. The first part of J is that Dugdale
+//! integral (`dmt::noncontact`, free of the cancellation of its erfc closed form for
+//! k ≪ 1), the second the Gaussian tail T_0(h). Then
+//!
+//! ```text
+//! P̄_cap' = -p e^{-F} F',   P̄_cap'' = -p e^{-F} (F'' - F'²)
+//! J'(h) = -(1/k) ∫_{-k}^{0} φ̄ dΔ ≤ 0   (integrating ∂_h φ̄ = ∂_Δ φ̄ by parts)
+//! ```
+//!
+//! **The single-minimum fact survives.** P̄_cap'/φ(h) = p e^{-F(h)} · (f/k) ∫_{-k}^0
+//! e^{-hΔ-Δ²/2} dΔ is a product of two positive functions that increase with h
+//! (F falls as h grows; e^{-hΔ} grows for Δ < 0). Added to the solid law's P̄'/φ,
+//! which increases with h wherever its load jump J ≥ 0 (`separation.rs`), the sum
+//! still increases: P̄' changes sign once, and the searches of §4 apply unchanged.
+//! Where J < 0 the sign scan of `separation.rs` isolates the critical points, and its
+//! left end allows for this term (|P̄_cap'| ≤ c_cap φ(h)). tests/all/capillary.rs
+//! checks the sign change on a grid.
+//!
+//! **Scales.** J is carried as a mantissa at the smaller of the two parts' scales.
+//! Where that scale passes e^{-600} (F_w < 1e-250), 1 - e^{-F} = F to the last bit
+//! and P̄_cap = -c_cap J keeps the scale, so it never underflows to a false 0;
+//! elsewhere the values are formed directly (`expm1`, no cancellation).
+
+use super::dmt::noncontact;
+use super::law::Attraction;
+use super::special::{gauss_scaled, kappa, tail0, SQRT_TWO_PI};
+use serde::Serialize;
+
+/// R_g, the molar gas constant (J/(mol K)), CODATA 2018 (exact).
+pub const GAS_CONSTANT: f64 = 8.314_462_618;
+/// T_c of water (K), IAPWS 1994.
+pub const WATER_CRITICAL_TEMPERATURE: f64 = 647.096;
+/// V_m of liquid water (m³/mol) at 25 °C (docs/model.md §9).
+pub const WATER_MOLAR_VOLUME: f64 = 1.8069e-5;
+/// 25 °C in kelvin, the default temperature.
+pub const ROOM_TEMPERATURE: f64 = 298.15;
+/// Below this Kelvin radius (m) the continuum Kelvin equation is doubtful.
+pub const MIN_KELVIN_RADIUS: f64 = 0.5e-9;
+
+/// The condensing liquid.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Liquid {
+    /// Water: γ_L(T) by the IAPWS 1994 formula, V_m = 1.8069e-5 m³/mol.
+    #[default]
+    Water,
+    /// A liquid given by its surface tension and molar volume.
+    Given {
+        /// γ_L (N/m), > 0.
+        surface_tension: f64,
+        /// V_m (m³/mol), > 0.
+        molar_volume: f64,
+    },
+}
+
+impl Liquid {
+    /// γ_L at temperature T (N/m); for water 0 at and above its critical point.
+    pub fn surface_tension(self, temperature: f64) -> f64 {
+        match self {
+            Liquid::Water => water_surface_tension(temperature),
+            Liquid::Given {
+                surface_tension, ..
+            } => surface_tension,
+        }
+    }
+
+    /// V_m (m³/mol).
+    pub fn molar_volume(self) -> f64 {
+        match self {
+            Liquid::Water => WATER_MOLAR_VOLUME,
+            Liquid::Given { molar_volume, .. } => molar_volume,
+        }
+    }
+}
+
+/// γ_L of water (N/m), IAPWS 1994: 0.2358 τ^1.256 (1 - 0.625 τ), τ = 1 - T/T_c
+/// (71.97 mN/m at 298.15 K); 0 at and above T_c.
+pub fn water_surface_tension(temperature: f64) -> f64 {
+    let tau = 1.0 - temperature / WATER_CRITICAL_TEMPERATURE;
+    if tau > 0.0 {
+        0.2358 * tau.powf(1.256) * (1.0 - 0.625 * tau)
+    } else {
+        0.0
+    }
+}
+
+/// The air around the contact: humidity, temperature, the liquid and its
+/// contact angles on the two bodies (the problem file's `[environment]` and
+/// `[interface] contact_angle`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Environment {
+    /// RH in [0, 1); 0 is dry air (no meniscus).
+    pub relative_humidity: f64,
+    /// T (K), > 0.
+    pub temperature: f64,
+    /// The condensing liquid.
+    pub liquid: Liquid,
+    /// θ_a, the liquid's contact angle on body a (rad), in [0, π].
+    pub contact_angle_a: f64,
+    /// θ_b, on body b (rad), in [0, π].
+    pub contact_angle_b: f64,
+}
+
+impl Default for Environment {
+    /// Dry air at 25 °C, water, fully wetting surfaces.
+    fn default() -> Self {
+        Environment {
+            relative_humidity: 0.0,
+            temperature: ROOM_TEMPERATURE,
+            liquid: Liquid::Water,
+            contact_angle_a: 0.0,
+            contact_angle_b: 0.0,
+        }
+    }
+}
+
+/// The Kelvin meniscus at a humidity (SI).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Meniscus {
+    /// γ_L (N/m).
+    pub surface_tension: f64,
+    /// r_K = γ_L V_m / (R_g T ln(1/RH)) (m).
+    pub kelvin_radius: f64,
+    /// d_K = r_K (cos θ_a + cos θ_b): the widest gap the liquid bridges (m).
+    pub height: f64,
+    /// Δp = γ_L / r_K (Pa): the tension in the liquid.
+    pub laplace_pressure: f64,
+    /// γ_c = γ_L (cos θ_a + cos θ_b) = Δp d_K (N/m): the flooded interface's Γ.
+    pub adhesion: f64,
+}
+
+impl Environment {
+    /// cos θ_a + cos θ_b.
+    pub fn cos_sum(&self) -> f64 {
+        self.contact_angle_a.cos() + self.contact_angle_b.cos()
+    }
+
+    /// The meniscus, or None where nothing condenses: RH = 0, cos θ_a + cos θ_b ≤ 0,
+    /// or a liquid without surface tension (water at or above its critical point).
+    pub fn meniscus(&self) -> Option<Meniscus> {
+        let rh = self.relative_humidity;
+        let cos_sum = self.cos_sum();
+        let gamma = self.liquid.surface_tension(self.temperature);
+        if !(rh > 0.0 && rh < 1.0 && cos_sum > 0.0 && gamma > 0.0) {
+            return None;
+        }
+        // ln(1/RH) = -ln RH, with ln_1p near RH = 1 (no cancellation in 1 - RH).
+        let log_inverse = if rh > 0.5 {
+            -(-(1.0 - rh)).ln_1p()
+        } else {
+            -rh.ln()
+        };
+        let kelvin_radius =
+            gamma * self.liquid.molar_volume() / (GAS_CONSTANT * self.temperature * log_inverse);
+        let height = kelvin_radius * cos_sum;
+        let laplace_pressure = gamma / kelvin_radius;
+        Some(Meniscus {
+            surface_tension: gamma,
+            kelvin_radius,
+            height,
+            laplace_pressure,
+            adhesion: gamma * cos_sum,
+        })
+    }
+}
+
+/// The capillary term of the model in its non-dimensional form (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Capillary {
+    /// k = d_K/σ, > 0.
+    pub range: f64,
+    /// f = √(2π) R N d_K: F_w over J.
+    pub wetting: f64,
+    /// p = √(2π) Δp / (K N R^{1/2} σ^{3/2}): the flooded load in model units.
+    pub flooded: f64,
+}
+
+impl Capillary {
+    /// The term for a meniscus on a surface of roughness σ, summit radius R and
+    /// density N, with K = 4E/3 (SI inputs).
+    pub fn new(meniscus: &Meniscus, k_modulus: f64, sigma: f64, radius: f64, density: f64) -> Self {
+        Capillary {
+            range: meniscus.height / sigma,
+            wetting: SQRT_TWO_PI * radius * density * meniscus.height,
+            flooded: SQRT_TWO_PI * meniscus.laplace_pressure
+                / (k_modulus * density * radius.sqrt() * sigma * sigma.sqrt()),
+        }
+    }
+
+    /// c_cap = p f: the load of independent menisci per unit of J.
+    pub fn independent(&self) -> f64 {
+        self.flooded * self.wetting
+    }
+
+    /// J(h), J'(h), J''(h) as mantissas at one scale exponent (module docs).
+    pub fn coverage(&self, h: f64) -> [f64; 4] {
+        let k = self.range;
+        let nc = noncontact(Attraction::Dugdale { range: k }, 1.0, h);
+        let kap = kappa(h);
+        let (t, dt, d2t) = {
+            let g = gauss_scaled(h);
+            (tail0(h), -g, h * g)
+        };
+        // The parts' scales: e^{nc.exponent} and e^{κ}. Take the smaller (the larger
+        // part); the factor of the other is e^{-(gap)}, with the gap exact where
+        // both are large (h > k: κ - u_n²/2 = k (h - k/2)).
+        let gap = if h > k {
+            k * (h - 0.5 * k)
+        } else {
+            kap - nc.exponent
+        };
+        let (exponent, f_nc, f_t) = if gap >= 0.0 {
+            (nc.exponent, 1.0, (-gap).exp())
+        } else {
+            (kap, gap.exp(), 1.0)
+        };
+        [
+            -nc.load * f_nc + t * f_t,
+            -nc.dload_dh * f_nc + dt * f_t,
+            -nc.d2load_dh2 * f_nc + d2t * f_t,
+            exponent,
+        ]
+    }
+
+    /// The capillary load and its h-derivatives at separation h.
+    pub fn at(&self, h: f64) -> CapillaryShare {
+        let [j, dj, d2j, exponent] = self.coverage(h);
+        if exponent >= SMALL_COVERAGE_EXPONENT {
+            // F_w < e^{-600}: 1 - e^{-F} = F and F'² ≪ F'' to the last bit.
+            let c = self.independent();
+            return CapillaryShare {
+                load: -c * j,
+                dload_dh: -c * dj,
+                d2load_dh2: -c * d2j,
+                exponent,
+                wetted_fraction: 0.0,
+            };
+        }
+        let s = (-exponent).exp();
+        let (f, df, d2f) = (
+            self.wetting * j * s,
+            self.wetting * dj * s,
+            self.wetting * d2j * s,
+        );
+        let e = (-f).exp();
+        let p = self.flooded;
+        CapillaryShare {
+            load: p * (-f).exp_m1(),
+            dload_dh: -p * e * df,
+            d2load_dh2: -p * e * (d2f - df * df),
+            exponent: 0.0,
+            wetted_fraction: -(-f).exp_m1(),
+        }
+    }
+}
+
+/// From this scale exponent on, the coverage is so small that the load is linear in it.
+const SMALL_COVERAGE_EXPONENT: f64 = 600.0;
+
+/// The capillary load at one separation, non-dimensional: mantissas scaled by
+/// `e^{exponent}` (value = mantissa · e^{-exponent}).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CapillaryShare {
+    /// P̄_cap (≤ 0).
+    pub load: f64,
+    /// dP̄_cap/dh (≥ 0).
+    pub dload_dh: f64,
+    /// d²P̄_cap/dh².
+    pub d2load_dh2: f64,
+    /// The scale exponent of the three mantissas.
+    pub exponent: f64,
+    /// 1 - e^{-F_w}: the wet fraction of the nominal area (a value, not a mantissa).
+    pub wetted_fraction: f64,
+}
+
+impl CapillaryShare {
+    /// No meniscus.
+    pub const ZERO: CapillaryShare = CapillaryShare {
+        load: 0.0,
+        dload_dh: 0.0,
+        d2load_dh2: 0.0,
+        exponent: 0.0,
+        wetted_fraction: 0.0,
+    };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn water_at_room_temperature() {
+        // IAPWS 1994 table: 71.97 mN/m at 25 °C.
+        assert!((water_surface_tension(298.15) - 0.07197).abs() < 5e-6);
+        assert_eq!(water_surface_tension(700.0), 0.0);
+    }
+
+    #[test]
+    fn dry_or_hydrophobic_air_has_no_meniscus() {
+        let dry = Environment::default();
+        assert!(dry.meniscus().is_none());
+        let wet = Environment {
+            relative_humidity: 0.5,
+            contact_angle_a: 2.0,
+            contact_angle_b: 2.0,
+            ..dry
+        };
+        assert!(wet.meniscus().is_none());
+    }
+
+    #[test]
+    fn kelvin_radius_of_water_at_half_humidity() {
+        // r_K = γ V_m / (R T ln 2) = 0.07197·1.8069e-5/(8.314462618·298.15·0.693147) ≈ 0.757 nm.
+        let env = Environment {
+            relative_humidity: 0.5,
+            ..Environment::default()
+        };
+        let m = env.meniscus().unwrap();
+        let expected = water_surface_tension(298.15) * WATER_MOLAR_VOLUME
+            / (GAS_CONSTANT * 298.15 * std::f64::consts::LN_2);
+        assert!((m.kelvin_radius / expected - 1.0).abs() < 1e-15);
+        assert!((m.kelvin_radius - 0.7568e-9).abs() < 1e-12);
+        assert!((m.height - 2.0 * m.kelvin_radius).abs() < 1e-24);
+        assert!((m.laplace_pressure * m.height - m.adhesion).abs() < 1e-15 * m.adhesion);
+    }
+}
