@@ -81,6 +81,13 @@ fn air_words(doc: &HumidityDocument) -> String {
 fn threshold_words(doc: &HumidityDocument) -> String {
     let last = doc.rows.last().map_or(0.0, |r| r.relative_humidity);
     match (doc.threshold_humidity, doc.dry_work_of_adhesion) {
+        (Some(t), Some(g)) if doc.continuum_humidity.is_some_and(|c| t < c) => format!(
+            "threshold humidity {} %, below the {} % where the Kelvin radius reaches 0.5 nm: as soon as a meniscus forms, Γ exceeds {} × its dry value {} (the dry adhesion is negligible against the liquid's)",
+            sig_exp(100.0 * t, 3),
+            sig(100.0 * doc.continuum_humidity.unwrap_or(0.0), 4),
+            THRESHOLD_RATIO,
+            si(g, "J/m²", 4)
+        ),
         (Some(t), Some(g)) => format!(
             "threshold humidity {} %: Γ reaches {} × its dry value {} there",
             sig(100.0 * t, 4),
@@ -218,7 +225,7 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
                 Series::new(
                     format!(
                         "threshold RH = {} (Γ = {} Γ_dry)",
-                        sig(t, 4),
+                        if t >= 1e-3 { sig(t, 4) } else { sig_exp(t, 3) },
                         THRESHOLD_RATIO
                     ),
                     vec![(t, lo.min(THRESHOLD_RATIO)), (t, hi.max(THRESHOLD_RATIO))],
