@@ -124,6 +124,41 @@ pub struct Environment {
     pub contact_angle_a: f64,
     /// θ_b, on body b (rad), in [0, π].
     pub contact_angle_b: f64,
+    /// A study's humidity range (`relative_humidity = { min, max }`): its limits hold
+    /// at each of these humidities; None for one humidity. An evaluation uses
+    /// `relative_humidity` (the design humidity) and ignores the range.
+    pub humidity_range: Option<HumidityRange>,
+}
+
+/// The humidities a design must hold over (docs/model.md §10), evenly spaced, both
+/// ends included.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HumidityRange {
+    /// The driest, in [0, 1).
+    pub min: f64,
+    /// The wettest, in (min, 1).
+    pub max: f64,
+    /// How many humidities, ≥ 2 (`humidity_points`, default 9).
+    pub points: usize,
+    /// Whether the file named the humidity the objective is taken at
+    /// (`design_humidity`); otherwise a study takes the worst one for the objective.
+    pub design_given: bool,
+}
+
+impl HumidityRange {
+    /// The humidities, ascending, both ends exact.
+    pub fn humidities(&self) -> Vec<f64> {
+        let n = self.points.max(2);
+        (0..n)
+            .map(|i| {
+                if i == n - 1 {
+                    self.max
+                } else {
+                    self.min + (self.max - self.min) * i as f64 / (n - 1) as f64
+                }
+            })
+            .collect()
+    }
 }
 
 impl Default for Environment {
@@ -135,6 +170,7 @@ impl Default for Environment {
             liquid: Liquid::Water,
             contact_angle_a: 0.0,
             contact_angle_b: 0.0,
+            humidity_range: None,
         }
     }
 }

@@ -28,7 +28,7 @@ pub mod warnings;
 pub mod wear;
 pub mod work;
 
-pub use capillary::{Capillary, Environment, Liquid, Meniscus};
+pub use capillary::{Capillary, Environment, HumidityRange, Liquid, Meniscus};
 pub use coefficients::{Coefficients, DomainError, Transition};
 pub use integrals::{Integrals, Model};
 pub use law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};

@@ -72,6 +72,9 @@ pub struct Row {
     pub limit: f64,
     /// Scaling of the row.
     pub scaling: Scaling,
+    /// The relative humidity the row holds at, in a study over a humidity range
+    /// (docs/model.md §10: each limit holds at each of the range's humidities).
+    pub humidity: Option<f64>,
 }
 
 impl Row {
@@ -240,6 +243,12 @@ pub struct StudyFunctions {
     pub rows: Vec<Row>,
     /// What each evaluation computes.
     pub options: EvaluationOptions,
+    /// Over a humidity range: the humidities every row is replicated at (empty: the
+    /// scene's one humidity).
+    pub humidities: Vec<f64>,
+    /// Over a humidity range: the humidity the objective is taken at (the file's
+    /// `design_humidity`, else the worst for the objective at the baseline design).
+    pub objective_humidity: Option<f64>,
 }
 
 impl StudyFunctions {
@@ -269,6 +278,7 @@ impl StudyFunctions {
                     side,
                     limit,
                     scaling,
+                    humidity: None,
                 });
             }
         }
@@ -281,16 +291,69 @@ impl StudyFunctions {
                         | ConstraintQuantity::ReleaseMargin
                 )
             });
-        StudyFunctions {
+        let options = EvaluationOptions {
+            pull_off,
+            quadrature: Quadrature::default(),
+            // No objective or constraint reads Γ: the integral is not needed.
+            work_of_adhesion: false,
+        };
+        let range = space
+            .baseline
+            .environment
+            .and_then(|e| e.humidity_range.map(|r| (e.relative_humidity, r)));
+        let Some((scene_rh, range)) = range else {
+            return StudyFunctions {
+                space,
+                objective,
+                rows,
+                options,
+                humidities: Vec::new(),
+                objective_humidity: None,
+            };
+        };
+        let humidities = range.humidities();
+        let rows = rows
+            .iter()
+            .flat_map(|r| {
+                humidities.iter().map(move |&h| Row {
+                    humidity: Some(h),
+                    ..*r
+                })
+            })
+            .collect();
+        let mut f = StudyFunctions {
             space,
             objective,
             rows,
-            options: EvaluationOptions {
-                pull_off,
-                quadrature: Quadrature::default(),
-                // No objective or constraint reads Γ: the integral is not needed.
-                work_of_adhesion: false,
-            },
+            options,
+            humidities,
+            objective_humidity: Some(scene_rh),
+        };
+        if !range.design_given {
+            // The worst humidity for the objective at the baseline design.
+            let x = f.space.baseline_unit();
+            let worst = f
+                .humidities
+                .iter()
+                .filter_map(|&h| {
+                    let scene = at_humidity(f.space.scene_at(&x), h);
+                    let ev = evaluate_from(&scene, &f.options, SearchHints::default());
+                    (ev.status == Status::Ok).then(|| (h, ln_objective(objective, &ev, &scene)))
+                })
+                .max_by(|a, b| a.1.total_cmp(&b.1));
+            if let Some((h, _)) = worst {
+                f.objective_humidity = Some(h);
+            }
+        }
+        f
+    }
+
+    /// The scene at design x, at the humidity the objective is taken at.
+    pub fn scene_at(&self, x: &[f64]) -> crate::model::Scene {
+        let scene = self.space.scene_at(x);
+        match self.objective_humidity {
+            Some(h) => at_humidity(scene, h),
+            None => scene,
         }
     }
 
@@ -308,43 +371,40 @@ impl StudyFunctions {
     /// (those of a nearby point); the result does not depend on them beyond
     /// the last few ulps of the separation.
     pub fn at_from(&self, x: &[f64], hints: SearchHints) -> Option<Point> {
-        let scene = self.space.scene_at(x);
+        let scene = self.scene_at(x);
         let ev = evaluate_from(&scene, &self.options, hints);
         if ev.status != Status::Ok {
             return None;
         }
-        Some(self.point_of(x, &ev, &scene))
+        if self.humidities.is_empty() {
+            return Some(self.point_of(x, &ev, &scene));
+        }
+        // Every row at its humidity: one evaluation per humidity of the range.
+        let mut point = self.point_of(x, &ev, &scene);
+        for &h in &self.humidities {
+            let s = at_humidity(self.space.scene_at(x), h);
+            let e = if Some(h) == self.objective_humidity {
+                ev.clone()
+            } else {
+                evaluate_from(&s, &self.options, SearchHints::default())
+            };
+            if e.status != Status::Ok {
+                return None;
+            }
+            for (j, r) in self.rows.iter().enumerate() {
+                if r.humidity == Some(h) {
+                    point.rows[j] = row_value(r, &e, &s);
+                }
+            }
+        }
+        Some(point)
     }
 
     /// Objective and rows from an evaluation already made.
+    /// Over a humidity range every row is taken from this one evaluation: use
+    /// [`StudyFunctions::at`] for the rows at their own humidities.
     pub fn point_of(&self, x: &[f64], ev: &Evaluation, scene: &crate::model::Scene) -> Point {
-        let rows = self
-            .rows
-            .iter()
-            .map(|r| match r.scaling {
-                Scaling::Log => {
-                    let lq = ln_quantity(r.quantity, ev, scene);
-                    match r.side {
-                        Side::Max => lq - r.limit.ln(),
-                        Side::Min => r.limit.ln() - lq,
-                    }
-                }
-                Scaling::Linear(scale) => {
-                    let q = quantity_value(r.quantity, ev, scene).unwrap_or(0.0);
-                    match r.side {
-                        Side::Max => (q - r.limit) / scale,
-                        Side::Min => (r.limit - q) / scale,
-                    }
-                }
-            })
-            .map(|g: f64| {
-                if g.is_nan() {
-                    -ROW_FLOOR
-                } else {
-                    g.max(ROW_FLOOR)
-                }
-            })
-            .collect();
+        let rows = self.rows.iter().map(|r| row_value(r, ev, scene)).collect();
         Point {
             x: x.to_vec(),
             objective: ln_objective(self.objective, ev, scene),
@@ -355,6 +415,39 @@ impl StudyFunctions {
             },
         }
     }
+}
+
+/// A row's value g (≤ 0 is feasible) from an evaluation.
+fn row_value(r: &Row, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
+    let g: f64 = match r.scaling {
+        Scaling::Log => {
+            let lq = ln_quantity(r.quantity, ev, scene);
+            match r.side {
+                Side::Max => lq - r.limit.ln(),
+                Side::Min => r.limit.ln() - lq,
+            }
+        }
+        Scaling::Linear(scale) => {
+            let q = quantity_value(r.quantity, ev, scene).unwrap_or(0.0);
+            match r.side {
+                Side::Max => (q - r.limit) / scale,
+                Side::Min => (r.limit - q) / scale,
+            }
+        }
+    };
+    if g.is_nan() {
+        -ROW_FLOOR
+    } else {
+        g.max(ROW_FLOOR)
+    }
+}
+
+/// The scene with its relative humidity set to `h` (its environment's other values kept).
+pub fn at_humidity(mut scene: crate::model::Scene, h: f64) -> crate::model::Scene {
+    if let Some(env) = scene.environment.as_mut() {
+        env.relative_humidity = h;
+    }
+    scene
 }
 
 fn hints_of(near: &[f64]) -> SearchHints {

@@ -107,6 +107,10 @@ pub struct ConstraintReport {
     pub shadow_price: f64,
     /// Violation of the scaled row (0 when satisfied).
     pub violation: f64,
+    /// Over a humidity range: the humidity where the limit binds (its row nearest to
+    /// or furthest beyond the limit), at which `value` is taken; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub humidity: Option<f64>,
 }
 
 /// A bound of the design box on which the optimum lies.
@@ -144,6 +148,9 @@ pub struct StartsSummary {
 /// The result of a study.
 #[derive(Debug, Clone)]
 pub struct Optimum {
+    /// Over a humidity range: the humidity the objective (and `evaluation`) is
+    /// taken at; None for a study at one humidity.
+    pub objective_humidity: Option<f64>,
     /// How it ended.
     pub status: OptimizationStatus,
     /// The design variables, in file order.
@@ -601,10 +608,14 @@ fn assemble(
         .filter(feasible)
         .count();
 
-    let scene = functions.space.scene_at(&best_point.x);
+    let scene = functions.scene_at(&best_point.x);
     let evaluation = crate::model::evaluate(&scene, &functions.options);
     let baseline_evaluation = {
-        let ev = crate::model::evaluate(study.scene, &functions.options);
+        let baseline = match functions.objective_humidity {
+            Some(h) => functions::at_humidity(study.scene.clone(), h),
+            None => study.scene.clone(),
+        };
+        let ev = crate::model::evaluate(&baseline, &functions.options);
         (ev.status == crate::model::Status::Ok).then_some(ev)
     };
     let constraints = constraint_reports(
@@ -655,6 +666,7 @@ fn assemble(
         })
         .collect();
     Ok(Optimum {
+        objective_humidity: functions.objective_humidity,
         status,
         baseline_design: functions.space.values(&baseline_x),
         names,
@@ -708,6 +720,18 @@ fn constraint_reports(
                 .collect();
             let (mut multiplier, mut shadow, mut violation, mut active) =
                 (0.0f64, 0.0, 0.0f64, false);
+            // Over a humidity range: the humidity of the row nearest its limit (none
+            // where every humidity gives the same value: the limit binds at all alike).
+            let (lo, hi) = rows
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (j, _)| {
+                    (a.min(point.rows[*j]), b.max(point.rows[*j]))
+                });
+            let binding = rows
+                .iter()
+                .max_by(|a, b| point.rows[a.0].total_cmp(&point.rows[b.0]))
+                .and_then(|(_, r)| r.humidity)
+                .filter(|_| hi - lo > 1e-12 * hi.abs().max(1.0));
             for (j, r) in rows {
                 let l = multipliers.get(j).copied().unwrap_or(0.0);
                 let g = point.rows[j];
@@ -720,15 +744,24 @@ fn constraint_reports(
                     shadow = r.shadow_price(l) + 0.0; // no "-0" in reports
                 }
             }
+            let value = match binding {
+                Some(h) => {
+                    let s = functions::at_humidity(scene.clone(), h);
+                    let e = crate::model::evaluate(&s, &functions.options);
+                    functions::quantity_value(c.quantity, &e, &s)
+                }
+                None => functions::quantity_value(c.quantity, ev, scene),
+            };
             ConstraintReport {
                 quantity: c.quantity,
-                value: functions::quantity_value(c.quantity, ev, scene),
+                value,
                 min: c.min,
                 max: c.max,
                 active,
                 multiplier,
                 shadow_price: shadow,
                 violation,
+                humidity: binding,
             }
         })
         .collect()

@@ -66,7 +66,7 @@ pub use study::{Dimensioned, Study};
 pub use topography::ScanSource;
 
 use crate::model::{
-    AdhesionModel, AttractionKind, Cantilever, Environment, Liquid, Scene, WearArea,
+    AdhesionModel, AttractionKind, Cantilever, Environment, HumidityRange, Liquid, Scene, WearArea,
 };
 use crate::optimize::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Named, Objective,
@@ -981,17 +981,15 @@ impl Reader<'_> {
         };
         let espan = env.span();
         let e = env.get_ref();
-        let rh = self.quantity(
+        let rh_accept = Accept::interval(Dimension::Dimensionless, 0.0, false, 1.0, true)
+            .why("the relative humidity, 0 (dry) to below 1 (saturated)");
+        let rh_value = self.required(
+            &e.relative_humidity,
             "environment.relative_humidity",
-            self.required(
-                &e.relative_humidity,
-                "environment.relative_humidity",
-                Some(&espan),
-                "the relative humidity, e.g. relative_humidity = 0.5 or \"50 %\"",
-            )?,
-            Accept::interval(Dimension::Dimensionless, 0.0, false, 1.0, true)
-                .why("the relative humidity, 0 (dry) to below 1 (saturated)"),
+            Some(&espan),
+            "the relative humidity, e.g. relative_humidity = 0.5 or \"50 %\"",
         )?;
+        let (rh, humidity_range) = self.humidity(rh_value, e, rh_accept)?;
         let temperature = self
             .optional_quantity(
                 "environment.temperature",
@@ -1023,7 +1021,124 @@ impl Reader<'_> {
             liquid,
             contact_angle_a: theta_a,
             contact_angle_b: theta_b,
+            humidity_range,
         }))
+    }
+
+    /// `relative_humidity` as one value or a `{ min, max }` range with
+    /// `humidity_points` and `design_humidity`: the humidity an evaluation uses (the
+    /// design humidity, else the range's wettest end) and the range.
+    fn humidity(
+        &self,
+        value: &Spanned<toml::Value>,
+        e: &raw::RawEnvironment,
+        accept: Accept,
+    ) -> Result<(f64, Option<HumidityRange>), ProblemError> {
+        let span = value.span();
+        let key = "environment.relative_humidity";
+        let as_raw = |v: &toml::Value| -> Option<RawQuantity> {
+            match v {
+                toml::Value::String(s) => Some(RawQuantity::Text(s.clone())),
+                toml::Value::Float(x) => Some(RawQuantity::Number(*x)),
+                toml::Value::Integer(x) => Some(RawQuantity::Number(*x as f64)),
+                _ => None,
+            }
+        };
+        let read = |field: &str, v: &toml::Value| -> Result<f64, ProblemError> {
+            let raw = as_raw(v).ok_or_else(|| {
+                self.invalid(
+                    field,
+                    &span,
+                    "must be a number such as 0.5 or a string such as \"50 %\"",
+                )
+            })?;
+            let x = parse_quantity(raw.as_input(), Dimension::Dimensionless)
+                .map_err(|err| self.invalid(field, &span, err.to_string()))?;
+            accept
+                .check(x)
+                .map_err(|reason| self.invalid(field, &span, reason))?;
+            Ok(x)
+        };
+        let toml::Value::Table(t) = value.get_ref() else {
+            for (k, v) in [
+                (
+                    "humidity_points",
+                    e.humidity_points.as_ref().map(|p| p.span()),
+                ),
+                (
+                    "design_humidity",
+                    e.design_humidity.as_ref().map(|p| p.span()),
+                ),
+            ] {
+                if let Some(at) = v {
+                    return Err(self.invalid(
+                        &format!("environment.{k}"),
+                        &at,
+                        "applies to a humidity range only: write relative_humidity = { min = …, max = … }",
+                    ));
+                }
+            }
+            return Ok((read(key, value.get_ref())?, None));
+        };
+        for k in t.keys() {
+            if k != "min" && k != "max" {
+                return Err(self.invalid(
+                    key,
+                    &span,
+                    format!("unknown key {k:?}: a humidity range is {{ min = 0.0, max = 0.9 }}"),
+                ));
+            }
+        }
+        let get = |k: &str| -> Result<f64, ProblemError> {
+            let field = format!("{key}.{k}");
+            match t.get(k) {
+                Some(v) => read(&field, v),
+                None => Err(self.invalid(
+                    &field,
+                    &span,
+                    "missing: a humidity range needs both ends, e.g. { min = 0.0, max = 0.9 }",
+                )),
+            }
+        };
+        let (min, max) = (get("min")?, get("max")?);
+        if min >= max {
+            return Err(self.invalid(
+                key,
+                &span,
+                format!("min must be < max (min is {min}, max is {max})"),
+            ));
+        }
+        let points = match &e.humidity_points {
+            None => 9,
+            Some(p) => self.integer(
+                "environment.humidity_points",
+                p,
+                2,
+                101,
+                "humidities the limits must hold at, both ends included",
+            )? as usize,
+        };
+        let design = e
+            .design_humidity
+            .as_ref()
+            .map(|d| {
+                self.quantity(
+                    "environment.design_humidity",
+                    d,
+                    Accept::interval(Dimension::Dimensionless, min, false, max, false)
+                        .why("the humidity the objective is taken at, inside the range"),
+                )
+            })
+            .transpose()?;
+        Ok((
+            design.unwrap_or(max),
+            Some(HumidityRange {
+                min,
+                max,
+                points,
+                design_given: design.is_some(),
+            }),
+        ))
     }
 
     /// `environment.liquid`: `"water"` or a table of its two properties.

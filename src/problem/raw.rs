@@ -111,7 +111,10 @@ pub struct RawProblem {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawEnvironment {
-    pub relative_humidity: Option<Spanned<RawQuantity>>,
+    /// A humidity (`0.5`, `"50 %"`) or, in a study, a range (`{ min = 0, max = 0.9 }`).
+    pub relative_humidity: Option<Spanned<toml::Value>>,
+    pub humidity_points: Option<Spanned<RawInteger>>,
+    pub design_humidity: Option<Spanned<RawQuantity>>,
     pub temperature: Option<Spanned<RawQuantity>>,
     /// `"water"` or `{ surface_tension = …, molar_volume = … }`.
     pub liquid: Option<Spanned<toml::Value>>,

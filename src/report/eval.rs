@@ -760,6 +760,15 @@ pub fn text(r: &EvalReport) -> String {
         for [label, value] in humidity_rows(hum) {
             line(format!("  {label}: {value}"));
         }
+        if let Some(r) = sc.environment.and_then(|e| e.humidity_range) {
+            line(format!(
+                "  the file's study holds its limits over RH {}–{} % ({} humidities); this evaluation is at {} %",
+                sig(100.0 * r.min, 4),
+                sig(100.0 * r.max, 4),
+                r.points,
+                sig(100.0 * hum.relative_humidity, 4)
+            ));
+        }
     }
     line(String::new());
     line("Wear (Archard, V = k A L)".into());

@@ -133,6 +133,14 @@ pub fn json(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
 
 /// The object [`json()`] writes, as a value.
 pub fn json_value(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> Value {
+    let mut v = json_fields(name, o, broken);
+    if let (Some(h), Value::Object(obj)) = (o.objective_humidity, &mut v) {
+        obj.insert("objective_humidity".into(), json!(h));
+    }
+    v
+}
+
+fn json_fields(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> Value {
     json!({
         "name": name,
         "status": o.status.as_str(),
@@ -228,6 +236,13 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
             si(o.objective, unit, 4),
         ));
     } else {
+        if let Some(h) = o.objective_humidity {
+            line(format!(
+                "{} taken at RH = {} % (the range's humidity where it is worst at the baseline, or the file's design_humidity); every limit holds at each humidity of the range",
+                o.objective_name,
+                sig(100.0 * h, 4)
+            ));
+        }
         line(format!(
             "{}: {} at the optimum, {} at the baseline{}",
             o.objective_name,
@@ -296,6 +311,13 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
                 sig_exp(c.multiplier, 3),
                 sig_exp(c.shadow_price, 3)
             ));
+            if let Some(h) = c.humidity {
+                line(format!(
+                    "  {} holds at each humidity of the range; it binds at RH = {} % (the value shown)",
+                    c.quantity,
+                    sig(100.0 * h, 4)
+                ));
+            }
         }
         line("  shadow price = d ln(objective) / d ln(limit): relaxing a limit by 1 % changes the objective by about that many per cent".into());
     }
@@ -485,7 +507,10 @@ pub fn html(
             .iter()
             .map(|c| {
                 vec![
-                    c.quantity.to_string(),
+                    match c.humidity {
+                        Some(h) => format!("{} (binds at RH {} %)", c.quantity, sig(100.0 * h, 4)),
+                        None => c.quantity.to_string(),
+                    },
                     f(c.quantity, c.value),
                     f(c.quantity, c.min),
                     f(c.quantity, c.max),

@@ -327,10 +327,17 @@ impl Sweep {
     /// Evaluates design `index`.
     pub fn row(&self, index: u64) -> SweepRow {
         let x = self.unit_point(index);
-        let scene = self.functions.space.scene_at(&x);
+        let scene = self.functions.scene_at(&x);
         let ev = model::evaluate(&scene, &self.functions.options);
+        // Over a humidity range the limits hold at each humidity: the study's own rows.
         let feasible = ev.status == Status::Ok
-            && self.functions.point_of(&x, &ev, &scene).max_violation() <= FEASIBILITY_TOLERANCE;
+            && if self.functions.humidities.is_empty() {
+                self.functions.point_of(&x, &ev, &scene).max_violation() <= FEASIBILITY_TOLERANCE
+            } else {
+                self.functions
+                    .at(&x)
+                    .is_some_and(|p| p.max_violation() <= FEASIBILITY_TOLERANCE)
+            };
         let finite = |v: Option<f64>| v.filter(|v| v.is_finite());
         SweepRow {
             index,

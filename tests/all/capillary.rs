@@ -507,3 +507,72 @@ fn a_hydrophobic_coating_frees_the_hub_in_humid_air() {
     let ev = evaluate(&scene, &EvaluationOptions::default());
     assert_eq!(ev.humidity.unwrap().kelvin_radius, None);
 }
+
+/// A study over a humidity range (`relative_humidity = { min, max }`): every limit holds at
+/// each of `humidity_points` humidities, the objective is taken at the worst one for it,
+/// and the report says where each limit binds.
+#[test]
+fn a_study_over_a_humidity_range_holds_at_every_humidity() {
+    use wearopt::model::SceneParameter;
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/micro-gear-coating-study.toml"
+    ))
+    .unwrap()
+    .replace("humidity_points = 9", "humidity_points = 7")
+    .replace(
+        "min = \"0 deg\", max = \"110 deg\"",
+        "min = \"0 deg\", max = \"80 deg\"",
+    )
+    .replace("max = \"50 uN\"", "max = \"1 mN\"");
+    let problem = wearopt::problem::parse(&text, "range.toml").unwrap();
+    let range = problem.scene.environment.unwrap().humidity_range.unwrap();
+    assert_eq!((range.min, range.max, range.points), (0.0, 0.9, 7));
+    let doc = wearopt::app::optimize::optimize(&problem, "range", Default::default()).unwrap();
+    let json = wearopt::report::optimize::json_document(&doc);
+    assert_eq!(json["status"], "optimal", "{json}");
+    // Wear grows with humidity: the objective's worst humidity is the wettest.
+    assert_eq!(json["objective_humidity"], 0.9);
+    // Pull-off grows with humidity: the limit binds at the wettest end.
+    assert_eq!(json["constraints"][0]["humidity"], 0.9, "{json}");
+    // Every humidity of the range meets the limit at the optimum.
+    let mut scene = problem.scene.clone();
+    for (k, p) in [
+        ("contact_angle", SceneParameter::ContactAngle),
+        ("work_of_adhesion", SceneParameter::WorkOfAdhesion),
+    ] {
+        p.set(&mut scene, json["design"][k].as_f64().unwrap());
+    }
+    for rh in range.humidities() {
+        if let Some(env) = scene.environment.as_mut() {
+            env.relative_humidity = rh;
+        }
+        let f = evaluate(&scene, &EvaluationOptions::default())
+            .pull_off_force
+            .unwrap();
+        assert!(f <= 1e-3, "RH {rh}: pull-off {f}");
+    }
+    // Bad ranges name the field.
+    for (bad, words) in [
+        (
+            "relative_humidity = { min = 0.9, max = 0.5 }",
+            "min must be < max",
+        ),
+        (
+            "relative_humidity = { min = 0.0, max = 1.0 }",
+            "must be in [0, 1)",
+        ),
+        (
+            "relative_humidity = 0.5\nhumidity_points = 3",
+            "applies to a humidity range only",
+        ),
+    ] {
+        let t = text
+            .replace("humidity_points = 7", "")
+            .replace("relative_humidity = { min = 0.0, max = 0.9 }", bad);
+        let err = wearopt::problem::parse(&t, "bad.toml")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains(words), "{bad}: {err}");
+    }
+}
