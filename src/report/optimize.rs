@@ -481,6 +481,16 @@ pub fn html(
     p.list(&bounds, "note");
     let unit = super::objective_unit(o.objective_name);
     p.heading("Objective");
+    if let Some(h) = o.objective_humidity {
+        p.paragraph(
+            &format!(
+                "{} is taken at RH = {} % (the range's humidity where it is worst at the baseline, or the file's design_humidity); every limit holds at each humidity of the range.",
+                o.objective_name,
+                sig(100.0 * h, 4)
+            ),
+            None,
+        );
+    }
     let mut rows = vec![vec![
         o.objective_name.to_string(),
         si(o.objective, unit, 4),
