@@ -12,6 +12,7 @@ pub mod asperity;
 pub mod capillary;
 pub mod coefficients;
 pub(crate) mod dmt;
+pub mod environment;
 pub mod gauss;
 pub mod integrals;
 pub mod law;
@@ -28,8 +29,9 @@ pub mod warnings;
 pub mod wear;
 pub mod work;
 
-pub use capillary::{Capillary, Environment, HumidityRange, Liquid, Meniscus};
+pub use capillary::Capillary;
 pub use coefficients::{Coefficients, DomainError, Transition};
+pub use environment::{Environment, HumidityRange, Liquid, Meniscus};
 pub use integrals::{Integrals, Model};
 pub use law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};
 pub use load_curve::{load_curve, LoadCurve};

@@ -2,7 +2,7 @@
 
 use serde::Serialize;
 
-use super::capillary::Environment;
+use super::environment::Environment;
 use super::law::{AdhesionModel, AttractionKind};
 
 /// Which real area wears (paper eq. 13): all contacts, or only the plastic
@@ -236,7 +236,7 @@ impl Scene {
                     "in [0, π] rad (0° to 180°)",
                 )?;
             }
-            if let super::capillary::Liquid::Given {
+            if let super::environment::Liquid::Given {
                 surface_tension,
                 molar_volume,
             } = env.liquid

@@ -124,6 +124,21 @@ fn continuum_words(doc: &HumidityDocument) -> Option<String> {
     })
 }
 
+/// A row's numbers for people: RH %, separation, capillary load, pull-off, Γ, wet
+/// fraction, wear rate ("—" where one does not exist).
+fn cells(r: &HumidityRow) -> [String; 7] {
+    let q = |x: Option<f64>, u: &str| x.map_or("—".into(), |x| si(x, u, 4));
+    [
+        sig(100.0 * r.relative_humidity, 4),
+        q(r.separation, "m"),
+        q(r.capillary_load, "N"),
+        q(r.pull_off_force, "N"),
+        q(r.apparent_work_of_adhesion, "J/m²"),
+        r.wetted_fraction.map_or("—".into(), |w| sig_exp(w, 3)),
+        si(r.wear_rate, "m³/m", 4),
+    ]
+}
+
 /// The report for people.
 pub fn text(doc: &HumidityDocument) -> String {
     let mut o = format!("wearopt humidity — {}\n\n", doc.name);
@@ -143,17 +158,10 @@ pub fn text(doc: &HumidityDocument) -> String {
         "  {:>7}  {:>11}  {:>12}  {:>11}  {:>12}  {:>9}  {:>12}\n",
         "RH %", "separation", "capillary", "pull-off", "Γ", "wet", "wear rate"
     ));
-    let q = |x: Option<f64>, u: &str| x.map_or("—".into(), |x| si(x, u, 4));
     for r in &doc.rows {
+        let [rh, d, cap, pull, gamma, wet, wear] = cells(r);
         o.push_str(&format!(
-            "  {:>7}  {:>11}  {:>12}  {:>11}  {:>12}  {:>9}  {:>12}{}\n",
-            sig(100.0 * r.relative_humidity, 4),
-            q(r.separation, "m"),
-            q(r.capillary_load, "N"),
-            q(r.pull_off_force, "N"),
-            q(r.apparent_work_of_adhesion, "J/m²"),
-            r.wetted_fraction.map_or("—".into(), |w| sig_exp(w, 3)),
-            si(r.wear_rate, "m³/m", 4),
+            "  {rh:>7}  {d:>11}  {cap:>12}  {pull:>11}  {gamma:>12}  {wet:>9}  {wear:>12}{}\n",
             match r.status {
                 crate::model::Status::Ok => String::new(),
                 s => format!("  ({})", s.as_str()),
@@ -245,21 +253,15 @@ pub fn html(doc: &HumidityDocument) -> String {
         &format!("{}.", capitalize(&threshold_words(doc))),
         Some("status"),
     );
-    let q = |x: Option<f64>, u: &str| x.map_or("—".into(), |x| si(x, u, 4));
     let rows: Vec<Vec<String>> = doc
         .rows
         .iter()
         .map(|r| {
-            vec![
-                sig(100.0 * r.relative_humidity, 4),
-                q(r.separation, "m"),
-                q(r.capillary_load, "N"),
-                q(r.pull_off_force, "N"),
-                q(r.apparent_work_of_adhesion, "J/m²"),
-                r.wetted_fraction.map_or("—".into(), |w| sig_exp(w, 3)),
-                si(r.wear_rate, "m³/m", 4),
+            let mut row = Vec::from(cells(r));
+            row.push(
                 r.status.as_str().to_string() + if below_continuum(doc, r) { " †" } else { "" },
-            ]
+            );
+            row
         })
         .collect();
     p.figure(
