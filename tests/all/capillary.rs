@@ -578,3 +578,33 @@ fn a_study_over_a_humidity_range_holds_at_every_humidity() {
         assert!(err.contains(words), "{bad}: {err}");
     }
 }
+
+/// DelRio et al. (2007): the threshold humidity rises with the roughness. The humid hub at
+/// σ = 1, 3 and 10 nm (DMT, van der Waals, water wetting both bodies): 46 %, 76 % and 93 %.
+#[test]
+fn the_threshold_humidity_rises_with_roughness() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/problems/micro-gear-humid.toml"
+    ))
+    .unwrap();
+    let options = wearopt::app::humidity::HumidityOptions {
+        from: 0.0,
+        to: 0.98,
+        points: 50,
+    };
+    let mut last = 0.0;
+    for sigma in ["1 nm", "3 nm", "10 nm"] {
+        let t = text.replace("sigma = \"3 nm\"", &format!("sigma = \"{sigma}\""));
+        let problem = wearopt::problem::parse(&t, "hub.toml").unwrap();
+        let doc = wearopt::app::humidity::humidity(&problem, "hub", &options).unwrap();
+        let threshold = doc
+            .threshold_humidity
+            .expect("Γ reaches ten times its dry value");
+        assert!(
+            threshold > last,
+            "σ = {sigma}: threshold {threshold} ≤ {last}"
+        );
+        last = threshold;
+    }
+}
