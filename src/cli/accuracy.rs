@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use clap::Args;
 
 use wearopt::report::{self, Format};
@@ -31,8 +31,7 @@ pub fn run(args: AccuracyArgs) -> Result<ExitCode> {
     let problem = args.file.as_deref().map(wearopt::app::load).transpose()?;
     let wp = wearopt::app::accuracy::accuracy(problem.as_ref())?;
     if let Some(path) = &args.plot {
-        std::fs::write(path, report::accuracy::svg(&wp))
-            .with_context(|| format!("writing the plot to {}", path.display()))?;
+        super::write_output(path, &report::accuracy::svg(&wp), "the plot")?;
     }
     super::print_out(&report::accuracy::render(&wp, args.format)?)?;
     Ok(ExitCode::SUCCESS)

@@ -5,7 +5,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 
 use wearopt::app::figures::{self as fig, FigureSettings};
 use wearopt::app::{AppError, OptionName};
@@ -36,7 +36,7 @@ pub struct FiguresArgs {
 }
 
 fn write(path: &Path, contents: &str) -> Result<()> {
-    fs::write(path, contents).with_context(|| format!("cannot write {}", path.display()))
+    super::write_output(path, contents, "the figure")
 }
 
 /// Runs `wearopt figures`: computes, writes the files, prints the report.

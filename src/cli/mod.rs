@@ -307,14 +307,19 @@ pub(crate) fn print_out(text: &str) -> Result<()> {
     }
 }
 
-/// Writes `text` to `path`, or to stdout when the path is "-".
+/// Writes `text` to `path`, or to stdout when the path is "-". A path that cannot be
+/// written (a missing folder, no permission) is the user's input: exit code 2.
 pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Result<()> {
     if path.as_os_str() == "-" {
         print_out(text)
     } else {
-        std::fs::write(path, text)
-            .map_err(|e| anyhow::anyhow!("writing {what} to {}: {e}", path.display()))
+        std::fs::write(path, text).map_err(|e| unwritable(path, what, &e))
     }
+}
+
+/// The error of an output path that cannot be written (exit code 2).
+pub(crate) fn unwritable(path: &std::path::Path, what: &str, e: &std::io::Error) -> anyhow::Error {
+    usage(format!("cannot write {what} to {}: {e}", path.display()))
 }
 
 fn usage(msg: String) -> anyhow::Error {

@@ -162,8 +162,7 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         }
     }
     if let Some(path) = &args.plot {
-        std::fs::write(path, out::svg(&doc.plan.name, &doc.front))
-            .with_context(|| format!("writing the plot to {}", path.display()))?;
+        super::write_output(path, &out::svg(&doc.plan.name, &doc.front), "the plot")?;
     }
     Ok(match doc.front.status {
         FrontStatus::Infeasible => ExitCode::from(1),

@@ -189,7 +189,7 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
 
     let writer: Box<dyn Write> = match &args.out {
         Some(path) => Box::new(std::io::BufWriter::new(
-            std::fs::File::create(path).with_context(|| format!("creating {}", path.display()))?,
+            std::fs::File::create(path).map_err(|e| super::unwritable(path, "the sweep", &e))?,
         )),
         None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
     };
@@ -251,8 +251,11 @@ fn write_map(
     direction: ParetoDirection,
 ) -> Result<()> {
     let optimal = sw::pareto_optimal(points, direction);
-    std::fs::write(path, out::map_svg(name, points, &optimal, direction))
-        .with_context(|| format!("writing the plot to {}", path.display()))
+    super::write_output(
+        path,
+        &out::map_svg(name, points, &optimal, direction),
+        "the plot",
+    )
 }
 
 /// Runs `wearopt merge`.

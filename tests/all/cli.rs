@@ -478,3 +478,48 @@ fn a_closed_pipe_is_not_a_panic() {
     }
     let _ = std::fs::remove_dir_all(&figures);
 }
+
+/// An output path that cannot be written is the user's input: exit code 2, with the
+/// path and what was to be written (issue 21, item 6: it was exit code 1).
+#[test]
+fn unwritable_output_paths_exit_2() {
+    let missing = std::env::temp_dir()
+        .join(format!("wearopt-no-such-folder-{}", std::process::id()))
+        .join("x");
+    let path = missing.to_str().unwrap();
+    for args in [
+        vec!["eval", "problems/micro-gear.toml", "--out", path],
+        vec![
+            "optimize",
+            "problems/micro-gear-study.toml",
+            "--trace",
+            path,
+        ],
+        vec![
+            "humidity",
+            "problems/micro-gear-humid.toml",
+            "--from",
+            "0",
+            "--to",
+            "0.5",
+            "--points",
+            "2",
+            "--plot",
+            path,
+        ],
+        vec![
+            "sweep",
+            "problems/micro-gear-study.toml",
+            "--samples",
+            "4",
+            "--out",
+            path,
+        ],
+    ] {
+        let err = String::from_utf8(common::stderr(wearopt().args(&args), 2)).unwrap();
+        assert!(
+            err.contains("cannot write") && err.contains(path),
+            "{args:?}: {err}"
+        );
+    }
+}
