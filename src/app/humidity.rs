@@ -141,18 +141,17 @@ pub fn humidity(
     valid_scene(problem, origin)?;
     let scene = &problem.scene;
     let environment = scene.environment.unwrap_or_default();
-    let n = options.points;
-    let rows: Vec<HumidityRow> = (0..n)
-        .map(|i| {
-            // Both ends exact.
-            let t = i as f64 / (n - 1) as f64;
-            let rh = if i == n - 1 {
-                options.to
-            } else {
-                options.from + t * (options.to - options.from)
-            };
-            row(scene, &environment, rh)
-        })
+    // Evenly spaced, both ends exact: the humidities a study's range holds at.
+    let humidities = model::HumidityRange {
+        min: options.from,
+        max: options.to,
+        points: options.points,
+        design_given: false,
+    }
+    .humidities();
+    let rows: Vec<HumidityRow> = humidities
+        .into_iter()
+        .map(|rh| row(scene, &environment, rh))
         .collect();
     let dry = row(scene, &environment, 0.0);
     let threshold = threshold(scene, &environment, &rows, &dry);

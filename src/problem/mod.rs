@@ -1036,16 +1036,8 @@ impl Reader<'_> {
     ) -> Result<(f64, Option<HumidityRange>), ProblemError> {
         let span = value.span();
         let key = "environment.relative_humidity";
-        let as_raw = |v: &toml::Value| -> Option<RawQuantity> {
-            match v {
-                toml::Value::String(s) => Some(RawQuantity::Text(s.clone())),
-                toml::Value::Float(x) => Some(RawQuantity::Number(*x)),
-                toml::Value::Integer(x) => Some(RawQuantity::Number(*x as f64)),
-                _ => None,
-            }
-        };
         let read = |field: &str, v: &toml::Value| -> Result<f64, ProblemError> {
-            let raw = as_raw(v).ok_or_else(|| {
+            let raw = RawQuantity::from_value(v).ok_or_else(|| {
                 self.invalid(
                     field,
                     &span,
@@ -1159,12 +1151,8 @@ impl Reader<'_> {
                 let get = |key: &str, dim: Dimension, example: &str| -> Result<f64, ProblemError> {
                     let field = format!("environment.liquid.{key}");
                     let raw = match t.get(key) {
-                        Some(toml::Value::String(s)) => RawQuantity::Text(s.clone()),
-                        Some(toml::Value::Float(x)) => RawQuantity::Number(*x),
-                        Some(toml::Value::Integer(x)) => RawQuantity::Number(*x as f64),
-                        Some(_) => {
-                            return Err(self.invalid(&field, &span, dim.expectation()));
-                        }
+                        Some(v) => RawQuantity::from_value(v)
+                            .ok_or_else(|| self.invalid(&field, &span, dim.expectation()))?,
                         None => {
                             return Err(self.invalid(
                                 &field,

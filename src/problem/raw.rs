@@ -21,6 +21,17 @@ pub enum RawQuantity {
 }
 
 impl RawQuantity {
+    /// A quantity inside an untyped TOML value (an inline table's entry): a string or
+    /// a number, else None.
+    pub fn from_value(v: &toml::Value) -> Option<RawQuantity> {
+        match v {
+            toml::Value::String(s) => Some(RawQuantity::Text(s.clone())),
+            toml::Value::Float(x) => Some(RawQuantity::Number(*x)),
+            toml::Value::Integer(x) => Some(RawQuantity::Number(*x as f64)),
+            _ => None,
+        }
+    }
+
     /// As input to [`crate::units::parse_quantity`].
     pub fn as_input(&self) -> crate::units::QuantityInput<'_> {
         match self {
