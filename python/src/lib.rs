@@ -133,6 +133,31 @@ fn humidity_json(
     })
 }
 
+/// `wearopt asperity --tabor MU --from D0 --to D1 --points N --adhesion-model LAW --format json`.
+#[pyfunction]
+#[pyo3(signature = (tabor, from_, to, points, adhesion_model))]
+fn asperity_json(
+    py: Python<'_>,
+    tabor: f64,
+    from_: f64,
+    to: f64,
+    points: usize,
+    adhesion_model: String,
+) -> PyResult<String> {
+    detached(py, || {
+        let law = app::asperity::law(&adhesion_model).map_err(words)?;
+        let doc = app::asperity::asperity(&app::asperity::AsperityOptions {
+            tabor,
+            from: from_,
+            to,
+            points,
+            law,
+        })
+        .map_err(words)?;
+        Ok(report::asperity::json(&doc))
+    })
+}
+
 /// The asperity law of `curve`'s keyword arguments.
 fn law(
     adhesion_model: &str,
@@ -484,6 +509,7 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(optimize_json, m)?)?;
     m.add_function(wrap_pyfunction!(pareto_json, m)?)?;
     m.add_function(wrap_pyfunction!(humidity_json, m)?)?;
+    m.add_function(wrap_pyfunction!(asperity_json, m)?)?;
     m.add_function(wrap_pyfunction!(curve_arrays, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_text, m)?)?;
     m.add_function(wrap_pyfunction!(merge_text, m)?)?;

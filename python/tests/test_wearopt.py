@@ -434,3 +434,21 @@ def test_humidity_equals_cli_json_and_words_errors_as_keywords():
         wearopt.humidity(path, 0.0, 0.5, 1)
     with pytest.raises(ValueError, match=r"^to=1: a relative humidity must lie in \[0, 1\)"):
         wearopt.humidity(path, 0.0, 1.0, 4)
+
+
+def test_asperity_equals_cli_json_and_words_errors_as_keywords():
+    expected = json.loads(
+        cli("asperity", "--tabor", "3", "--from", "-1", "--to", "0", "--points", "3", "--format", "json").stdout
+    )
+    got = wearopt.asperity(3.0, -1.0, 0.0, 3)
+    assert got == expected
+    assert got["jump_in"]["interference"] > got["jump_out"]["interference"]
+    assert [p["branch"] for p in got["points"]][0] == "approach"
+    jkr = wearopt.asperity(3.0, -1.0, 0.0, 3, adhesion_model="jkr")
+    assert jkr["pull_off"]["load"] == -1.5
+    with pytest.raises(ValueError, match=r"^tabor=0: the Tabor parameter"):
+        wearopt.asperity(0.0, -1.0, 0.0, 3)
+    with pytest.raises(ValueError, match=r"^adhesion_model=maugis: the asperity laws are lennard_jones, jkr, dmt"):
+        wearopt.asperity(1.0, -1.0, 0.0, 3, adhesion_model="maugis")
+    with pytest.raises(ValueError, match=r"^points=1: must lie in 2..="):
+        wearopt.asperity(1.0, -1.0, 0.0, 1)

@@ -16,6 +16,7 @@
 //! infeasible, not converged) are statuses inside the documents, never errors.
 
 pub mod accuracy;
+pub mod asperity;
 pub mod curve;
 pub mod eval;
 pub mod figures;

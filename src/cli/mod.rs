@@ -76,6 +76,14 @@ Example:\n  wearopt humidity problems/micro-gear-humid.toml --from 0 --to 0.95 -
 wearopt humidity problems/micro-gear-humid.toml --from 0 --to 0.95 --points 20 --format csv --plot humidity.svg"
     )]
     Humidity(HumidityArgs),
+    /// One asperity's load against its interference in Maugis units (the Lennard-Jones sphere, JKR or DMT): branches, jumps into and out of contact, pull-off.
+    #[command(
+        after_help = "Columns: interference, load, contact_radius, branch (approach, unstable or contact; an S-shaped curve has several rows at one interference).\n\
+Units: load P/(πγR), interference δ (K²/(π²γ²R))^(1/3), contact radius a (K/(πγR²))^(1/3); μ = (Rγ²/(E²Z0³))^(1/3).\n\
+Example:\n  wearopt asperity --tabor 1 --from -1.5 --to 1 --points 11\n  \
+wearopt asperity --tabor 3 --from -1.2 --to 1 --points 45 --format csv --plot asperity.svg"
+    )]
+    Asperity(AsperityArgs),
     /// Search the design variables of a study for the least wear under its constraints.
     #[command(
         after_help = "Example:\n  wearopt optimize problems/micro-gear-study.toml\n  \
@@ -130,6 +138,37 @@ Example:\n  wearopt curve --theta 10 --lambda 0.125 --from -2 --to 4 --points 61
 wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json   (Greenwood-Williamson)"
     )]
     Curve(CurveArgs),
+}
+
+/// Arguments of `wearopt asperity`.
+#[derive(Debug, clap::Args)]
+pub struct AsperityArgs {
+    /// The Tabor parameter μ = (Rγ²/(E²Z0³))^(1/3), > 0.
+    #[arg(long, allow_hyphen_values = true)]
+    pub tabor: f64,
+    /// The first interference δ̂ (Maugis units; negative: apart).
+    #[arg(long, allow_hyphen_values = true)]
+    pub from: f64,
+    /// The last interference (inclusive), above --from.
+    #[arg(long, allow_hyphen_values = true)]
+    pub to: f64,
+    /// Number of evenly spaced interferences, 2 or more.
+    #[arg(long)]
+    pub points: usize,
+    /// The asperity law.
+    #[arg(long, value_parser = asperity_law_parser(), default_value = "lennard_jones")]
+    pub adhesion_model: app::asperity::CurveLaw,
+    /// Output format.
+    #[arg(long, value_parser = format::formats("asperity", report::asperity::FORMATS), default_value = "text")]
+    pub format: Format,
+    /// Also write the plot of load against interference (SVG).
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+fn asperity_law_parser() -> impl TypedValueParser<Value = app::asperity::CurveLaw> {
+    PossibleValuesParser::new(app::asperity::CurveLaw::ALL.map(|l| l.as_str()))
+        .try_map(|name| app::asperity::law(&name))
 }
 
 /// Arguments of `wearopt humidity`.
@@ -228,6 +267,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::FitAdhesion(args) => fit_adhesion::run(args),
         Command::Curve(args) => curve(args),
         Command::Humidity(args) => humidity(args),
+        Command::Asperity(args) => asperity(args),
     }
 }
 
@@ -342,6 +382,25 @@ fn curve(args: CurveArgs) -> Result<ExitCode> {
     })?;
     print_out(&report::curve::render(&doc, args.format)?)?;
     Ok(ExitCode::SUCCESS)
+}
+
+fn asperity(args: AsperityArgs) -> Result<ExitCode> {
+    let doc = app::asperity::asperity(&app::asperity::AsperityOptions {
+        tabor: args.tabor,
+        from: args.from,
+        to: args.to,
+        points: args.points,
+        law: args.adhesion_model,
+    })?;
+    if let Some(path) = &args.plot {
+        write_output(path, &report::asperity::plot_svg(&doc), "the plot")?;
+    }
+    print_out(&report::asperity::render(&doc, args.format)?)?;
+    Ok(if doc.status == app::asperity::AsperityStatus::Ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 fn humidity(args: HumidityArgs) -> Result<ExitCode> {

@@ -9,6 +9,7 @@
 //! Gaussian special functions (`special`).
 
 pub mod asperity;
+pub mod asperity_curve;
 pub mod capillary;
 pub mod coefficients;
 pub(crate) mod dmt;
@@ -16,6 +17,7 @@ pub mod environment;
 pub mod gauss;
 pub mod integrals;
 pub mod law;
+pub mod lennard_jones;
 pub mod load_curve;
 mod material;
 mod parameter;

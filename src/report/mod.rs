@@ -11,6 +11,7 @@
 //! warnings and notes in words), [`svg`] (line plots and bar charts).
 
 pub mod accuracy;
+pub mod asperity;
 pub mod calibrate;
 pub mod curve;
 pub mod eval;

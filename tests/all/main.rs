@@ -6,6 +6,7 @@ mod common;
 
 mod accuracy;
 mod app;
+mod asperity;
 mod calibrate;
 mod capillary;
 mod cli;

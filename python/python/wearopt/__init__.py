@@ -42,6 +42,7 @@ __all__ = [
     "optimize",
     "pareto",
     "humidity",
+    "asperity",
     "roughness",
     "curve",
     "sweep",
@@ -133,6 +134,34 @@ def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str
     if points < 0:
         raise ValueError(f"points={points}: must lie in 2..=100000")
     return json.loads(_wearopt.humidity_json(*_source(problem), float(from_), float(to), points))
+
+
+def asperity(
+    tabor: float, from_: float, to: float, points: int, adhesion_model: str = "lennard_jones"
+) -> Dict[str, Any]:
+    """One asperity's load against its interference in Maugis units: the
+    self-consistent Lennard-Jones sphere at Tabor parameter ``tabor`` (or
+    ``"jkr"``, ``"dmt"``), ``points`` evenly spaced interferences from ``from_``
+    to ``to``, one row per branch (approach, unstable, contact), the pull-off and
+    the jumps (the JSON of ``wearopt asperity --tabor MU --from D0 --to D1
+    --points N --format json``).
+
+    >>> c = wearopt.asperity(3.0, -1.0, 0.0, 3)
+    >>> round(c["pull_off"]["load"], 2), c["jump_in"] is not None
+    (-1.55, True)
+    """
+    for name, value in (("tabor", tabor), ("from_", from_), ("to", to)):
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise TypeError(f"{name} must be a number, not {type(value).__name__}")
+    if isinstance(points, bool) or not isinstance(points, int):
+        raise TypeError(f"points must be an int, not {type(points).__name__}")
+    if points < 0:
+        raise ValueError(f"points={points}: must lie in 2..=10000")
+    if not isinstance(adhesion_model, str):
+        raise TypeError(f"adhesion_model must be a str, not {type(adhesion_model).__name__}")
+    return json.loads(
+        _wearopt.asperity_json(float(tabor), float(from_), float(to), points, adhesion_model)
+    )
 
 
 def _quantity(name: str, value: Any, si_unit: str = "SI units") -> Optional[str]:

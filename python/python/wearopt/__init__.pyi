@@ -24,6 +24,12 @@ def optimize(problem: Problem) -> Dict[str, Any]:
     'optimal'
     """
 
+def asperity(
+    tabor: float, from_: float, to: float, points: int, adhesion_model: str = "lennard_jones"
+) -> Dict[str, Any]:
+    """The JSON of `wearopt asperity --tabor MU --from D0 --to D1 --points N --format json` as a dict."""
+    ...
+
 def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:
     """The JSON of `wearopt humidity FILE --from RH0 --to RH1 --points N --format json` as a dict."""
     ...

@@ -1,0 +1,703 @@
+//! The load–interference curve of one asperity in Maugis units (P̂ = P/(πγR),
+//! δ̂ = δ (K²/(π²γ²R))^{1/3}, â = a (K/(πγR²))^{1/3}) under each asperity law:
+//! the self-consistent Lennard-Jones sphere ([`super::lennard_jones`]), and JKR
+//! and DMT in closed form for comparison. Where the curve is S-shaped it has
+//! three branches — approach (until the jump into contact), unstable, contact
+//! (until the jump out) — and one interference can carry a point on each.
+
+use serde::Serialize;
+
+use super::lennard_jones::{
+    spacing, NotConverged, Sphere, SpherePoint, SphereSettings, SphereState,
+};
+
+/// The asperity laws a single-asperity curve is drawn for (the names of
+/// `adhesion_model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CurveLaw {
+    /// The self-consistent Lennard-Jones sphere.
+    LennardJones,
+    /// JKR (μ → ∞).
+    Jkr,
+    /// DMT with van der Waals attraction (μ → 0).
+    Dmt,
+}
+
+impl CurveLaw {
+    /// Every law, in the order options list them.
+    pub const ALL: [CurveLaw; 3] = [CurveLaw::LennardJones, CurveLaw::Jkr, CurveLaw::Dmt];
+
+    /// The word in options and reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            CurveLaw::LennardJones => "lennard_jones",
+            CurveLaw::Jkr => "jkr",
+            CurveLaw::Dmt => "dmt",
+        }
+    }
+
+    /// The law named `name`.
+    pub fn from_name(name: &str) -> Option<CurveLaw> {
+        Self::ALL.into_iter().find(|m| m.as_str() == name)
+    }
+}
+
+/// Which branch of the curve a point lies on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Branch {
+    /// Out of contact, or before the jump into contact.
+    Approach,
+    /// Between the two jumps (no stable equilibrium under a rigid support).
+    Unstable,
+    /// In contact, from the jump out onwards.
+    Contact,
+}
+
+impl Branch {
+    /// The word in CSV and reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Branch::Approach => "approach",
+            Branch::Unstable => "unstable",
+            Branch::Contact => "contact",
+        }
+    }
+}
+
+/// One equilibrium on the curve.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CurvePoint {
+    /// δ̂.
+    pub interference: f64,
+    /// P̂ (compressive positive).
+    pub load: f64,
+    /// â.
+    pub contact_radius: f64,
+    /// The branch.
+    pub branch: Branch,
+}
+
+/// A point of the curve named by its interference and load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CurveMark {
+    /// δ̂.
+    pub interference: f64,
+    /// P̂.
+    pub load: f64,
+}
+
+/// The curve of one asperity law at one Tabor parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AsperityCurve {
+    /// The law.
+    pub law: CurveLaw,
+    /// μ.
+    pub tabor: f64,
+    /// The points asked for, by interference then branch.
+    pub points: Vec<CurvePoint>,
+    /// The most tensile load of the curve (the pull-off under a load control)
+    /// and where it is.
+    pub pull_off: CurveMark,
+    /// The last stable point of the approach branch (None if the curve is
+    /// single-valued).
+    pub jump_in: Option<CurveMark>,
+    /// The last stable point of the contact branch on retraction.
+    pub jump_out: Option<CurveMark>,
+    /// The curve drawn densely, in order along it (for plots): for an S-shaped
+    /// curve approach, unstable and contact branches in turn.
+    pub path: Vec<CurvePoint>,
+}
+
+/// The evenly spaced interferences `from..=to` (`points` ≥ 2).
+fn targets(from: f64, to: f64, points: usize) -> Vec<f64> {
+    let n = points.max(2);
+    (0..n)
+        .map(|i| {
+            if i + 1 == n {
+                to
+            } else {
+                from + (to - from) * i as f64 / (n - 1) as f64
+            }
+        })
+        .collect()
+}
+
+/// The JKR curve (docs/model.md §3 in Maugis units): P̂ = â³ − √(6â³),
+/// δ̂ = â² − (2/3)√(6â) in contact; no force before contact, and contact from
+/// δ̂ = 0 on.
+pub fn jkr_curve(from: f64, to: f64, points: usize) -> AsperityCurve {
+    let six = 6.0_f64.sqrt();
+    let at = |a: f64| CurvePoint {
+        interference: a * a - 2.0 / 3.0 * (6.0 * a).sqrt(),
+        load: a * a * a - six * (a * a * a).sqrt(),
+        contact_radius: a,
+        branch: Branch::Contact,
+    };
+    // dδ̂/dâ = 0 at â^{3/2} = √6/6: the jump out.
+    let a_out = (six / 6.0).powf(2.0 / 3.0);
+    let out = at(a_out);
+    // The radius on a monotone stretch of δ̂(â) by bisection.
+    let radius = |target: f64, mut lo: f64, mut hi: f64| {
+        let rising = at(hi).interference > at(lo).interference;
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if (at(mid).interference < target) == rising {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let mut rows = Vec::new();
+    for target in targets(from, to, points) {
+        if target < 0.0 {
+            rows.push(CurvePoint {
+                interference: target,
+                load: 0.0,
+                contact_radius: 0.0,
+                branch: Branch::Approach,
+            });
+        }
+        if target >= out.interference && target < 0.0 {
+            let a = radius(target, 0.0, a_out);
+            rows.push(CurvePoint {
+                branch: Branch::Unstable,
+                interference: target,
+                ..at(a)
+            });
+        }
+        if target >= out.interference {
+            let mut hi = 2.0;
+            while at(hi).interference < target {
+                hi *= 2.0;
+            }
+            let a = radius(target, a_out, hi);
+            rows.push(CurvePoint {
+                interference: target,
+                ..at(a)
+            });
+        }
+    }
+    let a_pull = 1.5_f64.cbrt();
+    let pull = at(a_pull);
+    let mut a_to = 2.0;
+    while at(a_to).interference < to {
+        a_to *= 1.5;
+    }
+    let mut path = vec![
+        CurvePoint {
+            interference: from.min(0.0),
+            load: 0.0,
+            contact_radius: 0.0,
+            branch: Branch::Approach,
+        },
+        CurvePoint {
+            interference: 0.0,
+            load: 0.0,
+            contact_radius: 0.0,
+            branch: Branch::Approach,
+        },
+    ];
+    path.extend((0..=400).map(|i| {
+        let a = a_to * (i as f64 / 400.0).powi(2);
+        CurvePoint {
+            branch: if a < a_out {
+                Branch::Unstable
+            } else {
+                Branch::Contact
+            },
+            ..at(a)
+        }
+    }));
+    AsperityCurve {
+        law: CurveLaw::Jkr,
+        tabor: f64::INFINITY,
+        points: rows,
+        pull_off: CurveMark {
+            interference: pull.interference,
+            load: -1.5,
+        },
+        jump_in: Some(CurveMark {
+            interference: 0.0,
+            load: 0.0,
+        }),
+        jump_out: Some(CurveMark {
+            interference: out.interference,
+            load: out.load,
+        }),
+        path,
+    }
+}
+
+/// The DMT curve with van der Waals attraction (docs/model.md §7 in Maugis
+/// units, ẑ0 of μ): P̂ = δ̂^{3/2} − 2 in contact, −2 (ẑ0/(ẑ0 − δ̂))² outside.
+pub fn dmt_curve(tabor: f64, from: f64, to: f64, points: usize) -> AsperityCurve {
+    let z0 = spacing(tabor);
+    let at = |d: f64| {
+        if d >= 0.0 {
+            CurvePoint {
+                interference: d,
+                load: d * d.sqrt() - 2.0,
+                contact_radius: d.sqrt(),
+                branch: Branch::Contact,
+            }
+        } else {
+            let x = z0 / (z0 - d);
+            CurvePoint {
+                interference: d,
+                load: -2.0 * x * x,
+                contact_radius: 0.0,
+                branch: Branch::Approach,
+            }
+        }
+    };
+    let rows = targets(from, to, points).into_iter().map(at).collect();
+    let mut path: Vec<CurvePoint> = targets(from, to, 401).into_iter().map(at).collect();
+    if from < 0.0 && to > 0.0 {
+        path.push(at(0.0));
+    }
+    path.sort_by(|a, b| a.interference.total_cmp(&b.interference));
+    AsperityCurve {
+        law: CurveLaw::Dmt,
+        tabor,
+        points: rows,
+        pull_off: CurveMark {
+            interference: 0.0,
+            load: -2.0,
+        },
+        jump_in: None,
+        jump_out: None,
+        path,
+    }
+}
+
+/// The Tabor parameters over which the Lennard-Jones sphere is solved; outside,
+/// its curve is its closed-form limit ([`bradley_dmt_curve`] below, JKR above).
+pub const SOLVED_TABOR: (f64, f64) = (1e-3, 5.0);
+
+/// The pull-off's relative error of the limit at each end of [`SOLVED_TABOR`],
+/// measured against the solver there (1.998515 at μ = 10⁻³ against Bradley's 2;
+/// 1.52400 at μ = 5 against JKR's 1.5; `tests/all/asperity.rs`).
+pub const LIMIT_PULL_OFF_ERROR: (f64, f64) = (7.4e-4, 1.6e-2);
+
+/// The closed form the Lennard-Jones law takes outside [`SOLVED_TABOR`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Limit {
+    /// μ below the range: a rigid sphere (Bradley) out of contact, Hertz minus
+    /// 2πγR (DMT) in it.
+    BradleyDmt,
+    /// μ above the range: JKR.
+    Jkr,
+}
+
+impl Limit {
+    /// The word in reports.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Limit::BradleyDmt => "bradley_dmt",
+            Limit::Jkr => "jkr",
+        }
+    }
+}
+
+/// Where a Lennard-Jones curve was replaced by its limit, and what that costs.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LimitNote {
+    /// The limit used.
+    pub limit: Limit,
+    /// The Tabor parameter where the solver hands over.
+    pub switch_tabor: f64,
+    /// The pull-off's relative error of the limit there.
+    pub pull_off_error: f64,
+}
+
+/// The small-μ limit of the Lennard-Jones sphere (docs/model.md §11): rigid,
+/// Bradley's P̂ = (2/3)[(ẑ0/D)⁸ − 4(ẑ0/D)²] at apex gap D = ẑ0 − δ̂ < ẑ0, and
+/// DMT's Hertz load minus 2 once δ̂ ≥ 0 (the two meet at −2); the contact
+/// radius where the rigid gap is 3^{1/6} Z0.
+pub fn bradley_dmt_curve(tabor: f64, from: f64, to: f64, points: usize) -> AsperityCurve {
+    let z0 = spacing(tabor);
+    let at = |d: f64| {
+        let reach = 2.0 * (super::lennard_jones::sphere::TENSION_GAP * z0 - z0 + d);
+        let contact_radius = if reach > 0.0 { reach.sqrt() } else { 0.0 };
+        let load = if d >= 0.0 {
+            d * d.sqrt() - 2.0
+        } else {
+            let x = z0 / (z0 - d);
+            let x2 = x * x;
+            2.0 / 3.0 * (x2 * x2 * x2 * x2 - 4.0 * x2)
+        };
+        CurvePoint {
+            interference: d,
+            load,
+            contact_radius,
+            branch: if contact_radius > 0.0 {
+                Branch::Contact
+            } else {
+                Branch::Approach
+            },
+        }
+    };
+    let rows = targets(from, to, points).into_iter().map(at).collect();
+    let path = targets(from, to, 401).into_iter().map(at).collect();
+    AsperityCurve {
+        law: CurveLaw::LennardJones,
+        tabor,
+        points: rows,
+        pull_off: CurveMark {
+            interference: 0.0,
+            load: -2.0,
+        },
+        jump_in: None,
+        jump_out: None,
+        path,
+    }
+}
+
+/// The curve of `law` at Tabor parameter μ (> 0, finite) over `from..=to`
+/// (`points` evenly spaced), and, for the Lennard-Jones law outside
+/// [`SOLVED_TABOR`], which limit stands in for the solver.
+pub fn asperity_curve(
+    law: CurveLaw,
+    tabor: f64,
+    from: f64,
+    to: f64,
+    points: usize,
+) -> Result<(AsperityCurve, Option<LimitNote>), CurveError> {
+    Ok(match law {
+        CurveLaw::Jkr => (
+            AsperityCurve {
+                tabor,
+                ..jkr_curve(from, to, points)
+            },
+            None,
+        ),
+        CurveLaw::Dmt => (dmt_curve(tabor, from, to, points), None),
+        CurveLaw::LennardJones if tabor < SOLVED_TABOR.0 => (
+            bradley_dmt_curve(tabor, from, to, points),
+            Some(LimitNote {
+                limit: Limit::BradleyDmt,
+                switch_tabor: SOLVED_TABOR.0,
+                pull_off_error: LIMIT_PULL_OFF_ERROR.0,
+            }),
+        ),
+        CurveLaw::LennardJones if tabor > SOLVED_TABOR.1 => (
+            AsperityCurve {
+                law: CurveLaw::LennardJones,
+                tabor,
+                ..jkr_curve(from, to, points)
+            },
+            Some(LimitNote {
+                limit: Limit::Jkr,
+                switch_tabor: SOLVED_TABOR.1,
+                pull_off_error: LIMIT_PULL_OFF_ERROR.1,
+            }),
+        ),
+        CurveLaw::LennardJones => (
+            lennard_jones_curve(tabor, from, to, points, SphereSettings::default())?,
+            None,
+        ),
+    })
+}
+
+/// Why a Lennard-Jones curve could not be traced.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CurveError {
+    /// Newton's method failed at this apex gap (over Z0) and at every shorter step.
+    NotConverged(f64),
+}
+
+impl From<NotConverged> for CurveError {
+    fn from(error: NotConverged) -> Self {
+        CurveError::NotConverged(error.apex_gap)
+    }
+}
+
+/// One step of the trace: the state it starts from (on the mesh of the step),
+/// the arclength, and the state it reaches.
+struct Window {
+    start: SphereState,
+    length: f64,
+    end: SphereState,
+}
+
+/// The state in `window` where `f` vanishes (`f` of opposite signs at its
+/// ends), by the Illinois variant of regula falsi on the arclength, and its
+/// arclength from the window's start.
+fn root(
+    sphere: &Sphere,
+    window: &Window,
+    f: impl Fn(&SphereState) -> f64,
+) -> Result<(SphereState, f64), CurveError> {
+    let (mut a, mut fa, mut state_a) = (0.0, f(&window.start), window.start.clone());
+    let (mut b, mut fb, mut state_b) = (window.length, f(&window.end), window.end.clone());
+    let mut best = (window.end.clone(), b);
+    let mut side = 0;
+    for _ in 0..100 {
+        let mut x = b - fb * (b - a) / (fb - fa);
+        if !(x > a.min(b) && x < a.max(b)) {
+            x = 0.5 * (a + b);
+        }
+        let state = sphere.step_between(&window.start, x, (&state_a, a), (&state_b, b))?;
+        let fx = f(&state);
+        best = (state.clone(), x);
+        if fx == 0.0 || (b - a).abs() <= 1e-13 * window.length {
+            break;
+        }
+        if (fx > 0.0) == (fb > 0.0) {
+            b = x;
+            fb = fx;
+            state_b = state;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        } else {
+            a = x;
+            fa = fx;
+            state_a = state;
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    Ok(best)
+}
+
+/// Traces the Lennard-Jones curve by pseudo-arclength continuation from the
+/// far field (δ̂ below `from`) towards the flat, until the contact branch
+/// passes `to` beyond the load minimum.
+fn trace(sphere: &Sphere, from: f64, to: f64) -> Result<Vec<Window>, CurveError> {
+    trace_until(sphere, from, to, |q| {
+        q.interference >= to && q.interference_slope > 0.0 && q.load_slope > 0.0
+    })
+}
+
+/// [`trace`] until `done` holds of the last point (`to` only sets the step).
+fn trace_until(
+    sphere: &Sphere,
+    from: f64,
+    to: f64,
+    done: impl Fn(&SpherePoint) -> bool,
+) -> Result<Vec<Window>, CurveError> {
+    let z0 = sphere.z0;
+    let mut start = (1.0 - from / z0 + 0.5).max(2.0);
+    let mut first = sphere.far(start)?;
+    while first.point.interference > from {
+        start *= 1.5;
+        first = sphere.far(start)?;
+    }
+    let span = (to - from).abs().max(1e-3);
+    let (tau_d, tau_p, tau_a): (f64, f64, f64) = ((span / 50.0).min(0.1).max(0.02 * z0), 0.1, 0.1);
+    let mut windows: Vec<Window> = Vec::new();
+    let mut last = first;
+    let mut length = 0.05 * start;
+    for _ in 0..100_000 {
+        if length < 1e-14 * (1.0 + last.point.apex_gap) {
+            return Err(CurveError::NotConverged(last.point.apex_gap));
+        }
+        let from_state = sphere.regrade(&last).unwrap_or_else(|| last.clone());
+        let next = match sphere.step(&from_state, length) {
+            Ok(next) => next,
+            Err(_) => {
+                length *= 0.5;
+                continue;
+            }
+        };
+        let (p, q) = (&from_state.point, &next.point);
+        let ratio = ((q.interference - p.interference).abs() / tau_d)
+            .max((q.load - p.load).abs() / tau_p)
+            .max((q.contact_radius - p.contact_radius).abs() / tau_a.min(from_state.edge_reach()));
+        if ratio > 2.0 || q.apex_gap <= 0.05 || next.turn(&from_state) < 0.9 {
+            length *= 0.5;
+            continue;
+        }
+        let done = done(q);
+        windows.push(Window {
+            start: from_state,
+            length,
+            end: next.clone(),
+        });
+        length *= (1.0 / ratio.max(1e-3)).clamp(0.5, 1.6);
+        last = next;
+        if done {
+            return Ok(windows);
+        }
+    }
+    Err(CurveError::NotConverged(last.point.apex_gap))
+}
+
+/// The equilibria of the Lennard-Jones sphere at the apex gaps `gaps` (over
+/// Z0, in decreasing order, the first at least 1.5), each the first along the
+/// path from the far field: the solver's points as an independent solution
+/// tabulates them.
+pub fn lennard_jones_at_apex_gaps(
+    tabor: f64,
+    gaps: &[f64],
+    settings: SphereSettings,
+) -> Result<Vec<SpherePoint>, CurveError> {
+    let sphere = Sphere::new(tabor, settings);
+    let last = gaps.iter().copied().fold(f64::INFINITY, f64::min);
+    let first = gaps.iter().copied().fold(1.5, f64::max);
+    let from = sphere.z0 * (1.0 - first) - 0.1;
+    let windows = trace_until(&sphere, from, from + 4.0, |q| q.apex_gap < last)?;
+    gaps.iter()
+        .map(|&g| {
+            let w = windows
+                .iter()
+                .find(|w| (w.start.point.apex_gap - g) * (w.end.point.apex_gap - g) <= 0.0)
+                .ok_or(CurveError::NotConverged(g))?;
+            Ok(root(&sphere, w, |s| s.point.apex_gap - g)?.0.point)
+        })
+        .collect()
+}
+
+/// The Lennard-Jones curve at Tabor parameter μ over interferences
+/// `from..=to` (`points` evenly spaced, one row per branch that reaches each).
+pub fn lennard_jones_curve(
+    tabor: f64,
+    from: f64,
+    to: f64,
+    points: usize,
+    settings: SphereSettings,
+) -> Result<AsperityCurve, CurveError> {
+    let sphere = Sphere::new(tabor, settings);
+    let windows = trace(&sphere, from, to)?;
+    // Turning points of δ̂ along the path (the jumps), refined.
+    let slope = |s: &SphereState| s.point.interference_slope;
+    let mut turns = Vec::new();
+    for (k, w) in windows.iter().enumerate() {
+        if (slope(&w.start) > 0.0) != (slope(&w.end) > 0.0) {
+            let (state, at) = root(&sphere, w, slope)?;
+            turns.push((k, at, state.point));
+        }
+    }
+    // The most tensile load: the deepest minimum of P̂ along the path.
+    let load_slope = |s: &SphereState| s.point.load_slope;
+    let mut pull_off = windows
+        .iter()
+        .map(|w| w.end.point)
+        .min_by(|a, b| a.load.total_cmp(&b.load))
+        .expect("a trace has a step");
+    for w in &windows {
+        if load_slope(&w.start) < 0.0 && load_slope(&w.end) >= 0.0 {
+            let (state, _) = root(&sphere, w, load_slope)?;
+            if state.point.load < pull_off.load {
+                pull_off = state.point;
+            }
+        }
+    }
+    let s_shaped = turns.len() >= 2;
+    // Branches: the segments of monotone δ̂ between the turning points.
+    let mut rows = Vec::new();
+    for target in targets(from, to, points) {
+        for (k, w) in windows.iter().enumerate() {
+            let (da, db) = (
+                w.start.point.interference - target,
+                w.end.point.interference - target,
+            );
+            // Each crossing once: a window owns its end, the first its start too.
+            let crosses = (da > 0.0) != (db > 0.0) || db == 0.0 || (k == 0 && da == 0.0);
+            if !crosses || (da == 0.0 && k > 0) {
+                continue;
+            }
+            let (state, at) = if db == 0.0 {
+                (w.end.clone(), w.length)
+            } else if da == 0.0 {
+                (w.start.clone(), 0.0)
+            } else {
+                root(&sphere, w, |s| s.point.interference - target)?
+            };
+            let p = state.point;
+            let passed = turns
+                .iter()
+                .filter(|t| t.0 < k || (t.0 == k && t.1 < at))
+                .count();
+            let branch = if s_shaped {
+                match passed {
+                    0 => Branch::Approach,
+                    n if n >= turns.len() => Branch::Contact,
+                    _ => Branch::Unstable,
+                }
+            } else if p.contact_radius > 0.0 {
+                Branch::Contact
+            } else {
+                Branch::Approach
+            };
+            rows.push(CurvePoint {
+                interference: target,
+                load: p.load,
+                contact_radius: p.contact_radius,
+                branch,
+            });
+        }
+    }
+    rows.sort_by(|a, b| {
+        a.interference
+            .total_cmp(&b.interference)
+            .then(a.branch.cmp(&b.branch))
+    });
+    // A target between one step's end and the next's regraded start is found
+    // in both: the branch holds one point per interference.
+    rows.dedup_by(|a, b| a.interference == b.interference && a.branch == b.branch);
+    let branch_after = |k: usize, at: f64, p: &SpherePoint| {
+        let passed = turns
+            .iter()
+            .filter(|t| t.0 < k || (t.0 == k && t.1 < at))
+            .count();
+        if s_shaped {
+            match passed {
+                0 => Branch::Approach,
+                n if n >= turns.len() => Branch::Contact,
+                _ => Branch::Unstable,
+            }
+        } else if p.contact_radius > 0.0 {
+            Branch::Contact
+        } else {
+            Branch::Approach
+        }
+    };
+    let path = windows
+        .iter()
+        .enumerate()
+        .map(|(k, w)| {
+            let p = w.end.point;
+            CurvePoint {
+                interference: p.interference,
+                load: p.load,
+                contact_radius: p.contact_radius,
+                branch: branch_after(k, w.length, &p),
+            }
+        })
+        .collect();
+    let mark = |p: &SpherePoint| CurveMark {
+        interference: p.interference,
+        load: p.load,
+    };
+    Ok(AsperityCurve {
+        law: CurveLaw::LennardJones,
+        tabor,
+        points: rows,
+        pull_off: mark(&pull_off),
+        jump_in: s_shaped.then(|| mark(&turns[0].2)),
+        jump_out: s_shaped.then(|| mark(&turns[turns.len() - 1].2)),
+        path,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn jkr_closed_forms() {
+        let curve = jkr_curve(-1.0, 1.0, 5);
+        assert!((curve.jump_out.unwrap().load + 5.0 / 6.0).abs() < 1e-14);
+        assert!((curve.pull_off.load + 1.5).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,550 @@
+//! One elastic sphere against a rigid flat with Lennard-Jones surface forces,
+//! solved self-consistently (docs/model.md §11; Greenwood 1997, Feng 2000).
+//!
+//! Maugis units throughout: radii over ℓ = (πγR²/K)^{1/3}, gaps and the
+//! approach over ε = ℓ²/R = (π²γ²R/K²)^{1/3}, tractions over γR/ℓ², loads over
+//! πγR. Then the equilibrium spacing is ẑ0 = Z0/ε = μ⁻¹ (16/(9π²))^{1/3}, the
+//! traction p̃(g) = (8/(3ẑ0)) [(ẑ0/g)⁹ − (ẑ0/g)³], the gap
+//! g(r) = ẑ0 − δ + r²/2 + C ∫ p̃(s) s/(r+s) K(2√(rs)/(r+s)) ds with
+//! C = 16/(3π²), and the load P = 2 ∫ p̃ r dr.
+//!
+//! **Discretisation.** Piecewise-constant traction on rings, collocated at the
+//! rings' mid-radii, with each ring's displacement in closed form (a uniform
+//! pressure on a disk, `elliptic::disk`); the ring edges are graded
+//! around the contact edge (where the traction turns fastest) and grow
+//! geometrically out to a few hundred contact radii, beyond which the load of
+//! the rigid gap is added in closed form. The control parameter is the gap at
+//! the apex (Greenwood's choice): for a given apex gap the equilibrium is unique
+//! even where δ(P) is S-shaped, so the whole curve — approach, unstable and
+//! contact branches — is one continuation in the apex gap, Newton's method with
+//! a dense LU at each step.
+
+use std::rc::Rc;
+
+use nalgebra::{DMatrix, DVector};
+
+use super::elliptic::disk;
+
+/// 16/(3π²): the kernel's factor 4/(πE) in Maugis units.
+const KERNEL: f64 = 16.0 / (3.0 * std::f64::consts::PI * std::f64::consts::PI);
+
+/// 3^{1/6}: the gap (over Z0) of the largest Lennard-Jones tension, which
+/// defines the contact radius.
+pub const TENSION_GAP: f64 = 1.200_936_955_176_003;
+
+/// The equilibrium spacing ẑ0 = Z0/ε of Tabor parameter μ: (16/(9π²))^{1/3}/μ.
+pub fn spacing(tabor: f64) -> f64 {
+    (16.0 / (9.0 * std::f64::consts::PI * std::f64::consts::PI)).cbrt() / tabor
+}
+
+/// The Lennard-Jones traction p̃(g) and its derivative, Maugis units.
+#[inline]
+fn traction(z0: f64, g: f64) -> (f64, f64) {
+    let x = z0 / g;
+    let x3 = x * x * x;
+    let x9 = x3 * x3 * x3;
+    let scale = 8.0 / (3.0 * z0);
+    (scale * (x9 - x3), scale * (3.0 * x3 - 9.0 * x9) / g)
+}
+
+/// Twice the work of the traction beyond gap g, 2 ∫_g^∞ p̃ dg = the load of a
+/// rigid annulus whose gap grows as r²/2 from g outwards:
+/// (16/3) [(ẑ0/g)⁸/8 − (ẑ0/g)²/2].
+fn rigid_tail(z0: f64, g: f64) -> (f64, f64) {
+    let x = z0 / g;
+    let x2 = x * x;
+    let x8 = x2 * x2 * x2 * x2;
+    let value = 16.0 / 3.0 * (0.125 * x8 - 0.5 * x2);
+    let slope = 16.0 / 3.0 * (x2 - x8) / g;
+    (value, slope)
+}
+
+/// How finely the sphere is discretised; halving every spacing is
+/// `refinement: 2.0` (the error falls about fourfold).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SphereSettings {
+    /// Mesh density relative to the default (1).
+    pub refinement: f64,
+}
+
+impl Default for SphereSettings {
+    fn default() -> Self {
+        SphereSettings { refinement: 1.0 }
+    }
+}
+
+/// One equilibrium of the sphere, Maugis units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpherePoint {
+    /// Gap at the apex over Z0 (the control parameter).
+    pub apex_gap: f64,
+    /// Rigid approach δ̂ (0 when the undeformed apex stands at Z0).
+    pub interference: f64,
+    /// Load P̂ = P/(πγR), compressive positive.
+    pub load: f64,
+    /// Contact radius â: where the gap is 3^{1/6} Z0 (0 if nowhere).
+    pub contact_radius: f64,
+    /// dδ̂/ds along the path (s its arclength, increasing towards the flat):
+    /// zero at the jumps.
+    pub interference_slope: f64,
+    /// dP̂/ds along the path: zero at the pull-off.
+    pub load_slope: f64,
+}
+
+/// The rings and their influence matrix.
+#[derive(Debug, Clone)]
+struct Mesh {
+    /// Ring edges b_0 = 0 < b_1 < … < b_n.
+    edges: Vec<f64>,
+    /// Mid-radii c_i, where the gap is collocated.
+    mid: Vec<f64>,
+    /// M_ij = C [u_j(c_i) − u_j(0)]: the displacement at c_i relative to the apex's
+    /// of a unit traction on ring j.
+    relative: DMatrix<f64>,
+    /// C u_j(0): the apex displacement of a unit traction on ring j.
+    apex: Vec<f64>,
+    /// The contact radius the mesh is graded around.
+    centre: f64,
+    /// Smallest spacing.
+    finest: f64,
+    /// Growth of the spacing with the distance from the centre.
+    growth: f64,
+}
+
+impl Mesh {
+    fn new(z0: f64, centre: f64, settings: SphereSettings) -> Mesh {
+        // The traction turns over a cohesive zone ~ (3π/4) ẑ0² wide (large μ) or
+        // over the apex region ~ √ẑ0 (small μ).
+        let feature = (2.4 * z0 * z0).min(0.5 * z0.sqrt());
+        let finest = feature / (16.0 * settings.refinement);
+        let growth = 0.08 / settings.refinement;
+        let outer = 200.0 * (1.0 + centre + (2.0 * z0).sqrt());
+        let mut edges = vec![0.0];
+        let mut r = 0.0_f64;
+        while r < outer {
+            let h = finest + growth * (r - centre).abs();
+            // Look ahead so that a ring straddling the centre is not coarse.
+            let h = h.min(finest + growth * (r + h - centre).abs());
+            r += h;
+            edges.push(r);
+        }
+        let n = edges.len() - 1;
+        let mid: Vec<f64> = (0..n).map(|j| 0.5 * (edges[j] + edges[j + 1])).collect();
+        let apex: Vec<f64> = (0..n)
+            .map(|j| KERNEL * std::f64::consts::FRAC_PI_2 * (edges[j + 1] - edges[j]))
+            .collect();
+        let relative = DMatrix::from_fn(n, n, |i, j| {
+            KERNEL * (disk(edges[j + 1], mid[i]) - disk(edges[j], mid[i])) - apex[j]
+        });
+        Mesh {
+            edges,
+            mid,
+            relative,
+            apex,
+            centre,
+            finest,
+            growth,
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.mid.len()
+    }
+
+    /// Values at another mesh's mid-radii, interpolated onto this one's; beyond
+    /// the last point gaps (over ẑ0 = `z0`) follow the rigid shape, a tangent
+    /// (`z0` = 0) stays constant.
+    fn interpolate(&self, from: &Mesh, gaps: &DVector<f64>, z0: f64) -> DVector<f64> {
+        let m = from.len();
+        DVector::from_iterator(
+            self.len(),
+            self.mid.iter().map(|&r| {
+                let k = from.mid.partition_point(|&c| c < r);
+                if k == 0 {
+                    gaps[0]
+                } else if k >= m {
+                    let rigid = 0.5 * (r * r - from.mid[m - 1] * from.mid[m - 1]);
+                    gaps[m - 1] + if z0 > 0.0 { rigid / z0 } else { 0.0 }
+                } else {
+                    let (r0, r1) = (from.mid[k - 1], from.mid[k]);
+                    let t = (r - r0) / (r1 - r0);
+                    gaps[k - 1] + t * (gaps[k] - gaps[k - 1])
+                }
+            }),
+        )
+    }
+}
+
+/// A converged state: the mesh, the collocated gaps, the point they make and
+/// the unit tangent of the solution path there.
+#[derive(Debug, Clone)]
+pub struct SphereState {
+    mesh: Rc<Mesh>,
+    /// Gaps over ẑ0 at the mid-radii.
+    gaps: DVector<f64>,
+    /// The apex gap over ẑ0.
+    apex: f64,
+    /// Unit tangent (gaps, apex gap) in the path's metric, oriented along the
+    /// trace (towards the flat at the start).
+    tangent: DVector<f64>,
+    /// The equilibrium.
+    pub point: SpherePoint,
+}
+
+impl SphereState {
+    /// How far the contact edge may move in one step and stay where the mesh
+    /// is fine: the distance at which the spacing has doubled.
+    pub fn edge_reach(&self) -> f64 {
+        self.mesh.finest / self.mesh.growth
+    }
+
+    /// Rings in the mesh.
+    pub fn rings(&self) -> usize {
+        self.mesh.len()
+    }
+}
+
+/// Why a solve failed (Newton's method did not converge from its guess).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NotConverged {
+    /// The apex gap over Z0 near which it failed.
+    pub apex_gap: f64,
+}
+
+/// The sphere of one Tabor parameter.
+#[derive(Debug, Clone, Copy)]
+pub struct Sphere {
+    /// μ.
+    pub tabor: f64,
+    /// ẑ0 = Z0/ε.
+    pub z0: f64,
+    /// Discretisation.
+    pub settings: SphereSettings,
+}
+
+/// ⟨a, b⟩ of the path's metric: the apex gaps' product plus the mean of the
+/// ring gaps' (all over ẑ0).
+fn dot(a: &DVector<f64>, b: &DVector<f64>) -> f64 {
+    let n = a.len() - 1;
+    a[n] * b[n] + a.rows(0, n).dot(&b.rows(0, n)) / n as f64
+}
+
+impl Sphere {
+    /// The sphere of Tabor parameter μ > 0.
+    pub fn new(tabor: f64, settings: SphereSettings) -> Sphere {
+        Sphere {
+            tabor,
+            z0: spacing(tabor),
+            settings,
+        }
+    }
+
+    /// The equilibrium at apex gap `apex_gap` (over Z0) far from the flat,
+    /// from the rigid sphere's gaps on a mesh graded at the apex, its tangent
+    /// pointing towards the flat.
+    pub fn far(&self, apex_gap: f64) -> Result<SphereState, NotConverged> {
+        let mesh = Rc::new(Mesh::new(self.z0, 0.0, self.settings));
+        let n = mesh.len();
+        let x = DVector::from_iterator(
+            n + 1,
+            mesh.mid
+                .iter()
+                .map(|&r| apex_gap + 0.5 * r * r / self.z0)
+                .chain([apex_gap]),
+        );
+        let mut rigid = DVector::from_element(n + 1, -1.0);
+        rigid /= dot(&rigid, &rigid).sqrt();
+        let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
+        let x = self.correct(&mesh, x.clone(), &x, &apex_only, 0.0)?;
+        self.state(mesh, x, &rigid)
+    }
+
+    /// The state a step `s` along the path from `from` (predictor along its
+    /// tangent, corrector on the hyperplane normal to it), on `from`'s mesh.
+    pub fn step(&self, from: &SphereState, s: f64) -> Result<SphereState, NotConverged> {
+        let x0 = from.unknowns();
+        let guess = &x0 + &from.tangent * s;
+        let x = self.correct(&from.mesh, guess, &x0, &from.tangent, s)?;
+        // Oriented along the secant, which is reliable where the step is short
+        // against the path's curvature (the caller checks that it was).
+        let secant = &x - &x0;
+        self.state(from.mesh.clone(), x, &secant)
+    }
+
+    /// The state at arclength `s` from `from` (as [`Sphere::step`] measures it)
+    /// with Newton's method started from the interpolation between two states
+    /// on `from`'s mesh that bracket it, `a` at `sa` and `b` at `sb`.
+    pub fn step_between(
+        &self,
+        from: &SphereState,
+        s: f64,
+        (a, sa): (&SphereState, f64),
+        (b, sb): (&SphereState, f64),
+    ) -> Result<SphereState, NotConverged> {
+        let w = if sb != sa { (s - sa) / (sb - sa) } else { 0.5 };
+        let guess = a.unknowns() * (1.0 - w) + b.unknowns() * w;
+        let x0 = from.unknowns();
+        let x = self.correct(&from.mesh, guess, &x0, &from.tangent, s)?;
+        let secant = &x - &x0;
+        self.state(from.mesh.clone(), x, &secant)
+    }
+
+    /// `state` again on a mesh graded at its contact edge, if the edge has moved
+    /// away from where its mesh is finest (None if it has not, or if the
+    /// regraded solve fails).
+    pub fn regrade(&self, state: &SphereState) -> Option<SphereState> {
+        let edge = state.point.contact_radius;
+        let mesh = &state.mesh;
+        if (edge - mesh.centre).abs() * mesh.growth <= 0.25 * mesh.finest {
+            return None;
+        }
+        let fresh = Rc::new(Mesh::new(self.z0, edge, self.settings));
+        let n = fresh.len();
+        let x = fresh
+            .interpolate(mesh, &state.gaps, self.z0)
+            .insert_row(n, state.apex);
+        let mut t = fresh
+            .interpolate(mesh, &state.tangent.rows(0, mesh.len()).into(), 0.0)
+            .insert_row(n, state.tangent[mesh.len()]);
+        t /= dot(&t, &t).sqrt();
+        // The same apex gap (away from a fold of the path in it), else the
+        // hyperplane normal to the path; either only if it is the same point.
+        let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
+        let same = |candidate: &SphereState| {
+            let (p, q) = (&state.point, &candidate.point);
+            (p.interference - q.interference).abs() <= 1e-2 * (1.0 + p.interference.abs())
+                && (p.load - q.load).abs() <= 1e-2 * (1.0 + p.load.abs())
+        };
+        for constraint in [&apex_only, &t] {
+            let Ok(solved) = self.correct(&fresh, x.clone(), &x, constraint, 0.0) else {
+                continue;
+            };
+            if let Ok(candidate) = self.state(fresh.clone(), solved, &t) {
+                if same(&candidate) {
+                    return Some(candidate);
+                }
+            }
+        }
+        None
+    }
+
+    /// Newton's method on F(u, G) = u − G − c²/(2ẑ0) − M p̃(ẑ0 u)/ẑ0 = 0 with the
+    /// arclength condition ⟨x − x0, t⟩ = s, damped so that no gap turns
+    /// non-positive and the residual falls.
+    fn correct(
+        &self,
+        mesh: &Mesh,
+        mut x: DVector<f64>,
+        x0: &DVector<f64>,
+        t: &DVector<f64>,
+        s: f64,
+    ) -> Result<DVector<f64>, NotConverged> {
+        let z0 = self.z0;
+        let n = mesh.len();
+        let failed = NotConverged { apex_gap: x[n] };
+        let residual = |x: &DVector<f64>| -> DVector<f64> {
+            let p = DVector::from_iterator(n, x.rows(0, n).iter().map(|&u| traction(z0, z0 * u).0));
+            let mp = &mesh.relative * &p;
+            let mut f = DVector::zeros(n + 1);
+            for i in 0..n {
+                f[i] = x[i] - x[n] - 0.5 * mesh.mid[i] * mesh.mid[i] / z0 - mp[i] / z0;
+            }
+            f[n] = dot(&(x - x0), t) - s;
+            f
+        };
+        // Each row's residual against the gap it balances (the outer rings'
+        // gaps are large, and their round-off with them).
+        let size = |f: &DVector<f64>, x: &DVector<f64>| {
+            (0..n)
+                .map(|i| (f[i] / (1.0 + x[i].abs())).abs())
+                .fold(f[n].abs(), f64::max)
+        };
+        let mut f = residual(&x);
+        let mut norm = size(&f, &x);
+        for _ in 0..60 {
+            let jacobian = self.bordered(mesh, &x, t);
+            let Some(step) = jacobian.lu().solve(&f) else {
+                return Err(failed);
+            };
+            let mut damping = 1.0;
+            let mut accepted = false;
+            for _ in 0..30 {
+                let trial = &x - &step * damping;
+                if trial.rows(0, n).iter().all(|&u| u > 0.0 && u.is_finite()) {
+                    let f_trial = residual(&trial);
+                    let norm_trial = size(&f_trial, &trial);
+                    if norm_trial.is_finite() && (norm_trial < norm || norm_trial <= 1e-15) {
+                        x = trial;
+                        f = f_trial;
+                        norm = norm_trial;
+                        accepted = true;
+                        break;
+                    }
+                }
+                damping *= 0.5;
+            }
+            if !accepted {
+                break;
+            }
+            if step.amax() * damping <= 1e-14 * (1.0 + x[n].abs()) && damping == 1.0 {
+                break;
+            }
+        }
+        if norm <= 1e-12 || norm <= 1e3 * self.round_off(mesh, &x) {
+            Ok(x)
+        } else {
+            Err(failed)
+        }
+    }
+
+    /// The size of the residual's rounding errors (in [`Sphere::correct`]'s
+    /// measure): ulps of each row's terms, u_i, G and Σ_j |M_ij p̃_j|/ẑ0 with p̃'s
+    /// two powers counted apart.
+    fn round_off(&self, mesh: &Mesh, x: &DVector<f64>) -> f64 {
+        let z0 = self.z0;
+        let n = mesh.len();
+        let magnitude = DVector::from_iterator(
+            n,
+            x.rows(0, n).iter().map(|&u| {
+                let v = 1.0 / u;
+                let v3 = v * v * v;
+                8.0 / (3.0 * z0) * (v3 * v3 * v3 + v3)
+            }),
+        );
+        let spread = mesh.relative.abs() * magnitude;
+        (0..n)
+            .map(|i| f64::EPSILON * (x[i].abs() + x[n].abs() + spread[i] / z0) / (1.0 + x[i].abs()))
+            .fold(0.0, f64::max)
+    }
+
+    /// The Jacobian of (F, arclength) in (u, G): [I − M diag(p̃'), −1; t_u/n, t_G].
+    fn bordered(&self, mesh: &Mesh, x: &DVector<f64>, t: &DVector<f64>) -> DMatrix<f64> {
+        let n = mesh.len();
+        let mut jacobian = DMatrix::zeros(n + 1, n + 1);
+        jacobian.view_mut((0, 0), (n, n)).copy_from(&mesh.relative);
+        for j in 0..n {
+            let slope = traction(self.z0, self.z0 * x[j]).1;
+            jacobian.view_mut((0, j), (n, 1)).scale_mut(-slope);
+            jacobian[(j, j)] += 1.0;
+            jacobian[(j, n)] = -1.0;
+            jacobian[(n, j)] = t[j] / n as f64;
+        }
+        jacobian[(n, n)] = t[n];
+        jacobian
+    }
+
+    /// The point a converged solution makes, and the path's tangent there
+    /// (oriented along `previous`, which also borders the tangent's system).
+    fn state(
+        &self,
+        mesh: Rc<Mesh>,
+        x: DVector<f64>,
+        previous: &DVector<f64>,
+    ) -> Result<SphereState, NotConverged> {
+        let z0 = self.z0;
+        let n = mesh.len();
+        let apex = x[n];
+        let mut rhs = DVector::zeros(n + 1);
+        rhs[n] = 1.0;
+        let tangent = self
+            .bordered(&mesh, &x, previous)
+            .lu()
+            .solve(&rhs)
+            .ok_or(NotConverged { apex_gap: apex })?;
+        let norm = dot(&tangent, &tangent).sqrt();
+        let mut tangent = tangent / norm;
+        if dot(&tangent, previous) < 0.0 {
+            tangent = -tangent;
+        }
+        let gaps: DVector<f64> = x.rows(0, n).into();
+        let (p, dp): (Vec<f64>, Vec<f64>) = gaps.iter().map(|&u| traction(z0, z0 * u)).unzip();
+        let edges = &mesh.edges;
+        let last = n - 1;
+        let tail_gap =
+            z0 * gaps[last] + 0.5 * (edges[n] * edges[n] - mesh.mid[last] * mesh.mid[last]);
+        let (tail, tail_slope) = rigid_tail(z0, tail_gap);
+        let weight = |j: usize| edges[j + 1] * edges[j + 1] - edges[j] * edges[j];
+        let load = (0..n).map(|j| p[j] * weight(j)).sum::<f64>() + tail;
+        let interference = z0 * (1.0 - apex) + (0..n).map(|j| mesh.apex[j] * p[j]).sum::<f64>();
+        let interference_slope = z0
+            * ((0..n)
+                .map(|j| mesh.apex[j] * dp[j] * tangent[j])
+                .sum::<f64>()
+                - tangent[n]);
+        let load_slope = z0
+            * ((0..n).map(|j| weight(j) * dp[j] * tangent[j]).sum::<f64>()
+                + tail_slope * tangent[last]);
+        // The outermost crossing of the tension gap, interpolated in r² between
+        // the apex (r = 0) and the collocation points.
+        let threshold = TENSION_GAP;
+        let at = |i: usize| {
+            if i == 0 {
+                (0.0, apex)
+            } else {
+                (mesh.mid[i - 1] * mesh.mid[i - 1], gaps[i - 1])
+            }
+        };
+        let contact_radius = match (0..=n).rev().find(|&i| at(i).1 <= threshold) {
+            None => 0.0,
+            Some(i) if i == n => mesh.mid[last],
+            Some(i) => {
+                let ((s0, g0), (s1, g1)) = (at(i), at(i + 1));
+                (s0 + (threshold - g0) / (g1 - g0) * (s1 - s0)).sqrt()
+            }
+        };
+        let point = SpherePoint {
+            apex_gap: apex,
+            interference,
+            load,
+            contact_radius,
+            interference_slope,
+            load_slope,
+        };
+        Ok(SphereState {
+            mesh,
+            gaps,
+            apex,
+            tangent,
+            point,
+        })
+    }
+}
+
+impl SphereState {
+    /// The cosine of the angle between this state's tangent and `other`'s (on
+    /// one mesh; 1 when the meshes differ).
+    pub fn turn(&self, other: &SphereState) -> f64 {
+        if Rc::ptr_eq(&self.mesh, &other.mesh) {
+            dot(&self.tangent, &other.tangent)
+        } else {
+            1.0
+        }
+    }
+
+    /// (gaps, apex gap), over ẑ0.
+    fn unknowns(&self) -> DVector<f64> {
+        let n = self.mesh.len();
+        self.gaps.clone().insert_row(n, self.apex)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Far from the flat the sphere is rigid and the load is Bradley's,
+    /// (2/3)[(ẑ0/D)⁸ − 4(ẑ0/D)²] with D the apex gap, to the deformation's order.
+    #[test]
+    fn far_field_is_bradley() {
+        let sphere = Sphere::new(0.05, SphereSettings::default());
+        let state = sphere.far(3.0).unwrap();
+        let x: f64 = 1.0 / 3.0;
+        let bradley = 2.0 / 3.0 * (x.powi(8) - 4.0 * x * x);
+        assert!(
+            (state.point.load - bradley).abs() < 2e-3 * bradley.abs(),
+            "{} vs {}",
+            state.point.load,
+            bradley
+        );
+    }
+}

@@ -1,0 +1,222 @@
+//! One asperity under the Lennard-Jones law (docs/model.md §11) and `wearopt
+//! asperity`: the closed-form limits (JKR, Bradley), the branch structure, the
+//! limit constants measured at the ends of the solved range, and bad input.
+
+use wearopt::model::asperity_curve::{
+    asperity_curve, jkr_curve, lennard_jones_at_apex_gaps, lennard_jones_curve, Branch, CurveLaw,
+    Limit, LIMIT_PULL_OFF_ERROR, SOLVED_TABOR,
+};
+use wearopt::model::lennard_jones::{spacing, SphereSettings};
+
+use crate::common::{stderr, stdout, wearopt};
+
+/// JKR in Maugis units (docs/model.md §3): pull-off −1.5 at â³ = 3/2, jump out
+/// at â^{3/2} = 1/√6 with P̂ = −5/6 and δ̂ = 6^{−2/3} − (2/3) 6^{1/3}, and the
+/// contact branch at δ̂ = 0 at â = (2√6/3)^{2/3}, P̂ = −4/3.
+#[test]
+fn jkr_closed_forms() {
+    let c = jkr_curve(-1.0, 0.0, 3);
+    assert!((c.pull_off.load + 1.5).abs() < 1e-14);
+    let a: f64 = 1.5_f64.cbrt();
+    let want = a * a - 2.0 / 3.0 * (6.0 * a).sqrt();
+    assert!((c.pull_off.interference - want).abs() < 1e-14);
+    let out = c.jump_out.unwrap();
+    assert!((out.load + 5.0 / 6.0).abs() < 1e-14);
+    let d_out = 6f64.powf(-2.0 / 3.0) - 2.0 / 3.0 * 6f64.cbrt();
+    assert!((out.interference - d_out).abs() < 1e-14);
+    let zero = c.points.iter().find(|p| p.interference == 0.0).unwrap();
+    assert_eq!(zero.branch, Branch::Contact);
+    assert!((zero.load + 4.0 / 3.0).abs() < 1e-12, "{}", zero.load);
+    assert!((zero.contact_radius - (2.0 * 6f64.sqrt() / 3.0).powf(2.0 / 3.0)).abs() < 1e-12);
+}
+
+/// μ → 0: far from the flat the sphere is rigid, and the load is Bradley's
+/// (2/3)[(ẑ0/D)⁸ − 4(ẑ0/D)²] at apex gap D; the pull-off tends to 2 (at μ =
+/// 10⁻³ it is within the stated switch error of 2).
+#[test]
+fn small_tabor_tends_to_bradley() {
+    let mu = 0.01;
+    let points = lennard_jones_at_apex_gaps(mu, &[3.0, 2.0, 1.5], SphereSettings::default())
+        .expect("converges");
+    for p in &points {
+        let x = 1.0 / p.apex_gap;
+        let bradley = 2.0 / 3.0 * (x.powi(8) - 4.0 * x * x);
+        // The elastic opening at μ = 0.01 is ~1e-4 of the gap.
+        assert!(
+            (p.load - bradley).abs() < 2e-3 * bradley.abs(),
+            "{} vs {bradley}",
+            p.load
+        );
+        let rigid = spacing(mu) * (1.0 - p.apex_gap);
+        assert!((p.interference - rigid).abs() < 1e-2 * rigid.abs());
+    }
+    let curve = lennard_jones_curve(SOLVED_TABOR.0, -1.0, 1.0, 3, SphereSettings::default())
+        .expect("converges");
+    let error = (curve.pull_off.load + 2.0).abs() / 2.0;
+    assert!(
+        (error - LIMIT_PULL_OFF_ERROR.0).abs() < 0.1 * LIMIT_PULL_OFF_ERROR.0,
+        "stated {} measured {error}",
+        LIMIT_PULL_OFF_ERROR.0
+    );
+    assert!(curve.jump_in.is_none() && curve.jump_out.is_none());
+}
+
+/// μ = 3: an S-shaped curve. The jump in comes before the jump out on the
+/// interference axis (δ_out < δ_in < 0), the pull-off lies between JKR's 1.5
+/// and Bradley's 2 and nearer JKR, and every interference between the jumps
+/// carries three points, one per branch, loads ordered approach > unstable >
+/// contact.
+#[test]
+fn transition_curve_is_s_shaped() {
+    let c = lennard_jones_curve(3.0, -1.0, 0.0, 11, SphereSettings::default()).expect("converges");
+    let (jin, jout) = (c.jump_in.unwrap(), c.jump_out.unwrap());
+    assert!(jout.interference < jin.interference && jin.interference < 0.0);
+    assert!(
+        c.pull_off.load < -1.5 && c.pull_off.load > -1.75,
+        "{:?}",
+        c.pull_off
+    );
+    for target in [-0.9, -0.8, -0.7] {
+        let at: Vec<_> = c
+            .points
+            .iter()
+            .filter(|p| (p.interference - target).abs() < 1e-12)
+            .collect();
+        assert_eq!(at.len(), 3, "{target}: {at:?}");
+        assert_eq!(
+            at.iter().map(|p| p.branch).collect::<Vec<_>>(),
+            [Branch::Approach, Branch::Unstable, Branch::Contact]
+        );
+        assert!(at[0].load > at[1].load && at[1].load > at[2].load);
+        assert!(at[0].contact_radius < at[1].contact_radius);
+    }
+    // Single-valued outside the jumps.
+    for p in c
+        .points
+        .iter()
+        .filter(|p| p.interference > jin.interference)
+    {
+        assert_eq!(p.branch, Branch::Contact);
+    }
+    assert!(c
+        .path
+        .iter()
+        .all(|p| p.load.is_finite() && p.contact_radius >= 0.0));
+}
+
+/// Outside the solved range the law is its limit, and says so.
+#[test]
+fn limits_outside_the_solved_range() {
+    let (c, note) = asperity_curve(CurveLaw::LennardJones, 50.0, -1.0, 1.0, 5).unwrap();
+    let note = note.expect("a limit");
+    assert_eq!(note.limit, Limit::Jkr);
+    assert_eq!(note.switch_tabor, SOLVED_TABOR.1);
+    assert_eq!(c.pull_off.load, -1.5);
+    let (c, note) = asperity_curve(CurveLaw::LennardJones, 1e-4, -1.0, 1.0, 5).unwrap();
+    assert_eq!(note.unwrap().limit, Limit::BradleyDmt);
+    assert_eq!(c.pull_off.load, -2.0);
+    let (_, note) = asperity_curve(CurveLaw::LennardJones, 1.0, -1.0, 1.0, 3).unwrap();
+    assert!(note.is_none());
+}
+
+/// The JKR limit's pull-off error at the upper end of the solved range is
+/// what `LIMIT_PULL_OFF_ERROR` states.
+#[test]
+fn jkr_switch_error_is_as_stated() {
+    let c = lennard_jones_curve(SOLVED_TABOR.1, -1.0, 0.0, 3, SphereSettings::default()).unwrap();
+    let error = (c.pull_off.load + 1.5).abs() / c.pull_off.load.abs();
+    assert!(
+        (error - LIMIT_PULL_OFF_ERROR.1).abs() < 0.1 * LIMIT_PULL_OFF_ERROR.1,
+        "stated {} measured {error}",
+        LIMIT_PULL_OFF_ERROR.1
+    );
+}
+
+/// Mesh refinement: doubling the rings' density changes the pull-off at μ = 1
+/// by less than the 2e-3 (relative) docs/model.md §11 states.
+#[test]
+fn refinement_changes_little() {
+    let coarse = lennard_jones_curve(1.0, -1.0, 0.0, 3, SphereSettings::default()).unwrap();
+    let fine = lennard_jones_curve(1.0, -1.0, 0.0, 3, SphereSettings { refinement: 2.0 }).unwrap();
+    let change = (coarse.pull_off.load - fine.pull_off.load).abs() / fine.pull_off.load.abs();
+    assert!(change < 2e-3, "{change}");
+}
+
+/// `wearopt asperity`: the CSV's columns, and the JSON's keys.
+#[test]
+fn cli_csv_and_json() {
+    let out = stdout(
+        wearopt().args([
+            "asperity", "--tabor", "2", "--from", "-1", "--to", "0.5", "--points", "4", "--format",
+            "csv",
+        ]),
+        0,
+    );
+    let text = String::from_utf8(out).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "interference,load,contact_radius,branch"
+    );
+    let rows: Vec<_> = lines.collect();
+    assert!(rows.len() >= 4);
+    assert!(rows.iter().all(|r| r.split(',').count() == 4));
+    let out = stdout(
+        wearopt().args([
+            "asperity", "--tabor", "0.5", "--from", "-1", "--to", "0.5", "--points", "3",
+            "--format", "json",
+        ]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["tabor"], 0.5);
+    assert!(v["pull_off"]["load"].as_f64().unwrap() < -1.5);
+    assert!(v["jump_in"].is_null() && v["jump_out"].is_null());
+    assert_eq!(v["points"].as_array().unwrap().len(), 3);
+}
+
+/// Bad input exits 2 naming the option and what is accepted.
+#[test]
+fn cli_bad_input() {
+    for (args, needle) in [
+        (vec!["--tabor", "0"], "--tabor 0"),
+        (vec!["--tabor", "-1"], "--tabor -1"),
+        (vec!["--tabor", "inf"], "--tabor inf"),
+        (vec!["--tabor", "NaN"], "--tabor NaN"),
+    ] {
+        let mut cmd = wearopt();
+        cmd.arg("asperity")
+            .args(args)
+            .args(["--from", "-1", "--to", "1", "--points", "3"]);
+        let err = String::from_utf8(stderr(&mut cmd, 2)).unwrap();
+        assert!(err.contains(needle) && err.contains("positive"), "{err}");
+    }
+    let mut cmd = wearopt();
+    cmd.args([
+        "asperity", "--tabor", "1", "--from", "-1", "--to", "1", "--points", "1",
+    ]);
+    let err = String::from_utf8(stderr(&mut cmd, 2)).unwrap();
+    assert!(err.contains("--points 1"), "{err}");
+    let mut cmd = wearopt();
+    cmd.args([
+        "asperity", "--tabor", "1", "--from", "1", "--to", "-1", "--points", "3",
+    ]);
+    let err = String::from_utf8(stderr(&mut cmd, 2)).unwrap();
+    assert!(err.contains("--from 1") && err.contains("--to -1"), "{err}");
+    let mut cmd = wearopt();
+    cmd.args([
+        "asperity",
+        "--tabor",
+        "1",
+        "--from",
+        "-1",
+        "--to",
+        "1",
+        "--points",
+        "3",
+        "--adhesion-model",
+        "maugis",
+    ]);
+    let err = String::from_utf8(stderr(&mut cmd, 2)).unwrap();
+    assert!(err.contains("lennard_jones, jkr, dmt"), "{err}");
+}
