@@ -21,7 +21,7 @@ fn law_words(law: CurveLaw) -> &'static str {
     match law {
         CurveLaw::LennardJones => "Lennard-Jones sphere (self-consistent)",
         CurveLaw::Jkr => "JKR",
-        CurveLaw::Dmt => "DMT with van der Waals attraction",
+        CurveLaw::Dmt => "DMT, van der Waals attraction",
     }
 }
 
@@ -70,7 +70,7 @@ pub fn text(doc: &AsperityDocument) -> String {
     let mut t = format!(
         "wearopt asperity — {} at Tabor parameter μ = {} (Maugis–Dugdale λ ≈ {})\n\n",
         law_words(o.law),
-        sig(o.tabor, 6),
+        number(o.tabor),
         sig(1.16 * o.tabor, 4)
     );
     t.push_str("  units: load P̂ = P/(πγR), interference δ̂ = δ (K²/(π²γ²R))^(1/3), contact radius â = a (K/(πγR²))^(1/3)\n");
@@ -165,7 +165,7 @@ pub fn plot_svg(doc: &AsperityDocument) -> String {
         format!(
             "One asperity — {}, μ = {}",
             law_words(o.law),
-            sig(o.tabor, 4)
+            number(o.tabor)
         ),
         Axis::linear("interference δ̂ = δ (K²/(π²γ²R))^(1/3)"),
         Axis::linear("load P̂ = P/(πγR)"),
@@ -178,7 +178,7 @@ pub fn plot_svg(doc: &AsperityDocument) -> String {
             .map(|p| (p.interference, p.load))
             .collect();
         plot = plot.with_series(
-            Series::new(format!("{} (for comparison)", law_words(other.law)), pts)
+            Series::new(format!("{} (comparison)", law_words(other.law)), pts)
                 .with_marker(Marker::None)
                 .with_color(match other.law {
                     CurveLaw::Jkr => "#999999",
@@ -236,7 +236,7 @@ pub fn html(doc: &AsperityDocument) -> String {
     let mut p = super::html::Page::new(&format!(
         "wearopt asperity — {}, μ = {}",
         law_words(o.law),
-        sig(o.tabor, 6)
+        number(o.tabor)
     ));
     p.paragraph(
         "Maugis units: load P̂ = P/(πγR), interference δ̂ = δ (K²/(π²γ²R))^(1/3), contact radius â = a (K/(πγR²))^(1/3). The Maugis–Dugdale parameter is λ ≈ 1.16 μ.",
