@@ -254,14 +254,27 @@ pub fn dmt_curve(tabor: f64, from: f64, to: f64, points: usize) -> AsperityCurve
             }
         }
     };
-    let rows = targets(from, to, points).into_iter().map(at).collect();
-    let mut path: Vec<CurvePoint> = targets(from, to, 401).into_iter().map(at).collect();
-    if from < 0.0 && to > 0.0 {
+    single_valued(CurveLaw::Dmt, tabor, (from, to, points), at, true)
+}
+
+/// A single-valued closed-form curve whose pull-off is −2 at δ̂ = 0 (DMT and
+/// the Bradley–DMT limit): rows at the targets, a 401-point path (with δ̂ = 0,
+/// the joint of the two pieces, when `joint` and the range spans it).
+fn single_valued(
+    law: CurveLaw,
+    tabor: f64,
+    (from, to, points): (f64, f64, usize),
+    at: impl Fn(f64) -> CurvePoint,
+    joint: bool,
+) -> AsperityCurve {
+    let rows = targets(from, to, points).into_iter().map(&at).collect();
+    let mut path: Vec<CurvePoint> = targets(from, to, 401).into_iter().map(&at).collect();
+    if joint && from < 0.0 && to > 0.0 {
         path.push(at(0.0));
+        path.sort_by(|a, b| a.interference.total_cmp(&b.interference));
     }
-    path.sort_by(|a, b| a.interference.total_cmp(&b.interference));
     AsperityCurve {
-        law: CurveLaw::Dmt,
+        law,
         tabor,
         points: rows,
         pull_off: CurveMark {
@@ -342,20 +355,7 @@ pub fn bradley_dmt_curve(tabor: f64, from: f64, to: f64, points: usize) -> Asper
             },
         }
     };
-    let rows = targets(from, to, points).into_iter().map(at).collect();
-    let path = targets(from, to, 401).into_iter().map(at).collect();
-    AsperityCurve {
-        law: CurveLaw::LennardJones,
-        tabor,
-        points: rows,
-        pull_off: CurveMark {
-            interference: 0.0,
-            load: -2.0,
-        },
-        jump_in: None,
-        jump_out: None,
-        path,
-    }
+    single_valued(CurveLaw::LennardJones, tabor, (from, to, points), at, false)
 }
 
 /// The curve of `law` at Tabor parameter μ (> 0, finite) over `from..=to`
@@ -593,7 +593,25 @@ pub fn lennard_jones_curve(
         }
     }
     let s_shaped = turns.len() >= 2;
-    // Branches: the segments of monotone δ̂ between the turning points.
+    // Branches: the segments of monotone δ̂ between the turning points (a
+    // point at arclength `at` in window k has passed the turns before it).
+    let branch_after = |k: usize, at: f64, p: &SpherePoint| {
+        let passed = turns
+            .iter()
+            .filter(|t| t.0 < k || (t.0 == k && t.1 < at))
+            .count();
+        if s_shaped {
+            match passed {
+                0 => Branch::Approach,
+                n if n >= turns.len() => Branch::Contact,
+                _ => Branch::Unstable,
+            }
+        } else if p.contact_radius > 0.0 {
+            Branch::Contact
+        } else {
+            Branch::Approach
+        }
+    };
     let mut rows = Vec::new();
     for target in targets(from, to, points) {
         for (k, w) in windows.iter().enumerate() {
@@ -614,21 +632,7 @@ pub fn lennard_jones_curve(
                 root(&sphere, w, |s| s.point.interference - target)?
             };
             let p = state.point;
-            let passed = turns
-                .iter()
-                .filter(|t| t.0 < k || (t.0 == k && t.1 < at))
-                .count();
-            let branch = if s_shaped {
-                match passed {
-                    0 => Branch::Approach,
-                    n if n >= turns.len() => Branch::Contact,
-                    _ => Branch::Unstable,
-                }
-            } else if p.contact_radius > 0.0 {
-                Branch::Contact
-            } else {
-                Branch::Approach
-            };
+            let branch = branch_after(k, at, &p);
             rows.push(CurvePoint {
                 interference: target,
                 load: p.load,
@@ -645,23 +649,6 @@ pub fn lennard_jones_curve(
     // A target between one step's end and the next's regraded start is found
     // in both: the branch holds one point per interference.
     rows.dedup_by(|a, b| a.interference == b.interference && a.branch == b.branch);
-    let branch_after = |k: usize, at: f64, p: &SpherePoint| {
-        let passed = turns
-            .iter()
-            .filter(|t| t.0 < k || (t.0 == k && t.1 < at))
-            .count();
-        if s_shaped {
-            match passed {
-                0 => Branch::Approach,
-                n if n >= turns.len() => Branch::Contact,
-                _ => Branch::Unstable,
-            }
-        } else if p.contact_radius > 0.0 {
-            Branch::Contact
-        } else {
-            Branch::Approach
-        }
-    };
     let path = windows
         .iter()
         .enumerate()
