@@ -677,6 +677,149 @@ pub fn lennard_jones_curve(
     })
 }
 
+/// A window of `windows` (one `usable`) over which `f` changes sign; where `f`
+/// changes sign only between one window's end and the next one's regraded start
+/// (the regrade moves a state by up to its tolerance), the earlier window
+/// lengthened on its own mesh until it brackets the root.
+fn bracket(
+    sphere: &Sphere,
+    windows: &[Window],
+    f: impl Fn(&SphereState) -> f64,
+    usable: impl Fn(&Window) -> bool,
+) -> Result<Window, CurveError> {
+    if let Some(w) = windows
+        .iter()
+        .find(|w| f(&w.start) * f(&w.end) <= 0.0 && usable(w))
+    {
+        return Ok(Window {
+            start: w.start.clone(),
+            length: w.length,
+            end: w.end.clone(),
+        });
+    }
+    let k = windows
+        .windows(2)
+        .position(|pair| f(&pair[0].end) * f(&pair[1].start) <= 0.0)
+        .ok_or(CurveError::NotConverged(f64::NAN))?;
+    let w = &windows[k];
+    let mut length = w.length;
+    for _ in 0..20 {
+        length *= 1.25;
+        let end = sphere.step(&w.start, length)?;
+        if f(&w.start) * f(&end) <= 0.0 {
+            return Ok(Window {
+                start: w.start.clone(),
+                length,
+                end,
+            });
+        }
+    }
+    Err(CurveError::NotConverged(w.end.point.apex_gap))
+}
+
+/// The apex gap (over Z0) at which a single-valued curve's samples change from
+/// the approach part (followed in the apex gap) to the contact part (followed
+/// in the interference): past the steep rise where contact forms.
+pub const SPLIT_GAP: f64 = 1.0;
+
+/// A Lennard-Jones curve sampled the way the rough-surface law follows it
+/// (docs/model.md §11): the approach branch up to the jump into contact (or,
+/// where the curve is single-valued, up to [`SPLIT_GAP`]) at chosen apex gaps,
+/// and the contact branch from there on at chosen interferences.
+#[derive(Debug, Clone)]
+pub struct LoadingSamples {
+    /// μ.
+    pub tabor: f64,
+    /// The apex gap (over Z0) where the approach part ends.
+    pub end_gap: f64,
+    /// The interference δ̂ where the contact part starts (the jump-in's, or the
+    /// split's).
+    pub switch: f64,
+    /// True where the curve is S-shaped: the load jumps at `switch`.
+    pub jumps: bool,
+    /// The approach branch at the apex gaps asked for.
+    pub approach: Vec<SpherePoint>,
+    /// The contact branch at the interferences asked for.
+    pub contact: Vec<SpherePoint>,
+}
+
+/// Samples the Lennard-Jones curve of Tabor parameter μ for a table: the
+/// approach branch at the apex gaps `approach_gaps(end_gap)` returns (each at
+/// least `end_gap`; gaps beyond the traced range are solved directly from the
+/// far field) and the contact branch at the interferences `contact_at(switch)`
+/// returns (each between `switch` and `to`).
+pub fn lennard_jones_loading(
+    tabor: f64,
+    approach_gaps: impl Fn(f64) -> Vec<f64>,
+    contact_at: impl Fn(f64) -> Vec<f64>,
+    to: f64,
+    settings: SphereSettings,
+) -> Result<LoadingSamples, CurveError> {
+    let sphere = Sphere::new(tabor, settings);
+    let z0 = sphere.z0;
+    let windows = trace(&sphere, z0 * (1.0 - 3.0), to)?;
+    let slope = |s: &SphereState| s.point.interference_slope;
+    let turning: Vec<usize> = windows
+        .iter()
+        .enumerate()
+        .filter(|(_, w)| (slope(&w.start) > 0.0) != (slope(&w.end) > 0.0))
+        .map(|(k, _)| k)
+        .collect();
+    let jumps = turning.len() >= 2;
+    // The end of the approach part: the first turn, or the split gap; the
+    // contact part starts in the window after the last turn (or the split).
+    let (end_state, approach_windows, contact_from) = if jumps {
+        let k = turning[0];
+        let (state, _) = root(&sphere, &windows[k], slope)?;
+        (state, k, turning[turning.len() - 1])
+    } else {
+        let k = windows
+            .iter()
+            .position(|w| w.end.point.apex_gap <= SPLIT_GAP)
+            .ok_or(CurveError::NotConverged(SPLIT_GAP))?;
+        let (state, _) = root(&sphere, &windows[k], |s| s.point.apex_gap - SPLIT_GAP)?;
+        (state, k, k)
+    };
+    let end_gap = end_state.point.apex_gap;
+    let switch = end_state.point.interference;
+    let first_gap = windows[0].start.point.apex_gap;
+    let approach = approach_gaps(end_gap)
+        .into_iter()
+        .map(|g| {
+            if g == end_gap {
+                return Ok(end_state.point);
+            }
+            if g >= first_gap {
+                return Ok(sphere.far(g)?.point);
+            }
+            let f = |s: &SphereState| s.point.apex_gap - g;
+            let w = bracket(&sphere, &windows[..=approach_windows], f, |_| true)?;
+            Ok(root(&sphere, &w, f)?.0.point)
+        })
+        .collect::<Result<Vec<_>, CurveError>>()?;
+    let contact = contact_at(switch)
+        .into_iter()
+        .map(|d| {
+            if d == switch && !jumps {
+                return Ok(end_state.point);
+            }
+            let f = |s: &SphereState| s.point.interference - d;
+            let w = bracket(&sphere, &windows[contact_from..], f, |w| {
+                slope(&w.end) > 0.0
+            })?;
+            Ok(root(&sphere, &w, f)?.0.point)
+        })
+        .collect::<Result<Vec<_>, CurveError>>()?;
+    Ok(LoadingSamples {
+        tabor,
+        end_gap,
+        switch,
+        jumps,
+        approach,
+        contact,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

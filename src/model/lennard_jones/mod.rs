@@ -5,5 +5,6 @@
 
 pub(crate) mod elliptic;
 pub mod sphere;
+pub mod table;
 
 pub use sphere::{spacing, NotConverged, Sphere, SpherePoint, SphereSettings, SphereState};

@@ -84,6 +84,9 @@ pub struct SpherePoint {
     pub load: f64,
     /// Contact radius â: where the gap is 3^{1/6} Z0 (0 if nowhere).
     pub contact_radius: f64,
+    /// The load carried inside the contact radius, 2 ∫_0^â p̃ r dr (P̂ units):
+    /// the whole load under JKR, the Hertz load under DMT.
+    pub inner_load: f64,
     /// dδ̂/ds along the path (s its arclength, increasing towards the flat):
     /// zero at the jumps.
     pub interference_slope: f64,
@@ -492,11 +495,21 @@ impl Sphere {
                 (s0 + (threshold - g0) / (g1 - g0) * (s1 - s0)).sqrt()
             }
         };
+        // The load inside the contact radius: whole rings, and the share of the
+        // ring it cuts by area.
+        let inner_load = (0..n)
+            .map(|j| {
+                let (b0, b1) = (edges[j], edges[j + 1]);
+                let inside = (contact_radius.min(b1).powi(2) - b0 * b0).max(0.0);
+                p[j] * inside
+            })
+            .sum::<f64>();
         let point = SpherePoint {
             apex_gap: apex,
             interference,
             load,
             contact_radius,
+            inner_load,
             interference_slope,
             load_slope,
         };

@@ -1,0 +1,153 @@
+//! Writes the Lennard-Jones loading table (src/model/lennard_jones/table.txt)
+//! from the sphere solver: `scripts/lennard_jones_table.sh` runs it.
+//!
+//! Usage: `lennard_jones_table [REFINEMENT] [MU ...]` — the Tabor parameters
+//! default to the table's grid; blocks go to stdout in increasing μ, progress
+//! to stderr. `lennard_jones_table check FILE [MU ...]` compares a table with
+//! the solver between its nodes.
+
+use wearopt::model::asperity_curve::lennard_jones_loading;
+use wearopt::model::lennard_jones::table::{
+    approach_gaps, contact_breaks, contact_nodes, write_block,
+};
+use wearopt::model::lennard_jones::{spacing, SphereSettings};
+
+/// The table's grid: μ from 0.01 to 5, 12 per decade (geometric).
+fn grid() -> Vec<f64> {
+    let (lo, hi, per_decade) = (0.01f64, 5.0f64, 12.0);
+    let n = ((hi / lo).log10() * per_decade).ceil() as usize;
+    (0..=n)
+        .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
+        .collect()
+}
+
+/// δ̂_max: the contact part reaches 50 beyond contact (the tail takes over).
+const REACH: f64 = 50.0;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("check") {
+        let only: Vec<f64> = args[2..].iter().map(|a| a.parse().expect("MU")).collect();
+        return check(&args[1], &only);
+    }
+    let refinement: f64 = args.first().map_or(1.0, |a| a.parse().expect("REFINEMENT"));
+    let mus: Vec<f64> = if args.len() > 1 {
+        args[1..].iter().map(|a| a.parse().expect("MU")).collect()
+    } else {
+        grid()
+    };
+    let settings = SphereSettings { refinement };
+    println!("# Lennard-Jones loading curves (docs/model.md §11), refinement {refinement}:");
+    println!(
+        "# written by scripts/lennard_jones_table.sh; read by src/model/lennard_jones/table.rs"
+    );
+    for mu in mus {
+        let start = std::time::Instant::now();
+        // Where the trace stalls deep in contact, a slightly shorter reach (the
+        // trace's steps scale with it) gets through.
+        let mut to = REACH;
+        let samples = loop {
+            match lennard_jones_loading(
+                mu,
+                approach_gaps,
+                |switch| contact_nodes(&contact_breaks(switch, to)),
+                to,
+                settings,
+            ) {
+                Ok(s) => break s,
+                Err(e) if to > 0.6 * REACH => {
+                    eprintln!("μ = {mu}: {e:?} reaching {to}; retrying");
+                    to *= 0.93;
+                }
+                Err(e) => panic!("μ = {mu}: {e:?}"),
+            }
+        };
+        let loads: Vec<f64> = samples.approach.iter().map(|p| p.load).collect();
+        let openings: Vec<f64> = samples
+            .approach
+            .iter()
+            .map(|p| p.interference / spacing(mu) - 1.0 + p.apex_gap)
+            .collect();
+        let breaks = contact_breaks(samples.switch, to);
+        let column = |f: fn(&wearopt::model::lennard_jones::SpherePoint) -> f64| -> Vec<f64> {
+            samples.contact.iter().map(f).collect()
+        };
+        let contact = column(|p| p.load);
+        let radius = column(|p| p.contact_radius);
+        let inner = column(|p| p.inner_load);
+        print!(
+            "{}",
+            write_block(
+                (mu, samples.end_gap, samples.switch, samples.jumps),
+                (&loads, &openings),
+                &breaks,
+                [&contact, &radius, &inner]
+            )
+        );
+        eprintln!(
+            "μ = {mu:.5}: switch {:.6} (jumps: {}), {:.1} s",
+            samples.switch,
+            samples.jumps,
+            start.elapsed().as_secs_f64()
+        );
+    }
+}
+
+/// Compares each curve of the table in `path` with the solver at points the
+/// table was not built from: the midpoints (in τ, and in δ̂ on each panel)
+/// between its nodes, of every curve or of those whose μ is in `only`. Prints
+/// the largest differences per curve.
+fn check(path: &str, only: &[f64]) {
+    use wearopt::model::lennard_jones::table::{lobatto, parse, APPROACH_DEGREE, PANEL_DEGREE};
+    let text = std::fs::read_to_string(path).expect("read the table");
+    let curves = parse(&text).expect("parse the table");
+    println!("tabor,approach_abs,approach_rel,contact_abs,contact_rel,tail_rel");
+    for c in &curves {
+        if !only.is_empty() && !only.iter().any(|m| (m / c.tabor - 1.0).abs() < 1e-3) {
+            continue;
+        }
+        let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
+        let mid_taus: Vec<f64> = taus.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+        let gaps: Vec<f64> = mid_taus.iter().map(|t| 1.0 / (t * t)).collect();
+        let breaks = contact_breaks(c.switch, c.max_interference());
+        let mut mids = Vec::new();
+        for pair in breaks.windows(2) {
+            let nodes = lobatto(pair[0], pair[1], PANEL_DEGREE);
+            mids.extend(nodes.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+        }
+        let beyond = [1.5 * c.max_interference(), 2.0 * c.max_interference()];
+        let gaps_for = |_: f64| gaps.clone();
+        let to = 2.0 * c.max_interference();
+        let mut all = mids.clone();
+        all.extend(beyond);
+        let samples = lennard_jones_loading(
+            c.tabor,
+            gaps_for,
+            |_| all.clone(),
+            to,
+            SphereSettings::default(),
+        )
+        .expect("solve");
+        let (mut aa, mut ar) = (0.0f64, 0.0f64);
+        for (t, p) in mid_taus.iter().zip(&samples.approach) {
+            let q = c.approach(*t);
+            let e = (q.load - p.load).abs();
+            aa = aa.max(e);
+            ar = ar.max(e / p.load.abs().max(1e-300));
+            let ed = (q.interference - p.interference).abs();
+            aa = aa.max(ed / (1.0 + p.interference.abs()));
+        }
+        let (mut ca, mut cr, mut tr) = (0.0f64, 0.0f64, 0.0f64);
+        for (d, p) in all.iter().zip(&samples.contact) {
+            let (q, _) = c.contact(*d);
+            let e = (q - p.load).abs();
+            if *d > c.max_interference() {
+                tr = tr.max(e / p.load.abs());
+            } else {
+                ca = ca.max(e);
+                cr = cr.max(e / p.load.abs().max(1e-300));
+            }
+        }
+        println!("{},{aa:.2e},{ar:.2e},{ca:.2e},{cr:.2e},{tr:.2e}", c.tabor);
+    }
+}

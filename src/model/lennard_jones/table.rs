@@ -1,0 +1,504 @@
+//! The Lennard-Jones asperity's loading curve P̂(δ̂; μ) as tables the
+//! rough-surface law can evaluate in nanoseconds (docs/model.md §11).
+//!
+//! For each tabulated Tabor parameter μ the curve is stored the way a summit of
+//! a rough surface follows it on loading:
+//!
+//! * **the approach part**, from the far field to the jump into contact (or,
+//!   where the curve is single-valued, to the apex gap
+//!   [`SPLIT_GAP`](crate::model::asperity_curve::SPLIT_GAP)), in the variable
+//!   τ = G^{-1/2} (G the apex gap over Z0; τ = 0 far away), as two Chebyshev
+//!   series on [0, τ_end]: the load over Bradley's rigid load at the same apex
+//!   gap, P̂(τ)/B(τ) (1 far away, so the far field keeps its relative
+//!   accuracy), and the elastic opening e(τ) = δ̂/ẑ0 − 1 + G, so that
+//!   δ̂(τ) = ẑ0 (1 − τ⁻² + e(τ)). In τ both are analytic where δ̂ has its
+//!   turning point (the jump);
+//! * **the contact part**, from the switch δ̂_s (the jump's interference, or the
+//!   split's) to δ̂_max, as Chebyshev series in δ̂ on panels whose widths double
+//!   away from δ̂_s (the curve's nearest singularity, the jump-out turning point,
+//!   lies just below δ̂_s near the cusp μ ≈ 0.7);
+//! * beyond δ̂_max, P̂ = (δ̂ − C)^{3/2} − B with C, B matched to the last
+//!   panel's value and slope: a Hertz load shifted by the squeezed gap and
+//!   lowered by the adhesion (JKR's curve has this form to O(1): its δ̂^{3/4}
+//!   terms cancel).
+//!
+//! The values at the Chebyshev–Lobatto nodes come from the solver
+//! ([`crate::model::asperity_curve::lennard_jones_loading`]) and are committed
+//! in `table.txt`, written by `scripts/lennard_jones_table.sh`.
+
+use std::sync::OnceLock;
+
+/// A Chebyshev series on [a, b], with the series of its derivative.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chebyshev {
+    lo: f64,
+    hi: f64,
+    coefficients: Vec<f64>,
+    derivative: Vec<f64>,
+}
+
+/// The Chebyshev–Lobatto nodes of degree n on [a, b], ascending.
+pub fn lobatto(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    (0..=n)
+        .map(|i| {
+            if i == 0 {
+                lo
+            } else if i == n {
+                hi
+            } else {
+                let x = -(std::f64::consts::PI * i as f64 / n as f64).cos();
+                0.5 * (lo + hi) + 0.5 * (hi - lo) * x
+            }
+        })
+        .collect()
+}
+
+impl Chebyshev {
+    /// The interpolant of `values` at [`lobatto`]`(lo, hi, values.len() - 1)`.
+    pub fn interpolate(lo: f64, hi: f64, values: &[f64]) -> Chebyshev {
+        let n = values.len() - 1;
+        let pi = std::f64::consts::PI;
+        // x_i = −cos(πi/n) = cos(π(n−i)/n): c_k = (2/n) Σ'' f_i T_k(x_i).
+        let mut coefficients: Vec<f64> = (0..=n)
+            .map(|k| {
+                let sum: f64 = values
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &f)| {
+                        let half = if i == 0 || i == n { 0.5 } else { 1.0 };
+                        let angle = pi * ((k * (n - i)) % (2 * n)) as f64 / n as f64;
+                        half * f * angle.cos()
+                    })
+                    .sum();
+                2.0 * sum / n as f64
+            })
+            .collect();
+        coefficients[0] *= 0.5;
+        coefficients[n] *= 0.5;
+        // The derivative's series in x: c'_{k−1} = c'_{k+1} + 2k c_k.
+        let mut derivative = vec![0.0; n.max(1)];
+        for k in (1..=n).rev() {
+            let above = if k + 1 < n { derivative[k + 1] } else { 0.0 };
+            derivative[k - 1] = above + 2.0 * k as f64 * coefficients[k];
+        }
+        derivative[0] *= 0.5;
+        let scale = 2.0 / (hi - lo);
+        for d in &mut derivative {
+            *d *= scale;
+        }
+        Chebyshev {
+            lo,
+            hi,
+            coefficients,
+            derivative,
+        }
+    }
+
+    fn clenshaw(series: &[f64], x: f64) -> f64 {
+        let (mut b1, mut b2) = (0.0, 0.0);
+        for &c in series.iter().skip(1).rev() {
+            let b0 = 2.0 * x * b1 - b2 + c;
+            b2 = b1;
+            b1 = b0;
+        }
+        x * b1 - b2 + series[0]
+    }
+
+    /// The series' value and derivative at t ∈ [a, b].
+    #[inline]
+    pub fn at(&self, t: f64) -> (f64, f64) {
+        let x = (2.0 * t - self.lo - self.hi) / (self.hi - self.lo);
+        (
+            Self::clenshaw(&self.coefficients, x),
+            Self::clenshaw(&self.derivative, x),
+        )
+    }
+}
+
+/// One tabulated Tabor parameter's loading curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    /// μ.
+    pub tabor: f64,
+    /// ẑ0 = Z0/ε.
+    pub z0: f64,
+    /// The apex gap where the approach part ends.
+    pub end_gap: f64,
+    /// δ̂_s, where the contact part starts.
+    pub switch: f64,
+    /// True where the load jumps at δ̂_s (an S-shaped curve).
+    pub jumps: bool,
+    /// P̂(τ)/B(τ) on the approach part, B Bradley's rigid load at the apex gap.
+    approach_load: Chebyshev,
+    /// e(τ) on the approach part.
+    opening: Chebyshev,
+    /// The contact panels' ends, ascending from δ̂_s to δ̂_max.
+    breaks: Vec<f64>,
+    /// P̂(δ̂) on each contact panel.
+    panels: Vec<Chebyshev>,
+    /// â(δ̂) on each contact panel.
+    radius: Vec<Chebyshev>,
+    /// The load inside the contact radius, P̂_in(δ̂), on each contact panel.
+    inner: Vec<Chebyshev>,
+    /// C, B of the tail beyond δ̂_max.
+    tail: (f64, f64),
+}
+
+/// One equilibrium of the approach part.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ApproachPoint {
+    /// δ̂.
+    pub interference: f64,
+    /// dδ̂/dτ.
+    pub interference_slope: f64,
+    /// P̂.
+    pub load: f64,
+    /// dP̂/dτ.
+    pub load_slope: f64,
+}
+
+impl Curve {
+    /// τ_end = G_end^{-1/2}.
+    pub fn tau_end(&self) -> f64 {
+        self.approach_load.hi
+    }
+
+    /// δ̂_max, the end of the last contact panel.
+    pub fn max_interference(&self) -> f64 {
+        self.breaks[self.breaks.len() - 1]
+    }
+
+    /// The approach part at τ ∈ [0, τ_end].
+    #[inline]
+    pub fn approach(&self, tau: f64) -> ApproachPoint {
+        let (ratio, ratio_slope) = self.approach_load.at(tau);
+        let (rigid, rigid_slope) = bradley(tau);
+        let load = ratio * rigid;
+        let load_slope = ratio_slope * rigid + ratio * rigid_slope;
+        let (e, de) = self.opening.at(tau);
+        if tau <= 0.0 {
+            return ApproachPoint {
+                interference: f64::NEG_INFINITY,
+                interference_slope: f64::INFINITY,
+                load: 0.0,
+                load_slope: 0.0,
+            };
+        }
+        let t2 = tau * tau;
+        ApproachPoint {
+            interference: self.z0 * (1.0 - 1.0 / t2 + e),
+            interference_slope: self.z0 * (2.0 / (t2 * tau) + de),
+            load,
+            load_slope,
+        }
+    }
+
+    /// P̂ and dP̂/dδ̂ on the contact part at δ̂ ≥ δ̂_s.
+    #[inline]
+    pub fn contact(&self, d: f64) -> (f64, f64) {
+        let last = self.breaks.len() - 1;
+        if d >= self.breaks[last] {
+            let (c, b) = self.tail;
+            let r = (d - c).sqrt();
+            return ((d - c) * r - b, 1.5 * r);
+        }
+        self.panels[self.panel(d)].at(d)
+    }
+
+    /// The contact radius â and the load inside it, P̂_in, on the contact part
+    /// at δ̂_s ≤ δ̂ ≤ δ̂_max.
+    pub fn contact_area(&self, d: f64) -> (f64, f64) {
+        let k = self.panel(d.min(self.max_interference()));
+        (self.radius[k].at(d).0, self.inner[k].at(d).0)
+    }
+
+    /// The contact panel holding δ̂ (< δ̂_max).
+    fn panel(&self, d: f64) -> usize {
+        let last = self.breaks.len() - 1;
+        match self
+            .breaks
+            .binary_search_by(|b| b.partial_cmp(&d).unwrap_or(std::cmp::Ordering::Less))
+        {
+            Ok(k) => k.min(last - 1),
+            Err(k) => k.saturating_sub(1).min(last - 1),
+        }
+    }
+
+    /// The τ of the approach part where δ̂ = `d` (< δ̂_s), by Newton's method
+    /// safeguarded by bisection (δ̂ rises monotonically in τ up to τ_end).
+    pub fn tau_at(&self, d: f64) -> f64 {
+        let (mut lo, mut hi) = (0.0, self.tau_end());
+        // The rigid τ as the start: δ̂ = ẑ0 (1 − τ⁻²).
+        let rigid = 1.0 / (1.0 - d / self.z0).max(1e-300).sqrt();
+        let mut t = rigid.min(hi);
+        for _ in 0..200 {
+            let p = self.approach(t);
+            let f = p.interference - d;
+            if f > 0.0 {
+                hi = t;
+            } else {
+                lo = t;
+            }
+            let mut next = t - f / p.interference_slope;
+            if !(next > lo && next < hi) {
+                next = 0.5 * (lo + hi);
+            }
+            if (next - t).abs() <= 1e-15 * t || hi - lo <= 1e-15 * hi {
+                return next;
+            }
+            t = next;
+        }
+        t
+    }
+
+    /// The loading curve's P̂ at δ̂ (the approach part below δ̂_s, the contact
+    /// part from it).
+    pub fn load(&self, d: f64) -> f64 {
+        if d >= self.switch {
+            self.contact(d).0
+        } else {
+            self.approach(self.tau_at(d)).load
+        }
+    }
+}
+
+/// Bradley's rigid-sphere load at apex gap G = τ⁻², (2/3)(τ¹⁶ − 4τ⁴), and its
+/// τ-derivative (negative for G > 4^{-1/6}: every approach part ends above).
+#[inline]
+pub fn bradley(tau: f64) -> (f64, f64) {
+    let t2 = tau * tau;
+    let t4 = t2 * t2;
+    let t12 = t4 * t4 * t4;
+    (
+        2.0 / 3.0 * (t12 - 4.0) * t4,
+        2.0 / 3.0 * (16.0 * t12 - 16.0) * t2 * tau,
+    )
+}
+
+/// The approach part's degree (nodes τ_1 … τ_n; τ_0 = 0 is the far field).
+pub const APPROACH_DEGREE: usize = 32;
+/// Each contact panel's degree.
+pub const PANEL_DEGREE: usize = 12;
+/// The first contact panel's width; each next one is twice as wide.
+pub const FIRST_PANEL: f64 = 1e-3;
+
+/// The approach part's apex gaps G_i = τ_i⁻² (i = 1 … n, decreasing) for a
+/// curve whose approach part ends at `end_gap`.
+pub fn approach_gaps(end_gap: f64) -> Vec<f64> {
+    let nodes = lobatto(0.0, end_gap.powf(-0.5), APPROACH_DEGREE);
+    let mut gaps: Vec<f64> = nodes[1..].iter().map(|t| 1.0 / (t * t)).collect();
+    gaps[APPROACH_DEGREE - 1] = end_gap;
+    gaps
+}
+
+/// The contact panels' ends from δ̂_s to δ̂_max.
+pub fn contact_breaks(switch: f64, max_interference: f64) -> Vec<f64> {
+    let mut breaks = vec![switch];
+    let mut width = FIRST_PANEL;
+    while switch + 2.0 * width < max_interference {
+        breaks.push(switch + width);
+        width *= 2.0;
+    }
+    breaks.push(max_interference);
+    breaks
+}
+
+/// The interferences the contact part is sampled at: every panel's Lobatto
+/// nodes, shared ends once.
+pub fn contact_nodes(breaks: &[f64]) -> Vec<f64> {
+    let mut nodes = vec![breaks[0]];
+    for pair in breaks.windows(2) {
+        nodes.extend_from_slice(&lobatto(pair[0], pair[1], PANEL_DEGREE)[1..]);
+    }
+    nodes
+}
+
+impl Curve {
+    /// The curve from the solver's samples: the approach loads and openings at
+    /// [`approach_gaps`], the contact loads at [`contact_nodes`] of `breaks`.
+    pub fn from_samples(
+        header: (f64, f64, f64, bool),
+        approach: (&[f64], &[f64]),
+        breaks: Vec<f64>,
+        contact: [&[f64]; 3],
+    ) -> Curve {
+        let (tabor, end_gap, switch, jumps) = header;
+        let z0 = super::spacing(tabor);
+        let tau_end = end_gap.powf(-0.5);
+        let with_far = |v: &[f64]| [&[0.0][..], v].concat();
+        // The load over Bradley's at the same apex gap: 1 far away, where both
+        // vanish like τ⁴, so the far field keeps its relative accuracy.
+        let taus = lobatto(0.0, tau_end, approach.0.len());
+        let ratios: Vec<f64> = std::iter::once(1.0)
+            .chain(
+                approach
+                    .0
+                    .iter()
+                    .zip(&taus[1..])
+                    .map(|(p, &t)| p / bradley(t).0),
+            )
+            .collect();
+        let approach_load = Chebyshev::interpolate(0.0, tau_end, &ratios);
+        let opening = Chebyshev::interpolate(0.0, tau_end, &with_far(approach.1));
+        let series = |v: &[f64]| -> Vec<Chebyshev> {
+            breaks
+                .windows(2)
+                .enumerate()
+                .map(|(k, pair)| {
+                    let values = &v[k * PANEL_DEGREE..=(k + 1) * PANEL_DEGREE];
+                    Chebyshev::interpolate(pair[0], pair[1], values)
+                })
+                .collect()
+        };
+        let panels = series(contact[0]);
+        let radius = series(contact[1]);
+        let inner = series(contact[2]);
+        let last = panels.last().expect("a contact part has a panel");
+        let d = last.hi;
+        let (p, slope) = last.at(d);
+        // (δ̂ − C)^{3/2} − B with the panel's slope and value at δ̂_max.
+        let r = slope.max(0.0) / 1.5;
+        let c = d - r * r;
+        let b = r * r * r - p;
+        Curve {
+            tabor,
+            z0,
+            end_gap,
+            switch,
+            jumps,
+            approach_load,
+            opening,
+            breaks,
+            panels,
+            radius,
+            inner,
+            tail: (c, b),
+        }
+    }
+}
+
+/// Why `table.txt` could not be read (a corrupt edit; the tests read it).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TableError(pub String);
+
+/// Reads the table's text: per curve the lines `curve μ end_gap switch jumps`,
+/// `approach P̂_1 … P̂_n`, `opening e_1 … e_n`, `breaks δ̂_s … δ̂_max`,
+/// `contact P̂ …`, `radius â …`, `inner P̂_in …` (comment lines start with `#`).
+pub fn parse(text: &str) -> Result<Vec<Curve>, TableError> {
+    let mut lines = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'));
+    let mut curves = Vec::new();
+    let numbers = |line: Option<&str>, key: &str| -> Result<Vec<f64>, TableError> {
+        let line = line.ok_or_else(|| TableError(format!("missing `{key}` line")))?;
+        let mut words = line.split_whitespace();
+        if words.next() != Some(key) {
+            return Err(TableError(format!("expected `{key}`, found `{line}`")));
+        }
+        words
+            .map(|w| {
+                w.parse::<f64>()
+                    .map_err(|_| TableError(format!("`{w}` in `{key}` is not a number")))
+            })
+            .collect()
+    };
+    while let Some(first) = lines.next() {
+        let head = numbers(Some(first), "curve")?;
+        if head.len() != 4 {
+            return Err(TableError(format!("`{first}`: expected 4 numbers")));
+        }
+        let load = numbers(lines.next(), "approach")?;
+        let opening = numbers(lines.next(), "opening")?;
+        let breaks = numbers(lines.next(), "breaks")?;
+        let contact = numbers(lines.next(), "contact")?;
+        let radius = numbers(lines.next(), "radius")?;
+        let inner = numbers(lines.next(), "inner")?;
+        if load.len() != APPROACH_DEGREE || opening.len() != APPROACH_DEGREE {
+            return Err(TableError(format!("μ = {}: approach length", head[0])));
+        }
+        let nodes = (breaks.len().max(2) - 1) * PANEL_DEGREE + 1;
+        if breaks.len() < 2 || [&contact, &radius, &inner].iter().any(|v| v.len() != nodes) {
+            return Err(TableError(format!("μ = {}: contact length", head[0])));
+        }
+        curves.push(Curve::from_samples(
+            (head[0], head[1], head[2], head[3] != 0.0),
+            (&load, &opening),
+            breaks,
+            [&contact, &radius, &inner],
+        ));
+    }
+    if curves.windows(2).any(|w| w[0].tabor >= w[1].tabor) {
+        return Err(TableError("curves not in increasing μ".into()));
+    }
+    Ok(curves)
+}
+
+/// The committed table.
+pub const TABLE: &str = include_str!("table.txt");
+
+/// The committed table's curves, in increasing μ (read once).
+pub fn curves() -> &'static [Curve] {
+    static CURVES: OnceLock<Vec<Curve>> = OnceLock::new();
+    CURVES.get_or_init(|| parse(TABLE).expect("the committed table.txt parses (tested)"))
+}
+
+/// Writes one curve's block of `table.txt` from the solver's samples.
+pub fn write_block(
+    header: (f64, f64, f64, bool),
+    approach: (&[f64], &[f64]),
+    breaks: &[f64],
+    contact: [&[f64]; 3],
+) -> String {
+    let row = |key: &str, v: &[f64]| {
+        let mut s = key.to_string();
+        for x in v {
+            s.push(' ');
+            s.push_str(&format!("{x:e}"));
+        }
+        s.push('\n');
+        s
+    };
+    let (tabor, end_gap, switch, jumps) = header;
+    let mut out = format!(
+        "curve {tabor:e} {end_gap:e} {switch:e} {}\n",
+        u8::from(jumps)
+    );
+    out += &row("approach", approach.0);
+    out += &row("opening", approach.1);
+    out += &row("breaks", breaks);
+    out += &row("contact", contact[0]);
+    out += &row("radius", contact[1]);
+    out += &row("inner", contact[2]);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chebyshev_reproduces_a_polynomial_and_its_derivative() {
+        let f = |t: f64| 3.0 - 2.0 * t + 0.5 * t.powi(5);
+        let df = |t: f64| -2.0 + 2.5 * t.powi(4);
+        let nodes = lobatto(-0.5, 2.0, 7);
+        let values: Vec<f64> = nodes.iter().map(|&t| f(t)).collect();
+        let c = Chebyshev::interpolate(-0.5, 2.0, &values);
+        for t in [-0.5, -0.1, 0.7, 1.3, 2.0] {
+            let (v, d) = c.at(t);
+            assert!((v - f(t)).abs() < 1e-13, "{t}: {v} vs {}", f(t));
+            assert!((d - df(t)).abs() < 1e-12, "{t}: {d} vs {}", df(t));
+        }
+    }
+
+    #[test]
+    fn contact_breaks_double_away_from_the_switch() {
+        let b = contact_breaks(-0.5, 10.0);
+        assert_eq!(b[0], -0.5);
+        assert_eq!(*b.last().unwrap(), 10.0);
+        for w in b.windows(3).take(b.len() - 3) {
+            assert!(((w[2] - w[1]) / (w[1] - w[0]) - 2.0).abs() < 1e-9 || w[0] == -0.5);
+        }
+        assert_eq!(contact_nodes(&b).len(), (b.len() - 1) * PANEL_DEGREE + 1);
+    }
+}

@@ -1,0 +1,162 @@
+//! The Lennard-Jones loading table (src/model/lennard_jones/table.txt) against
+//! the solver it was written from, at points it was not built from, and
+//! against the closed-form limits at its ends.
+
+use wearopt::model::asperity_curve::{lennard_jones_loading, SOLVED_TABOR};
+use wearopt::model::lennard_jones::table::{curves, lobatto, APPROACH_DEGREE};
+use wearopt::model::lennard_jones::SphereSettings;
+
+/// The committed table covers the solved range's upper part with a grid dense
+/// enough to interpolate between (at most 1/12 decade apart) and in order.
+#[test]
+fn the_table_covers_its_grid() {
+    let c = curves();
+    assert!(c.len() >= 30, "{} curves", c.len());
+    assert!((c[0].tabor - 0.01).abs() < 1e-12);
+    assert!((c[c.len() - 1].tabor - SOLVED_TABOR.1).abs() < 1e-9);
+    for w in c.windows(2) {
+        let ratio = w[1].tabor / w[0].tabor;
+        assert!(
+            ratio > 1.0 && ratio <= 10f64.powf(1.0 / 12.0) + 1e-9,
+            "{ratio}"
+        );
+    }
+    // S-shaped from the cusp (MODEL.md §8: μ about 0.7) up, single-valued below.
+    let first = c.iter().position(|curve| curve.jumps).unwrap();
+    assert!(c[first..].iter().all(|curve| curve.jumps));
+    assert!(c[first].tabor > 0.6 && c[first - 1].tabor < 1.0);
+}
+
+/// Where the curve is single-valued, the approach part's end and the contact
+/// part's start are one solver point (the split): the table is continuous
+/// there. Where it jumps, both parts start from the jump's interference.
+#[test]
+fn the_parts_meet_at_the_switch() {
+    for c in curves() {
+        let end = c.approach(c.tau_end());
+        assert!(
+            (end.interference - c.switch).abs() < 1e-9 * (1.0 + c.switch.abs()),
+            "μ = {}: {} vs {}",
+            c.tabor,
+            end.interference,
+            c.switch
+        );
+        if !c.jumps {
+            let (load, _) = c.contact(c.switch);
+            assert!((end.load - load).abs() < 1e-9, "μ = {}", c.tabor);
+        } else {
+            // Under displacement control the load jumps towards the flat.
+            assert!(c.contact(c.switch).0 < end.load, "μ = {}", c.tabor);
+        }
+    }
+}
+
+/// Far from the flat every sphere is rigid: the approach part tends to
+/// Bradley's P̂ = (2/3)[G⁻⁸ − 4G⁻²] at apex gap G (docs/model.md §11), the
+/// elastic opening vanishing faster than the load.
+#[test]
+fn the_far_field_is_bradleys() {
+    for c in curves() {
+        for g in [30.0f64, 300.0] {
+            let p = c.approach(g.powf(-0.5));
+            let bradley = 2.0 / 3.0 * (g.powi(-8) - 4.0 * g.powi(-2));
+            let rel = (p.load - bradley).abs() / bradley.abs();
+            // The elastic correction is of order μ^{3/2} G^{-1/2} (and ≤ 1 %).
+            assert!(rel < 2e-2, "μ = {} G = {g}: {rel:e}", c.tabor);
+            assert!(p.load < 0.0);
+        }
+    }
+    // μ = 0.01 is rigid to 1e-3 already near the flat.
+    let c = &curves()[0];
+    let g = 2.0f64;
+    let bradley = 2.0 / 3.0 * (g.powi(-8) - 4.0 * g.powi(-2));
+    assert!((c.approach(g.powf(-0.5)).load / bradley - 1.0).abs() < 1e-3);
+}
+
+/// At the top of the table the contact part is within the measured distance
+/// of JKR (1.6 % in the pull-off at μ = 5, `asperity_curve::LIMIT_PULL_OFF_ERROR`):
+/// the load at δ̂ = 1, 5, 20 within 3 % of 1 + |P̂| of JKR's loading curve.
+#[test]
+fn the_top_of_the_table_is_near_jkr() {
+    let c = curves().last().unwrap();
+    for d in [1.0f64, 5.0, 20.0] {
+        // JKR's â from δ̂ = â² − (2/3)√(6â) by Newton, then P̂ = â³ − √(6â³).
+        let mut a = d.sqrt() + 1.0;
+        for _ in 0..50 {
+            let f = a * a - 2.0 / 3.0 * (6.0 * a).sqrt() - d;
+            let df = 2.0 * a - (6.0f64).sqrt() / (3.0 * a.sqrt());
+            a -= f / df;
+        }
+        let jkr = a.powi(3) - (6.0 * a.powi(3)).sqrt();
+        let (p, _) = c.contact(d);
+        assert!(
+            (p - jkr).abs() < 0.03 * (1.0 + jkr.abs()),
+            "δ̂ = {d}: {p} vs {jkr}"
+        );
+    }
+}
+
+/// The table against the solver at points it was not built from (midpoints
+/// between its nodes), at μ = 0.0147 and 1.7 (one each side of the cusp):
+/// the approach part within 2e-4 and the contact part within 2e-3 of P̂ (the
+/// solver's own step-to-step noise as its mesh follows the contact edge; the
+/// whole table: `lennard_jones_table check`, README).
+#[test]
+fn the_table_matches_the_solver_between_its_nodes() {
+    for index in [3usize, 21] {
+        let c = &curves()[index];
+        let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
+        let mid_taus: Vec<f64> = [5usize, 20, 29, 31]
+            .iter()
+            .map(|&i| 0.5 * (taus[i] + taus[i + 1]))
+            .collect();
+        let gaps: Vec<f64> = mid_taus.iter().map(|t| 1.0 / (t * t)).collect();
+        let ds: Vec<f64> = [0.0037, 0.31, 2.7].iter().map(|x| c.switch + x).collect();
+        let samples = lennard_jones_loading(
+            c.tabor,
+            |_| gaps.clone(),
+            |_| ds.clone(),
+            c.switch + 3.0,
+            SphereSettings::default(),
+        )
+        .unwrap();
+        assert_eq!(samples.jumps, c.jumps);
+        // Traced with other steps (to a nearer end), the switch moves by the
+        // solver's noise.
+        assert!(
+            (samples.switch - c.switch).abs() < 2e-3,
+            "μ = {}: {} vs {}",
+            c.tabor,
+            samples.switch,
+            c.switch
+        );
+        for (t, p) in mid_taus.iter().zip(&samples.approach) {
+            let q = c.approach(*t);
+            assert!((q.load - p.load).abs() < 2e-4, "μ = {} τ = {t}", c.tabor);
+        }
+        for (d, p) in ds.iter().zip(&samples.contact) {
+            let (q, _) = c.contact(*d);
+            assert!(
+                (q - p.load).abs() < 2e-3 * (1.0 + p.load.abs()),
+                "μ = {} δ̂ = {d}: {q} vs {}",
+                c.tabor,
+                p.load
+            );
+        }
+    }
+}
+
+/// The load inside the contact radius is the whole load where the curve is
+/// JKR-like (μ = 5: within 5 %) and the Hertz load, above the whole load by
+/// about the attraction outside, where it is DMT-like (μ = 0.01).
+#[test]
+fn the_inner_load_spans_jkr_and_dmt() {
+    let top = curves().last().unwrap();
+    let (_, inner) = top.contact_area(20.0);
+    let (load, _) = top.contact(20.0);
+    assert!((inner / load - 1.0).abs() < 0.05, "{inner} vs {load}");
+    let bottom = &curves()[0];
+    let (_, inner) = bottom.contact_area(20.0);
+    let (load, _) = bottom.contact(20.0);
+    assert!(inner > load + 1.0, "{inner} vs {load}");
+}
