@@ -206,10 +206,23 @@ impl Curve {
     }
 
     /// The contact radius â and the load inside it, P̂_in, on the contact part
-    /// at δ̂_s ≤ δ̂ ≤ δ̂_max.
+    /// at δ̂ ≥ δ̂_s.
+    /// Beyond δ̂_max, â² continues along its tangent and P̂_in keeps its offset
+    /// from P̂ (both Hertzian there).
     pub fn contact_area(&self, d: f64) -> (f64, f64) {
-        let k = self.panel(d.min(self.max_interference()));
-        (self.radius[k].at(d).0, self.inner[k].at(d).0)
+        let max = self.max_interference();
+        let k = self.panel(d.min(max));
+        if d <= max {
+            return (self.radius[k].at(d).0, self.inner[k].at(d).0);
+        }
+        let (a, slope) = self.radius[k].at(max);
+        let inner = self.inner[k].at(max).0 - self.contact(max).0 + self.contact(d).0;
+        ((a * a + 2.0 * a * slope * (d - max)).sqrt(), inner)
+    }
+
+    /// The contact panels' ends, δ̂_s … δ̂_max.
+    pub fn breaks(&self) -> &[f64] {
+        &self.breaks
     }
 
     /// The contact panel holding δ̂ (< δ̂_max).

@@ -1,0 +1,290 @@
+//! The rough surface under the Lennard-Jones asperity law (MODEL.md §8,
+//! docs/model.md §11): the load of every summit, attracted ones included,
+//! integrated over the Gaussian summit heights.
+//!
+//! In the units of docs/model.md §3 one summit at interference Δ = δ/σ carries
+//! p(Δ) = ℓ^{-3/2} P̂(ℓΔ; μ), with ℓ = σ/ε = (2/c_0)^{2/3} (so that the JKR curve
+//! in these units is §3's p_e: c_a = √6 ℓ^{-3/4}) and μ = ẑ0/(ℓ z0),
+//! z0 = Z0/σ. Then
+//!
+//! ```text
+//! P̄(h) = ∫ p(Δ) φ̄(h+Δ) dΔ,   φ̄(u) = e^{-u²/2},
+//! ```
+//!
+//! over the approach part (Δ below the switch, in τ = G^{-1/2} where the
+//! table is smooth), the contact part from the switch to Δc (Gauss–Legendre
+//! panels that keep the table's own panel ends), and the plastic junctions
+//! beyond Δc (c_p Δ − c_0, in closed form by the caller). Shares with Δ < 0 are
+//! the non-contact load. A Tabor parameter between the table's nodes is
+//! served by interpolating the integrals (not the curves, whose jumps move)
+//! between the four nearest nodes, cubic in ln μ.
+//!
+//! **Plastic junctions.** A summit turns plastic when the load it carries
+//! inside its contact radius, over the contact area, reaches the hardness:
+//! P̂_in/â² = c_h ℓ^{1/2} (P_in/(πa²) = H). Under JKR the whole load acts
+//! inside the contact and a² = Rδ1: §3's cubic. Under DMT the adhesion acts
+//! outside and P_in is Hertz's, a² = Rδ: Δc = c_h².
+
+use super::table::{curves, Curve};
+use crate::model::gauss;
+
+/// The half-width in Δ of the weight's range: e^{-u²/2} ≥ e^{-46} inside.
+const REACH: f64 = 9.591_663_046_625_44;
+
+/// The Gauss–Legendre order on each panel.
+const ORDER: usize = 20;
+
+/// The non-contact and contact shares of P̄ and their first two
+/// h-derivatives, each a mantissa: the value is `m e^{-exponent}`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Shares {
+    /// ∫_{Δ<0} p φ̄ dΔ, and its h-derivatives.
+    pub noncontact: [f64; 3],
+    /// The scale of `noncontact`: κ(−h) = max(−h, 0)²/2.
+    pub noncontact_exponent: f64,
+    /// ∫_0^{Δc} p φ̄ dΔ (elastic contacts), and its h-derivatives.
+    pub elastic: [f64; 3],
+    /// The scale of `elastic`: κ(h) = max(h, 0)²/2.
+    pub elastic_exponent: f64,
+}
+
+/// One node's share of the law: its curve, its weight and its Δc.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    curve: &'static Curve,
+    weight: f64,
+    critical: f64,
+}
+
+/// The Lennard-Jones law of one scene: ℓ, μ and the nodes that serve μ.
+#[derive(Debug, Clone)]
+pub struct RoughLaw {
+    /// ℓ = σ/ε.
+    pub ell: f64,
+    /// μ.
+    pub tabor: f64,
+    nodes: Vec<Node>,
+}
+
+/// The Lagrange weights of the four nodes around μ (cubic in ln μ), or fewer at
+/// the table's ends; None outside the table.
+fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64)>> {
+    let c = curves();
+    let (lo, hi) = (c[0].tabor, c[c.len() - 1].tabor);
+    if !(tabor >= lo * (1.0 - 1e-12) && tabor <= hi * (1.0 + 1e-12)) {
+        return None;
+    }
+    let x = tabor.ln();
+    let kept: Vec<usize> = (0..c.len()).filter(|&k| Some(k) != skip).collect();
+    if let Some(&k) = kept
+        .iter()
+        .find(|&&k| (c[k].tabor / tabor - 1.0).abs() < 1e-12)
+    {
+        return Some(vec![(k, 1.0)]);
+    }
+    let above = kept
+        .iter()
+        .position(|&k| c[k].tabor >= tabor)
+        .unwrap_or(kept.len() - 1);
+    let first = above.saturating_sub(2).min(kept.len() - 4);
+    let ks = &kept[first..first + 4];
+    let xs: Vec<f64> = ks.iter().map(|&k| c[k].tabor.ln()).collect();
+    Some(
+        (0..4)
+            .map(|i| {
+                let w = (0..4)
+                    .filter(|&j| j != i)
+                    .map(|j| (x - xs[j]) / (xs[i] - xs[j]))
+                    .product::<f64>();
+                (ks[i], w)
+            })
+            .collect(),
+    )
+}
+
+impl RoughLaw {
+    /// The law for the load coefficients c_0 > 0 (adhesion), c_h (∞: no
+    /// plasticity) and the attraction range z0 = Z0/σ; None where μ lies
+    /// outside the table (its closed-form limits stand in there).
+    pub fn new(c_0: f64, c_h: f64, z0: f64) -> Option<RoughLaw> {
+        Self::interpolated(c_0, c_h, z0, None)
+    }
+
+    /// As [`RoughLaw::new`], interpolating without the table's curve `skip`
+    /// (to measure the interpolation in μ where the answer is known).
+    #[doc(hidden)]
+    pub fn interpolated(c_0: f64, c_h: f64, z0: f64, skip: Option<usize>) -> Option<RoughLaw> {
+        let ell = (2.0 / c_0).powf(2.0 / 3.0);
+        let tabor = super::spacing(1.0) / (ell * z0);
+        let nodes = stencil(tabor, skip)?
+            .into_iter()
+            .map(|(k, weight)| {
+                let curve = &curves()[k];
+                Node {
+                    curve,
+                    weight,
+                    critical: critical_interference(curve, c_h * ell.sqrt()) / ell,
+                }
+            })
+            .collect();
+        Some(RoughLaw { ell, tabor, nodes })
+    }
+
+    /// Δc of each node, with its weight.
+    pub fn critical_interferences(&self) -> Vec<(f64, f64)> {
+        self.nodes.iter().map(|n| (n.critical, n.weight)).collect()
+    }
+
+    /// The shares at separation h.
+    pub fn at(&self, h: f64) -> Shares {
+        let mut out = Shares {
+            noncontact_exponent: 0.5 * (-h).max(0.0).powi(2),
+            elastic_exponent: 0.5 * h.max(0.0).powi(2),
+            ..Shares::default()
+        };
+        for node in &self.nodes {
+            let s = self.node_at(node, h);
+            for i in 0..3 {
+                out.noncontact[i] += node.weight * s.noncontact[i];
+                out.elastic[i] += node.weight * s.elastic[i];
+            }
+        }
+        out
+    }
+
+    /// The log-weight relative to a share's scale, and u = h + Δ.
+    #[inline]
+    fn weight(h: f64, d: f64, contact: bool) -> f64 {
+        // Contact shares scale by κ(h), non-contact ones by κ(−h): where the
+        // scale is h²/2 the exponent is −Δ(h + Δ/2), exact for large |h|.
+        let scaled = if contact { h > 0.0 } else { h < 0.0 };
+        if scaled {
+            (-d * (h + 0.5 * d)).exp()
+        } else {
+            (-0.5 * (h + d) * (h + d)).exp()
+        }
+    }
+
+    fn node_at(&self, node: &Node, h: f64) -> Shares {
+        let c = node.curve;
+        let ell = self.ell;
+        let scale = ell.powf(-1.5);
+        let switch = c.switch / ell;
+        let (lo, hi) = (-h - REACH, -h + REACH);
+        let mut out = Shares::default();
+        let rule = gauss::rule(ORDER);
+        // The approach part, in τ, over Δ-panels of unit width.
+        let top = hi.min(switch);
+        if lo < top {
+            let mut d0 = lo;
+            let mut t0 = c.tau_at(ell * d0);
+            while d0 < top {
+                let d1 = (d0 + 1.0).min(top);
+                let t1 = if d1 == switch {
+                    c.tau_end()
+                } else {
+                    c.tau_at(ell * d1)
+                };
+                let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
+                for (x, w) in rule.nodes.iter().zip(&rule.weights) {
+                    let p = c.approach(mid + half * x);
+                    let d = p.interference / ell;
+                    let u = h + d;
+                    let f = scale * p.load * p.interference_slope / ell
+                        * Self::weight(h, d, false)
+                        * w
+                        * half;
+                    out.noncontact[0] += f;
+                    out.noncontact[1] -= f * u;
+                    out.noncontact[2] += f * (u * u - 1.0);
+                }
+                d0 = d1;
+                t0 = t1;
+            }
+        }
+        // The contact part from the switch to Δc, on panels that keep the
+        // table's ends, 0 and Δc, none wider than 1.
+        let end = hi.min(node.critical);
+        let start = lo.max(switch);
+        if start < end {
+            let mut cuts: Vec<f64> = c
+                .breaks()
+                .iter()
+                .map(|b| b / ell)
+                .chain([0.0, start, end])
+                .filter(|&d| d >= start && d <= end)
+                .collect();
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup();
+            for pair in cuts.windows(2) {
+                let pieces = (pair[1] - pair[0]).ceil().max(1.0) as usize;
+                for k in 0..pieces {
+                    let a = pair[0] + (pair[1] - pair[0]) * k as f64 / pieces as f64;
+                    let b = pair[0] + (pair[1] - pair[0]) * (k + 1) as f64 / pieces as f64;
+                    let contact = a >= 0.0;
+                    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+                    let mut sums = [0.0; 3];
+                    for (x, w) in rule.nodes.iter().zip(&rule.weights) {
+                        let d = mid + half * x;
+                        let u = h + d;
+                        let (load, _) = c.contact(ell * d);
+                        let f = scale * load * Self::weight(h, d, contact) * w * half;
+                        sums[0] += f;
+                        sums[1] -= f * u;
+                        sums[2] += f * (u * u - 1.0);
+                    }
+                    let share = if contact {
+                        &mut out.elastic
+                    } else {
+                        &mut out.noncontact
+                    };
+                    for i in 0..3 {
+                        share[i] += sums[i];
+                    }
+                }
+            }
+        }
+        out
+    }
+}
+
+/// δ̂c of one curve: where P̂_in/â² first reaches `target` = c_h ℓ^{1/2} on
+/// the contact part (bisection; ∞ for c_h = ∞; the switch where the ratio
+/// already exceeds it there).
+pub fn critical_interference(curve: &Curve, target: f64) -> f64 {
+    if target.is_infinite() {
+        return f64::INFINITY;
+    }
+    let ratio = |d: f64| {
+        let (a, inner) = curve.contact_area(d);
+        if a <= 0.0 {
+            f64::NEG_INFINITY
+        } else {
+            inner / (a * a)
+        }
+    };
+    let mut lo = curve.switch.max(0.0);
+    if ratio(lo) >= target {
+        return lo;
+    }
+    let mut hi = curve.max_interference();
+    while ratio(hi) < target {
+        lo = hi;
+        hi *= 2.0;
+        if hi > 1e300 {
+            return f64::INFINITY;
+        }
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if ratio(mid) < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
