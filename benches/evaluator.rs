@@ -3,6 +3,8 @@
 //! law and the DMT law with both attractions (issue 11: one DMT P̄ + Ā ≤ 1 µs, a DMT
 //! scene with separation solve and pull-off ≤ 20 µs).
 //!
+//! The Lennard-Jones law's integrals (issue 23: one P̄ + Ā ≤ 2 µs) at one h.
+//!
 //! Run: `cargo bench --bench evaluator`
 
 use std::hint::black_box;
@@ -165,10 +167,38 @@ fn capillary(c: &mut Criterion) {
     g.finish();
 }
 
+/// The Lennard-Jones law's P̄ shares at one h (docs/model.md §11), on the hub
+/// (θ = 184, z0 = 0.1: μ = 0.374, between the table's curves, so four of them
+/// are integrated) and at one of the table's curves (μ = 0.358).
+fn nondimensional_lennard_jones(c: &mut Criterion) {
+    use wearopt::model::lennard_jones::rough::RoughLaw;
+    let mut g = c.benchmark_group("nondimensional Lennard-Jones P̄ at one h");
+    let c_0 = 2.0 * std::f64::consts::PI / 184.0;
+    let ell = (2.0 / c_0).powf(2.0 / 3.0);
+    for (name, z0) in [
+        ("hub mu=0.374", 0.1),
+        (
+            "one curve mu=0.358",
+            wearopt::model::lennard_jones::spacing(
+                wearopt::model::lennard_jones::table::curves()[19].tabor,
+            ) / ell,
+        ),
+    ] {
+        let law = RoughLaw::new(c_0, 10.0, z0).expect("in the table");
+        for h in [0.5, 2.0] {
+            g.bench_function(format!("{name} h={h}"), |b| {
+                b.iter(|| black_box(law.at(black_box(h))))
+            });
+        }
+    }
+    g.finish();
+}
+
 criterion_group!(
     benches,
     nondimensional,
     nondimensional_dmt,
+    nondimensional_lennard_jones,
     dimensional,
     dimensional_dmt,
     capillary

@@ -160,3 +160,22 @@ fn the_inner_load_spans_jkr_and_dmt() {
     let (load, _) = bottom.contact(20.0);
     assert!(inner > load + 1.0, "{inner} vs {load}");
 }
+
+/// δ̂(τ) is inverted on the approach part to rounding, from the far field to
+/// just before the switch, in a handful of steps' worth of time.
+#[test]
+fn the_approach_part_inverts() {
+    for c in curves() {
+        let points = [-1e4, -30.0, -2.0].map(|x| x * c.z0);
+        let near = [c.switch - 0.3, c.switch - 1e-6];
+        for d in points.into_iter().chain(near).filter(|&d| d < c.switch) {
+            let t = c.tau_at(d);
+            let back = c.approach(t).interference;
+            assert!(
+                (back - d).abs() <= 1e-12 * d.abs().max(1.0),
+                "μ = {}: {d} → {t} → {back}",
+                c.tabor
+            );
+        }
+    }
+}

@@ -239,12 +239,15 @@ impl Curve {
 
     /// The τ of the approach part where δ̂ = `d` (< δ̂_s), by Newton's method
     /// safeguarded by bisection (δ̂ rises monotonically in τ up to τ_end).
+    /// Tested: `tests/all/lennard_jones_table.rs`.
     pub fn tau_at(&self, d: f64) -> f64 {
         let (mut lo, mut hi) = (0.0, self.tau_end());
         // The rigid τ as the start: δ̂ = ẑ0 (1 − τ⁻²).
         let rigid = 1.0 / (1.0 - d / self.z0).max(1e-300).sqrt();
         let mut t = rigid.min(hi);
-        for _ in 0..200 {
+        // Newton's step where it stays in the bracket (ends included: at
+        // convergence it lands on t, which is one), else bisection.
+        for _ in 0..100 {
             let p = self.approach(t);
             let f = p.interference - d;
             if f > 0.0 {
@@ -253,10 +256,10 @@ impl Curve {
                 lo = t;
             }
             let mut next = t - f / p.interference_slope;
-            if !(next > lo && next < hi) {
+            if !(next >= lo && next <= hi) {
                 next = 0.5 * (lo + hi);
             }
-            if (next - t).abs() <= 1e-15 * t || hi - lo <= 1e-15 * hi {
+            if (next - t).abs() <= 1e-14 * t || hi - lo <= 1e-15 * hi || f == 0.0 {
                 return next;
             }
             t = next;
