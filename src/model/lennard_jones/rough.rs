@@ -31,8 +31,21 @@ use crate::model::gauss;
 /// The half-width in Δ of the weight's range: e^{-u²/2} ≥ e^{-46} inside.
 const REACH: f64 = 9.591_663_046_625_44;
 
-/// The Gauss–Legendre order on each panel.
+/// The Gauss–Legendre order on each panel (12 on the table's narrow panels).
 const ORDER: usize = 20;
+
+/// The widest approach panel in Δ: order 20 integrates the weight over it to
+/// rounding (its Taylor remainder over 4 units is below 1e-30).
+const APPROACH_PANEL: f64 = 4.0;
+
+/// The longest approach panel in τ, as a ratio of its ends: δ̂ ∝ −τ⁻² bends
+/// over a panel from τ to 1.5τ no more than order 20 resolves (a 4-unit panel
+/// next to the switch spans τ = 0.24 … 1 at ℓ = 30 and misses by 2e-9).
+const TAU_GROWTH: f64 = 1.5;
+
+/// The widest contact panel in Δ (the tail's (δ̂ − C)^{3/2} has its branch
+/// point within a few units of δ̂_max).
+const CONTACT_PANEL: f64 = 2.0;
 
 /// The non-contact and contact shares of P̄ and their first two
 /// h-derivatives, each a mantissa: the value is `m e^{-exponent}`.
@@ -56,14 +69,16 @@ struct Node {
     critical: f64,
 }
 
-/// The Lennard-Jones law of one scene: ℓ, μ and the nodes that serve μ.
-#[derive(Debug, Clone)]
+/// The Lennard-Jones law of one scene: ℓ, μ and the nodes that serve μ (a
+/// `Copy` value, as the evaluator's model is).
+#[derive(Debug, Clone, Copy)]
 pub struct RoughLaw {
     /// ℓ = σ/ε.
     pub ell: f64,
     /// μ.
     pub tabor: f64,
-    nodes: Vec<Node>,
+    nodes: [Node; 4],
+    count: usize,
 }
 
 /// The Lagrange weights of the four nodes around μ (cubic in ln μ), or fewer at
@@ -116,23 +131,39 @@ impl RoughLaw {
     pub fn interpolated(c_0: f64, c_h: f64, z0: f64, skip: Option<usize>) -> Option<RoughLaw> {
         let ell = (2.0 / c_0).powf(2.0 / 3.0);
         let tabor = super::spacing(1.0) / (ell * z0);
-        let nodes = stencil(tabor, skip)?
-            .into_iter()
-            .map(|(k, weight)| {
-                let curve = &curves()[k];
-                Node {
-                    curve,
-                    weight,
-                    critical: critical_interference(curve, c_h * ell.sqrt()) / ell,
-                }
-            })
-            .collect();
-        Some(RoughLaw { ell, tabor, nodes })
+        let stencil = stencil(tabor, skip)?;
+        let node = |&(k, weight): &(usize, f64)| {
+            let curve = &curves()[k];
+            Node {
+                curve,
+                weight,
+                critical: critical_interference(curve, c_h * ell.sqrt()) / ell,
+            }
+        };
+        let first = node(&stencil[0]);
+        let mut nodes = [first; 4];
+        for (slot, s) in nodes.iter_mut().zip(&stencil) {
+            *slot = node(s);
+        }
+        Some(RoughLaw {
+            ell,
+            tabor,
+            nodes,
+            count: stencil.len(),
+        })
+    }
+
+    /// The curves in use.
+    fn nodes(&self) -> &[Node] {
+        &self.nodes[..self.count]
     }
 
     /// Δc of each node, with its weight.
     pub fn critical_interferences(&self) -> Vec<(f64, f64)> {
-        self.nodes.iter().map(|n| (n.critical, n.weight)).collect()
+        self.nodes()
+            .iter()
+            .map(|n| (n.critical, n.weight))
+            .collect()
     }
 
     /// The shares at separation h.
@@ -142,7 +173,7 @@ impl RoughLaw {
             elastic_exponent: 0.5 * h.max(0.0).powi(2),
             ..Shares::default()
         };
-        for node in &self.nodes {
+        for node in self.nodes() {
             let s = self.node_at(node, h);
             for i in 0..3 {
                 out.noncontact[i] += node.weight * s.noncontact[i];
@@ -173,27 +204,35 @@ impl RoughLaw {
         let (lo, hi) = (-h - REACH, -h + REACH);
         let mut out = Shares::default();
         let rule = gauss::rule(ORDER);
-        // The approach part, in τ, over Δ-panels of unit width.
+        // The approach part, in τ.
         let top = hi.min(switch);
         if lo < top {
             let mut d0 = lo;
             let mut t0 = c.tau_at(ell * d0);
             while d0 < top {
-                let d1 = (d0 + 1.0).min(top);
-                let t1 = if d1 == switch {
-                    c.tau_end()
-                } else {
-                    c.tau_at(ell * d1)
-                };
+                // At most APPROACH_PANEL wide in Δ and TAU_GROWTH long in τ
+                // (where δ̂ ∝ −τ⁻² bends, near the switch at large ℓ).
+                let (mut d1, mut t1) = ((d0 + APPROACH_PANEL).min(top), f64::NAN);
+                let t_max = TAU_GROWTH * t0;
+                if t_max < c.tau_end() {
+                    let d_max = c.approach_load(t_max).0 / ell;
+                    if d_max < d1 {
+                        (d1, t1) = (d_max, t_max);
+                    }
+                }
+                if t1.is_nan() {
+                    t1 = if d1 == switch {
+                        c.tau_end()
+                    } else {
+                        c.tau_at(ell * d1)
+                    };
+                }
                 let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
                 for (x, w) in rule.nodes.iter().zip(&rule.weights) {
-                    let p = c.approach(mid + half * x);
-                    let d = p.interference / ell;
+                    let (interference, slope, load) = c.approach_load(mid + half * x);
+                    let d = interference / ell;
                     let u = h + d;
-                    let f = scale * p.load * p.interference_slope / ell
-                        * Self::weight(h, d, false)
-                        * w
-                        * half;
+                    let f = scale * load * slope / ell * Self::weight(h, d, false) * w * half;
                     out.noncontact[0] += f;
                     out.noncontact[1] -= f * u;
                     out.noncontact[2] += f * (u * u - 1.0);
@@ -203,21 +242,35 @@ impl RoughLaw {
             }
         }
         // The contact part from the switch to Δc, on panels that keep the
-        // table's ends, 0 and Δc, none wider than 1.
+        // table's ends, 0 and Δc, none wider than CONTACT_PANEL.
         let end = hi.min(node.critical);
         let start = lo.max(switch);
         if start < end {
+            // Beyond δ̂_max the tail's branch point C lies just behind: panels
+            // there double in their distance from it.
+            let branch = c.tail_branch() / ell;
+            let mut tail = Vec::new();
+            let mut cut = c.max_interference() / ell;
+            while cut < end && cut > branch {
+                cut = branch + 2.0 * (cut - branch);
+                tail.push(cut);
+            }
             let mut cuts: Vec<f64> = c
                 .breaks()
                 .iter()
                 .map(|b| b / ell)
+                .chain(tail)
                 .chain([0.0, start, end])
                 .filter(|&d| d >= start && d <= end)
                 .collect();
             cuts.sort_by(f64::total_cmp);
             cuts.dedup();
             for pair in cuts.windows(2) {
-                let pieces = (pair[1] - pair[0]).ceil().max(1.0) as usize;
+                let width = pair[1] - pair[0];
+                let pieces = (width / CONTACT_PANEL).ceil().max(1.0) as usize;
+                // A table panel much narrower than the weight's scale holds a
+                // polynomial of degree 12 times a nearly constant weight.
+                let rule = gauss::rule(if width <= 0.25 { 12 } else { ORDER });
                 for k in 0..pieces {
                     let a = pair[0] + (pair[1] - pair[0]) * k as f64 / pieces as f64;
                     let b = pair[0] + (pair[1] - pair[0]) * (k + 1) as f64 / pieces as f64;

@@ -104,10 +104,16 @@ impl Chebyshev {
         x * b1 - b2 + series[0]
     }
 
+    /// t ∈ [a, b] mapped to [−1, 1].
+    #[inline]
+    fn x(&self, t: f64) -> f64 {
+        (2.0 * t - self.lo - self.hi) / (self.hi - self.lo)
+    }
+
     /// The series' value and derivative at t ∈ [a, b].
     #[inline]
     pub fn at(&self, t: f64) -> (f64, f64) {
-        let x = (2.0 * t - self.lo - self.hi) / (self.hi - self.lo);
+        let x = self.x(t);
         (
             Self::clenshaw(&self.coefficients, x),
             Self::clenshaw(&self.derivative, x),
@@ -193,6 +199,22 @@ impl Curve {
         }
     }
 
+    /// δ̂, dδ̂/dτ and P̂ on the approach part at 0 < τ ≤ τ_end (what a
+    /// quadrature in τ needs; [`Curve::approach`] also gives dP̂/dτ).
+    #[inline]
+    pub fn approach_load(&self, tau: f64) -> (f64, f64, f64) {
+        let x = self.approach_load.x(tau);
+        let ratio = Chebyshev::clenshaw(&self.approach_load.coefficients, x);
+        let e = Chebyshev::clenshaw(&self.opening.coefficients, x);
+        let de = Chebyshev::clenshaw(&self.opening.derivative, x);
+        let t2 = tau * tau;
+        (
+            self.z0 * (1.0 - 1.0 / t2 + e),
+            self.z0 * (2.0 / (t2 * tau) + de),
+            ratio * bradley(tau).0,
+        )
+    }
+
     /// P̂ and dP̂/dδ̂ on the contact part at δ̂ ≥ δ̂_s.
     #[inline]
     pub fn contact(&self, d: f64) -> (f64, f64) {
@@ -218,6 +240,11 @@ impl Curve {
         let (a, slope) = self.radius[k].at(max);
         let inner = self.inner[k].at(max).0 - self.contact(max).0 + self.contact(d).0;
         ((a * a + 2.0 * a * slope * (d - max)).sqrt(), inner)
+    }
+
+    /// C of the tail beyond δ̂_max, P̂ = (δ̂ − C)^{3/2} − B: its branch point.
+    pub fn tail_branch(&self) -> f64 {
+        self.tail.0
     }
 
     /// The contact panels' ends, δ̂_s … δ̂_max.
