@@ -280,7 +280,7 @@ impl RoughLaw {
                     for (x, w) in rule.nodes.iter().zip(&rule.weights) {
                         let d = mid + half * x;
                         let u = h + d;
-                        let (load, _) = c.contact(ell * d);
+                        let load = c.contact_load(ell * d);
                         let f = scale * load * Self::weight(h, d, contact) * w * half;
                         sums[0] += f;
                         sums[1] -= f * u;

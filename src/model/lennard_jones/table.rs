@@ -215,6 +215,16 @@ impl Curve {
         )
     }
 
+    /// P̂ alone on the contact part at δ̂ ≥ δ̂_s (what a quadrature needs).
+    #[inline]
+    pub fn contact_load(&self, d: f64) -> f64 {
+        if d >= self.max_interference() {
+            return self.contact(d).0;
+        }
+        let panel = &self.panels[self.panel(d)];
+        Chebyshev::clenshaw(&panel.coefficients, panel.x(d))
+    }
+
     /// P̂ and dP̂/dδ̂ on the contact part at δ̂ ≥ δ̂_s.
     #[inline]
     pub fn contact(&self, d: f64) -> (f64, f64) {
