@@ -6,7 +6,7 @@
 //! to stderr. `lennard_jones_table check FILE [MU ...]` compares a table with
 //! the solver between its nodes.
 
-use wearopt::model::asperity_curve::lennard_jones_loading;
+use wearopt::model::asperity_curve::{lennard_jones_loading, CurveError};
 use wearopt::model::lennard_jones::table::{
     approach_gaps, contact_breaks, contact_nodes, write_block,
 };
@@ -43,25 +43,16 @@ fn main() {
     );
     for mu in mus {
         let start = std::time::Instant::now();
-        // Where the trace stalls deep in contact, a slightly shorter reach (the
-        // trace's steps scale with it) gets through.
-        let mut to = REACH;
-        let samples = loop {
-            match lennard_jones_loading(
+        let (samples, to) = with_shorter_reach(mu, REACH, 0.93, 0.6 * REACH, |to| {
+            lennard_jones_loading(
                 mu,
                 approach_gaps,
                 |switch| contact_nodes(&contact_breaks(switch, to)),
                 to,
                 settings,
-            ) {
-                Ok(s) => break s,
-                Err(e) if to > 0.6 * REACH => {
-                    eprintln!("μ = {mu}: {e:?} reaching {to}; retrying");
-                    to *= 0.93;
-                }
-                Err(e) => panic!("μ = {mu}: {e:?}"),
-            }
-        };
+            )
+        })
+        .unwrap_or_else(|e| panic!("μ = {mu}: {e:?}"));
         let loads: Vec<f64> = samples.approach.iter().map(|p| p.load).collect();
         let openings: Vec<f64> = samples
             .approach
@@ -97,6 +88,30 @@ fn main() {
 /// table was not built from: the midpoints (in τ, and in δ̂ on each panel)
 /// between its nodes, of every curve or of those whose μ is in `only`. Prints
 /// the largest differences per curve.
+/// `attempt(to)` from reach `start`, retried with the reach shortened by
+/// `factor` while it fails and stays above `floor`: where the solver's trace
+/// stalls deep in contact, a slightly shorter reach (the trace's steps scale
+/// with it) gets through. The result and the reach that gave it.
+fn with_shorter_reach<T>(
+    mu: f64,
+    start: f64,
+    factor: f64,
+    floor: f64,
+    attempt: impl Fn(f64) -> Result<T, CurveError>,
+) -> Result<(T, f64), CurveError> {
+    let mut to = start;
+    loop {
+        match attempt(to) {
+            Ok(t) => return Ok((t, to)),
+            Err(e) if to > floor => {
+                eprintln!("μ = {mu}: {e:?} reaching {to}; retrying");
+                to *= factor;
+            }
+            Err(e) => return Err(e),
+        }
+    }
+}
+
 fn check(path: &str, only: &[f64]) {
     use wearopt::model::lennard_jones::table::{lobatto, parse, APPROACH_DEGREE, PANEL_DEGREE};
     let text = std::fs::read_to_string(path).expect("read the table");
@@ -106,68 +121,63 @@ fn check(path: &str, only: &[f64]) {
         if !only.is_empty() && !only.iter().any(|m| (m / c.tabor - 1.0).abs() < 1e-3) {
             continue;
         }
-        'curves: {
-            let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
-            let mid_taus: Vec<f64> = taus.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
-            let gaps: Vec<f64> = mid_taus.iter().map(|t| 1.0 / (t * t)).collect();
-            let breaks = contact_breaks(c.switch, c.max_interference());
-            let mut mids = Vec::new();
-            for pair in breaks.windows(2) {
-                let nodes = lobatto(pair[0], pair[1], PANEL_DEGREE);
-                mids.extend(nodes.windows(2).map(|w| 0.5 * (w[0] + w[1])));
-            }
-            // The tail at 1.2 and 1.5 δ̂_max, traced to 1.6 δ̂_max; where the trace
-            // stalls deep in contact, to a shorter reach (and fewer tail points).
-            let mut to = 1.6 * c.max_interference();
-            let (samples, all) = loop {
-                let mut all = mids.clone();
-                all.extend(
-                    [1.2, 1.5]
-                        .iter()
-                        .map(|f| f * c.max_interference())
-                        .filter(|&d| d < to),
-                );
-                match lennard_jones_loading(
-                    c.tabor,
-                    |_| gaps.clone(),
-                    |_| all.clone(),
-                    to,
-                    SphereSettings::default(),
-                ) {
-                    Ok(s) => break (s, all),
-                    Err(e) if to > 1.05 * c.max_interference() => {
-                        eprintln!("μ = {}: {e:?} reaching {to}; retrying", c.tabor);
-                        to *= 0.97;
-                    }
-                    Err(e) => {
-                        // Reported, and the other curves still checked.
-                        eprintln!("μ = {}: {e:?}: not checked", c.tabor);
-                        println!("{},unsolved,,,,", c.tabor);
-                        break 'curves;
-                    }
-                }
-            };
-            let (mut aa, mut ar) = (0.0f64, 0.0f64);
-            for (t, p) in mid_taus.iter().zip(&samples.approach) {
-                let q = c.approach(*t);
-                let e = (q.load - p.load).abs();
-                aa = aa.max(e);
-                ar = ar.max(e / p.load.abs().max(1e-300));
-                let ed = (q.interference - p.interference).abs();
-                aa = aa.max(ed / (1.0 + p.interference.abs()));
-            }
-            let (mut ca, mut cr, mut tr) = (0.0f64, 0.0f64, 0.0f64);
-            for (d, p) in all.iter().zip(&samples.contact) {
-                let (q, _) = c.contact(*d);
-                let e = (q - p.load).abs();
-                if *d > c.max_interference() {
-                    tr = tr.max(e / p.load.abs());
-                } else {
-                    ca = ca.max(e);
-                    cr = cr.max(e / p.load.abs().max(1e-300));
-                }
-            }
-            println!("{},{aa:.2e},{ar:.2e},{ca:.2e},{cr:.2e},{tr:.2e}", c.tabor);
+        let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
+        let mid_taus: Vec<f64> = taus.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+        let gaps: Vec<f64> = mid_taus.iter().map(|t| 1.0 / (t * t)).collect();
+        let breaks = contact_breaks(c.switch, c.max_interference());
+        let mut mids = Vec::new();
+        for pair in breaks.windows(2) {
+            let nodes = lobatto(pair[0], pair[1], PANEL_DEGREE);
+            mids.extend(nodes.windows(2).map(|w| 0.5 * (w[0] + w[1])));
         }
+        // The tail at 1.2 and 1.5 δ̂_max, traced to 1.6 δ̂_max (a shorter reach
+        // where the trace stalls, with the tail points it still covers).
+        let max = c.max_interference();
+        let with_tail = |to: f64| -> Vec<f64> {
+            let tail = [1.2, 1.5].map(|f| f * max);
+            mids.iter()
+                .copied()
+                .chain(tail.into_iter().filter(|&d| d < to))
+                .collect()
+        };
+        let traced = with_shorter_reach(c.tabor, 1.6 * max, 0.97, 1.05 * max, |to| {
+            lennard_jones_loading(
+                c.tabor,
+                |_| gaps.clone(),
+                |_| with_tail(to),
+                to,
+                SphereSettings::default(),
+            )
+        });
+        let (samples, all) = match traced {
+            Ok((samples, to)) => (samples, with_tail(to)),
+            Err(e) => {
+                // Reported, and the other curves still checked.
+                eprintln!("μ = {}: {e:?}: not checked", c.tabor);
+                println!("{},unsolved,,,,", c.tabor);
+                continue;
+            }
+        };
+        let (mut aa, mut ar) = (0.0f64, 0.0f64);
+        for (t, p) in mid_taus.iter().zip(&samples.approach) {
+            let q = c.approach(*t);
+            let e = (q.load - p.load).abs();
+            aa = aa.max(e);
+            ar = ar.max(e / p.load.abs().max(1e-300));
+            let ed = (q.interference - p.interference).abs();
+            aa = aa.max(ed / (1.0 + p.interference.abs()));
+        }
+        let (mut ca, mut cr, mut tr) = (0.0f64, 0.0f64, 0.0f64);
+        for (d, p) in all.iter().zip(&samples.contact) {
+            let (q, _) = c.contact(*d);
+            let e = (q - p.load).abs();
+            if *d > c.max_interference() {
+                tr = tr.max(e / p.load.abs());
+            } else {
+                ca = ca.max(e);
+                cr = cr.max(e / p.load.abs().max(1e-300));
+            }
+        }
+        println!("{},{aa:.2e},{ar:.2e},{ca:.2e},{cr:.2e},{tr:.2e}", c.tabor);
     }
 }

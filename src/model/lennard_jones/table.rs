@@ -177,11 +177,6 @@ impl Curve {
     /// The approach part at τ ∈ [0, τ_end].
     #[inline]
     pub fn approach(&self, tau: f64) -> ApproachPoint {
-        let (ratio, ratio_slope) = self.approach_load.at(tau);
-        let (rigid, rigid_slope) = bradley(tau);
-        let load = ratio * rigid;
-        let load_slope = ratio_slope * rigid + ratio * rigid_slope;
-        let (e, de) = self.opening.at(tau);
         if tau <= 0.0 {
             return ApproachPoint {
                 interference: f64::NEG_INFINITY,
@@ -190,6 +185,11 @@ impl Curve {
                 load_slope: 0.0,
             };
         }
+        let (ratio, ratio_slope) = self.approach_load.at(tau);
+        let (rigid, rigid_slope) = bradley(tau);
+        let load = ratio * rigid;
+        let load_slope = ratio_slope * rigid + ratio * rigid_slope;
+        let (e, de) = self.opening.at(tau);
         let t2 = tau * tau;
         ApproachPoint {
             interference: self.z0 * (1.0 - 1.0 / t2 + e),
