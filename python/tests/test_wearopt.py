@@ -203,9 +203,26 @@ def test_curve_dmt_equals_cli_columns():
         np.testing.assert_array_equal(got[k], expected[k], err_msg=k)
 
 
+def test_curve_lennard_jones_equals_cli_columns():
+    expected = _cli_curve("184.2", "1.309e5", -1.0, 4.0, 11,
+                          ("--adhesion-model", "lennard_jones", "--attraction-range", "0.1"))
+    h = -1.0 + 5.0 * np.arange(11) / 10
+    got = wearopt.curve(184.2, 1.309e5, h, adhesion_model="lennard_jones", attraction_range=0.1)
+    for k in expected:
+        np.testing.assert_array_equal(got[k], expected[k], err_msg=k)
+    # Attracted summits pull (docs/model.md §11): the non-contact load is < 0.
+    assert (got["noncontact_load"] < 0).all()
+
+
 def test_curve_other_laws_are_refused_plainly():
-    with pytest.raises(ValueError, match='^adhesion_model="magic": expected "jkr" or "dmt"$'):
+    with pytest.raises(ValueError,
+                       match='^adhesion_model="magic": expected "jkr", "dmt" or "lennard_jones"$'):
         wearopt.curve(1.0, 1.0, 0.0, adhesion_model="magic")
+    with pytest.raises(ValueError, match='^adhesion_model="lennard_jones" needs attraction_range: '):
+        wearopt.curve(1.0, 1.0, 0.0, adhesion_model="lennard_jones")
+    with pytest.raises(ValueError, match="^attraction applies to adhesion_model=\"dmt\" only: "):
+        wearopt.curve(1.0, 1.0, 0.0, adhesion_model="lennard_jones", attraction="dugdale",
+                      attraction_range=0.1)
     with pytest.raises(ValueError, match='^adhesion_model="dmt" needs attraction_range: '):
         wearopt.curve(1.0, 1.0, 0.0, adhesion_model="dmt")
     with pytest.raises(ValueError, match='^attraction="lj": expected "van_der_waals" or "dugdale"$'):

@@ -160,8 +160,11 @@ fn scales(scene: &Scene) -> Scales {
 /// (Newton in ln P̄ for a compressive load, in P̄ otherwise, safeguarded by a
 /// bracket), started from the fast evaluator's separation, which only picks the
 /// branch docs/model.md §4 names; then k·A_n π N R σ Ā(h)/√(2π). None when the fast
-/// evaluator finds no contact or the reference solve fails.
+/// evaluator finds no contact or the reference solve fails, and under the
+/// Lennard-Jones law (its reference is the adaptive quadrature of
+/// `tests/all/lennard_jones_rough.rs`, not this one's closed forms).
 pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
+    let law = reference_law(scene)?;
     let fast = evaluate(
         scene,
         &EvaluationOptions {
@@ -174,7 +177,7 @@ pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
         .nondimensional_separation
         .filter(|_| fast.status == Status::Ok)?;
     let sc = scales(scene);
-    let model = ReferenceModel::with_law(sc.coefficients, reference_law(scene));
+    let model = ReferenceModel::with_law(sc.coefficients, law);
     let target = scene.load / sc.load_scale;
     let h = reference_separation(&model, target, h0)?;
     let at = model.at(h);
@@ -187,16 +190,17 @@ pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
 
 /// The scene's asperity law, its attraction range taken from Z0/σ here
 /// (z0 = Z0/σ; Δ_h = Z0/(1.03 σ), docs/model.md §7).
-fn reference_law(scene: &Scene) -> AsperityLaw {
+fn reference_law(scene: &Scene) -> Option<AsperityLaw> {
     let z = scene.interatomic_distance / scene.sigma;
     match (scene.adhesion_model, scene.attraction) {
-        (AdhesionModel::Jkr, _) => AsperityLaw::Jkr,
+        (AdhesionModel::Jkr, _) => Some(AsperityLaw::Jkr),
         (AdhesionModel::Dmt, AttractionKind::VanDerWaals) => {
-            AsperityLaw::Dmt(Attraction::VanDerWaals { range: z })
+            Some(AsperityLaw::Dmt(Attraction::VanDerWaals { range: z }))
         }
         (AdhesionModel::Dmt, AttractionKind::Dugdale) => {
-            AsperityLaw::Dmt(Attraction::Dugdale { range: z / 1.03 })
+            Some(AsperityLaw::Dmt(Attraction::Dugdale { range: z / 1.03 }))
         }
+        (AdhesionModel::LennardJones, _) => None,
     }
 }
 

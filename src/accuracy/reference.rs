@@ -145,7 +145,10 @@ impl ReferenceModel {
     /// transition cubic with c_a = 0.
     pub fn with_law(coefficients: Coefficients, law: AsperityLaw) -> Self {
         let c_a = match law {
-            AsperityLaw::Jkr => coefficients.c_a,
+            // The Lennard-Jones law has no closed-form reference here
+            // (`finite_difference::reference_ln_wear_rate` gives none); its
+            // JKR limit is the nearest.
+            AsperityLaw::Jkr | AsperityLaw::LennardJones { .. } => coefficients.c_a,
             AsperityLaw::Dmt(_) => 0.0,
         };
         let (t, dc) = if coefficients.c_h.is_finite() {

@@ -17,12 +17,12 @@ pub struct LawOptions {
     pub adhesion_model: AdhesionModel,
     /// The attraction of a law that takes one (default van der Waals).
     pub attraction: Option<AttractionKind>,
-    /// The attraction's range over σ: z0 = Z0/σ (van der Waals), Δ_h = h0/σ
-    /// (Dugdale); required by a law that takes an attraction.
+    /// The attraction's range over σ: z0 = Z0/σ (van der Waals, Lennard-Jones),
+    /// Δ_h = h0/σ (Dugdale); required by DMT and Lennard-Jones.
     pub attraction_range: Option<f64>,
 }
 
-/// The law `name` ("jkr", "dmt") from the registry of laws, for the option `option`.
+/// The law `name` ("jkr", "dmt", "lennard_jones") from the registry of laws, for the option `option`.
 pub fn adhesion_model(option: OptionName, name: &str) -> Result<AdhesionModel, AppError> {
     AdhesionModel::from_name(name).ok_or_else(|| AppError::Invalid {
         options: vec![(option, format!("{name:?}"))],
@@ -50,6 +50,21 @@ fn quoted_list(names: &[&str]) -> String {
 impl LawOptions {
     /// The law these options name, or the clash between them.
     pub fn law(&self) -> Result<AsperityLaw, AppError> {
+        if self.adhesion_model == AdhesionModel::LennardJones {
+            if self.attraction.is_some() {
+                return Err(AppError::AttractionUnderLennardJones);
+            }
+            let range = self
+                .attraction_range
+                .ok_or(AppError::LennardJonesWithoutRange)?;
+            if !(range > 0.0 && range.is_finite()) {
+                return Err(AppError::Invalid {
+                    options: vec![(OptionName("attraction_range"), range.to_string())],
+                    rule: "must be finite and > 0".to_string(),
+                });
+            }
+            return Ok(AsperityLaw::LennardJones { range });
+        }
         if !self.adhesion_model.takes_attraction() {
             if self.attraction.is_some() || self.attraction_range.is_some() {
                 return Err(AppError::AttractionWithoutDmt);

@@ -132,6 +132,10 @@ pub enum AppError {
     },
     /// `attraction` or `attraction_range` given with an asperity law other than DMT.
     AttractionWithoutDmt,
+    /// `attraction` given with the Lennard-Jones law, whose attraction is its own.
+    AttractionUnderLennardJones,
+    /// The Lennard-Jones law asked for without its range z0 = Z0/σ.
+    LennardJonesWithoutRange,
     /// DMT asked for without the attraction's range.
     DmtWithoutRange,
     /// The height map cannot be read.
@@ -218,6 +222,21 @@ impl AppError {
                 Vocabulary::Flags => "--attraction and --attraction-range apply to --adhesion-model dmt only (the default is jkr)".to_string(),
                 Vocabulary::Keywords => "attraction and attraction_range apply to adhesion_model=\"dmt\" only (the default is \"jkr\")".to_string(),
             },
+            AppError::AttractionUnderLennardJones => match vocabulary {
+                Vocabulary::Flags => "--attraction applies to --adhesion-model dmt only: the lennard_jones law's attraction is its own (give its range with --attraction-range Z0/σ)".to_string(),
+                Vocabulary::Keywords => "attraction applies to adhesion_model=\"dmt\" only: the \"lennard_jones\" law's attraction is its own (give its range with attraction_range = Z0/σ)".to_string(),
+            },
+            AppError::LennardJonesWithoutRange => format!(
+                "{} needs {}: z0 = Z0/σ, the Lennard-Jones force's equilibrium spacing over the roughness (e.g. 0.1)",
+                OptionName("adhesion_model").with(
+                    if vocabulary == Vocabulary::Flags { "lennard_jones" } else { "\"lennard_jones\"" },
+                    vocabulary
+                ),
+                match vocabulary {
+                    Vocabulary::Flags => "--attraction-range Z0/σ".to_string(),
+                    Vocabulary::Keywords => "attraction_range".to_string(),
+                }
+            ),
             AppError::DmtWithoutRange => format!(
                 "{} needs {}: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)",
                 OptionName("adhesion_model").with(

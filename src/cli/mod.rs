@@ -218,14 +218,15 @@ pub struct CurveArgs {
     /// Output format.
     #[arg(long, value_parser = format::formats("curve", report::curve::FORMATS), default_value = "csv")]
     pub format: Format,
-    /// The asperity law: jkr (the paper's) or dmt (attraction of asperities not in contact).
+    /// The asperity law: jkr (the paper's), dmt (attraction of asperities not in
+    /// contact) or lennard_jones (the self-consistent sphere, for every Tabor parameter).
     #[arg(long, value_parser = law_parser(), default_value = "jkr")]
     pub adhesion_model: AdhesionModel,
     /// Under dmt: van_der_waals (default) or dugdale.
     #[arg(long, value_parser = attraction_parser())]
     pub attraction: Option<AttractionKind>,
-    /// Under dmt, the attraction's range over σ (required): z0 = Z0/σ for
-    /// van_der_waals, Δ_h = h0/σ for dugdale; > 0.
+    /// Under dmt and lennard_jones, the attraction's range over σ (required):
+    /// z0 = Z0/σ for van_der_waals and lennard_jones, Δ_h = h0/σ for dugdale; > 0.
     #[arg(long, allow_hyphen_values = true)]
     pub attraction_range: Option<f64>,
 }

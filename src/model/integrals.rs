@@ -17,6 +17,7 @@ use super::coefficients::{Coefficients, Transition};
 use super::dmt::{hertz, noncontact, Noncontact};
 use super::gauss;
 use super::law::{AsperityLaw, Attraction};
+use super::lennard_jones::rough::{self, RoughLaw};
 use super::quadrature::{contact_level, Quadrature};
 use super::scaled::Scaled;
 use super::special::{gauss_scaled, kappa, tail0, tail1_given};
@@ -54,6 +55,60 @@ pub struct Model {
     c_d_cubed: f64,
     /// The capillary term of docs/model.md §9 (None: dry, or no meniscus).
     pub capillary: Option<Capillary>,
+    /// The law whose integrals are taken: `law` itself, except under the
+    /// Lennard-Jones law outside its table or without adhesion, where its
+    /// closed-form limit stands in (see [`Model::stand_in`]).
+    effective: AsperityLaw,
+    /// The Lennard-Jones law's rough-surface integrals (its table in use).
+    lennard_jones: Option<RoughLaw>,
+}
+
+/// The shares of the plastic junctions beyond Δc in closed form, scaled by
+/// e^{κ(h)}: the count T_0(u_c), the area, the load c_p Ā_p − c_0 T_0 and its
+/// first two h-derivatives, φ̄(u_c) and u_c φ̄(u_c) (u_c = h + Δc).
+#[derive(Debug, Clone, Copy, Default)]
+struct Plastic {
+    contacts: f64,
+    area: f64,
+    load: f64,
+    dload: f64,
+    d2load: f64,
+    gauss: f64,
+    u_gauss: f64,
+}
+
+impl Plastic {
+    fn at(c: &Coefficients, h: f64, dc: f64) -> Plastic {
+        if !dc.is_finite() {
+            return Plastic::default();
+        }
+        // Closed forms at u_c = h + Δc, rescaled from e^{κ(u_c)} to e^{κ(h)}.
+        let u_c = h + dc;
+        let rescale = if h > 0.0 {
+            (-dc * (h + 0.5 * dc)).exp()
+        } else {
+            (-kappa(u_c)).exp()
+        };
+        // When the rescale underflows, the plastic asperities lie beyond the
+        // weight's range (and c_p Δc may overflow): they carry nothing.
+        if rescale == 0.0 {
+            return Plastic::default();
+        }
+        let t0_c = tail0(u_c);
+        let t0 = t0_c * rescale;
+        let t1 = tail1_given(u_c, t0_c) * rescale;
+        let g = gauss_scaled(u_c) * rescale;
+        let area = t1 + dc * t0;
+        Plastic {
+            contacts: t0,
+            area,
+            load: c.c_p * area - c.c_0 * t0,
+            dload: -(c.c_p * dc - c.c_0) * g - c.c_p * t0,
+            d2load: ((c.c_p * dc - c.c_0) * u_c + c.c_p) * g,
+            gauss: g,
+            u_gauss: u_c * g,
+        }
+    }
 }
 
 /// Everything the model says at one separation h. Every field named as an
@@ -209,8 +264,22 @@ impl Model {
     /// The model of an asperity law with explicit quadrature settings. Under
     /// DMT the attraction range (z0 or Δ_h) must be finite and > 0.
     pub fn with_law(coefficients: Coefficients, law: AsperityLaw, quadrature: Quadrature) -> Self {
-        let (contact, elastic_offset) = match law {
-            AsperityLaw::Jkr => (coefficients, 0.0),
+        let (effective, lennard_jones) = match law {
+            // Without adhesion every law is Hertz's (and JKR's path is exact).
+            AsperityLaw::LennardJones { .. } if !coefficients.has_adhesion() => {
+                (AsperityLaw::Jkr, None)
+            }
+            AsperityLaw::LennardJones { range } => {
+                match RoughLaw::new(coefficients.c_0, coefficients.c_h, range) {
+                    Some(table) => (law, Some(table)),
+                    None if rough::tabor(coefficients.c_0, range) > 1.0 => (AsperityLaw::Jkr, None),
+                    None => (AsperityLaw::Dmt(Attraction::VanDerWaals { range }), None),
+                }
+            }
+            other => (other, None),
+        };
+        let (contact, elastic_offset) = match effective {
+            AsperityLaw::Jkr | AsperityLaw::LennardJones { .. } => (coefficients, 0.0),
             AsperityLaw::Dmt(_) => (
                 Coefficients {
                     c_a: 0.0,
@@ -220,16 +289,60 @@ impl Model {
                 coefficients.c_0,
             ),
         };
+        let transition = match &lennard_jones {
+            Some(table) => lennard_jones_transition(&coefficients, table),
+            None => contact.transition(),
+        };
         Model {
             coefficients,
             law,
             contact,
             elastic_offset,
-            transition: contact.transition(),
+            transition,
             quadrature,
             s_touch: contact.c_d.cbrt(),
             c_d_cubed: contact.c_d.cbrt().powi(3),
             capillary: None,
+            effective,
+            lennard_jones,
+        }
+    }
+
+    /// The law whose integrals are taken: the scene's, or the closed-form law
+    /// that stands in for it ([`Model::stand_in`]).
+    pub fn effective_law(&self) -> AsperityLaw {
+        self.effective
+    }
+
+    /// The Lennard-Jones law's table in use (None under the other laws, and
+    /// under this one where a closed form stands in).
+    pub fn lennard_jones_table(&self) -> Option<&RoughLaw> {
+        self.lennard_jones.as_ref()
+    }
+
+    /// One asperity's pull-off under the model's law in units of πγR: JKR's
+    /// 1.5, DMT's 2, the Lennard-Jones sphere's from its table (between them).
+    pub fn asperity_pull_off(&self) -> f64 {
+        match (&self.lennard_jones, self.effective) {
+            (Some(table), _) => -table.asperity_pull_off(),
+            (None, AsperityLaw::Dmt(_)) => 2.0,
+            // Bradley's rigid sphere at contact, 2πγR, below the table; its
+            // DMT stand-in's own is the same.
+            (None, _) => 1.5,
+        }
+    }
+
+    /// The closed-form law that stands in for the scene's: under the
+    /// Lennard-Jones law outside its table (JKR above μ = 5, DMT with van der
+    /// Waals attraction below μ = 0.01); None where the scene's law is used.
+    pub fn stand_in(&self) -> Option<AsperityLaw> {
+        match self.law {
+            AsperityLaw::LennardJones { .. }
+                if self.lennard_jones.is_none() && self.coefficients.has_adhesion() =>
+            {
+                Some(self.effective)
+            }
+            _ => None,
         }
     }
 
@@ -297,11 +410,14 @@ impl Model {
 
     /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
-        let mut out = self.contact_at(h);
+        let mut out = match &self.lennard_jones {
+            Some(table) => self.lennard_jones_at(table, h),
+            None => self.contact_at(h),
+        };
         if let Some(c) = &self.capillary {
             out.capillary = c.at(h);
         }
-        if let AsperityLaw::Dmt(attraction) = self.law {
+        if let AsperityLaw::Dmt(attraction) = self.effective {
             let n: Noncontact = noncontact(attraction, self.coefficients.c_0, h);
             out.load_noncontact = n.load;
             out.dload_dh_noncontact = n.dload_dh;
@@ -345,32 +461,15 @@ impl Model {
             noncontact_gap: None,
             capillary: CapillaryShare::ZERO,
         };
-        // φ̄'s tail and value at u_c = h + Δc (scaled by e^{κ(h)}; 0 beyond the
-        // weight's range or without plasticity), and u_c φ̄(u_c).
-        let (mut t0, mut g, mut ug) = (0.0, 0.0, 0.0);
-        if c.has_plasticity() {
-            // Closed forms at u_c = h + Δc, rescaled from e^{κ(u_c)} to e^{κ(h)}.
-            let u_c = h + dc;
-            let rescale = if h > 0.0 {
-                (-dc * (h + 0.5 * dc)).exp()
-            } else {
-                (-kappa(u_c)).exp()
-            };
-            // When the rescale underflows, the plastic asperities lie beyond the
-            // weight's range (and c_p Δc may overflow): they carry nothing.
-            if rescale != 0.0 {
-                let t0_c = tail0(u_c);
-                t0 = t0_c * rescale;
-                let t1 = tail1_given(u_c, t0_c) * rescale;
-                g = gauss_scaled(u_c) * rescale;
-                ug = u_c * g;
-                out.plastic_contacts = t0;
-                out.plastic_area = t1 + dc * t0;
-                out.load_plastic = c.c_p * out.plastic_area - c.c_0 * t0;
-                out.dload_dh_plastic = -(c.c_p * dc - c.c_0) * g - c.c_p * t0;
-                out.d2load_dh2 = ((c.c_p * dc - c.c_0) * u_c + c.c_p) * g;
-            }
-        }
+        // The plastic junctions beyond u_c = h + Δc (0 beyond the weight's range
+        // or without plasticity).
+        let plastic = Plastic::at(c, h, dc);
+        let (t0, g, ug) = (plastic.contacts, plastic.gauss, plastic.u_gauss);
+        out.plastic_contacts = plastic.contacts;
+        out.plastic_area = plastic.area;
+        out.load_plastic = plastic.load;
+        out.dload_dh_plastic = plastic.dload;
+        out.d2load_dh2 = plastic.d2load;
         let (mut load, mut dload, mut d2load) = self.elastic(h, dc);
         let offset = self.elastic_offset;
         if offset != 0.0 {
@@ -386,6 +485,62 @@ impl Model {
         out.d2load_dh2 += d2load;
         out.load_elastic = load;
         out.dload_dh_elastic = dload;
+        out
+    }
+
+    /// The integrals under the Lennard-Jones law from its table: the elastic and
+    /// non-contact shares from the rough-surface quadrature, the plastic
+    /// junctions of each of its curves (own Δc and weight) in closed form, and
+    /// §3's area and counts over Δ ≥ 0 (MODEL.md §8).
+    fn lennard_jones_at(&self, table: &RoughLaw, h: f64) -> Integrals {
+        let t0_h = tail0(h);
+        let shares = table.at(h);
+        let mut out = Integrals {
+            separation: h,
+            scale_exponent: kappa(h),
+            load_elastic: shares.elastic[0],
+            load_plastic: 0.0,
+            dload_dh_elastic: shares.elastic[1],
+            dload_dh_plastic: 0.0,
+            d2load_dh2: shares.elastic[2],
+            area: tail1_given(h, t0_h),
+            plastic_area: 0.0,
+            contacts: t0_h,
+            plastic_contacts: 0.0,
+            load_noncontact: shares.noncontact[0],
+            dload_dh_noncontact: shares.noncontact[1],
+            d2load_dh2_noncontact: shares.noncontact[2],
+            noncontact_exponent: shares.noncontact_exponent,
+            noncontact_gap: None,
+            capillary: CapillaryShare::ZERO,
+        };
+        // The load of each curve's plastic junctions beyond its own Δc, where its
+        // elastic share ends (so the two meet as the integrals interpolate);
+        // the count and area at the interpolated Δc (the transition's), which
+        // keeps them ≥ 0 where the Lagrange weights are not.
+        let mut shares = [0.0; 3];
+        let mut signs = (true, true);
+        for (dc, weight) in table.critical_interferences() {
+            let p = Plastic::at(&self.coefficients, h, dc);
+            shares[0] += weight * p.load;
+            shares[1] += weight * p.dload;
+            shares[2] += weight * p.d2load;
+            signs = (signs.0 && p.load >= 0.0, signs.1 && p.load <= 0.0);
+        }
+        let plastic = Plastic::at(&self.coefficients, h, self.transition.critical_interference);
+        // Where the junctions lie far out in the weight's tail their shares
+        // change by orders of magnitude from one curve's Δc to the next, and
+        // the Lagrange weights (some < 0) can give a sum of the wrong sign:
+        // there (a share far below the total) the interpolated Δc's stands.
+        let wrong_sign = (signs.0 && shares[0] < 0.0) || (signs.1 && shares[0] > 0.0);
+        if wrong_sign {
+            shares = [plastic.load, plastic.dload, plastic.d2load];
+        }
+        out.load_plastic = shares[0];
+        out.dload_dh_plastic = shares[1];
+        out.d2load_dh2 += shares[2];
+        out.plastic_contacts = plastic.contacts.min(out.contacts);
+        out.plastic_area = plastic.area.min(out.area);
         out
     }
 
@@ -542,6 +697,26 @@ impl Model {
             out[..n].reverse();
             n
         }
+    }
+}
+
+/// The elastic–plastic transition under the Lennard-Jones law: Δc and the
+/// load jump J = (c_p Δc − c_0) − p(Δc) of its curves, Δc interpolated as the
+/// integrals are, J the most negative (the separation search looks for extra
+/// minima wherever one curve's jump is negative).
+fn lennard_jones_transition(c: &Coefficients, table: &RoughLaw) -> Transition {
+    let mut dc = 0.0;
+    let mut jump = f64::INFINITY;
+    for (critical, weight, load) in table.transitions() {
+        dc += weight * critical;
+        if critical.is_finite() {
+            jump = jump.min(c.c_p * critical - c.c_0 - load);
+        }
+    }
+    Transition {
+        t: dc.sqrt().sqrt(),
+        critical_interference: if dc.is_nan() { f64::INFINITY } else { dc },
+        jump: if jump.is_finite() { jump } else { 0.0 },
     }
 }
 

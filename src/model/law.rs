@@ -11,10 +11,15 @@
 //!   equilibrium distance z0. Its non-contact term lives in `dmt.rs`.
 //!
 //! A law contributes (a) the coefficients its contact integrals use, (b) the
-//! elastic–plastic transition, and (c) an optional non-contact load. A third law
-//! (Maugis–Dugdale) is one more variant here, one module for its integrals, and
-//! its reference table; the separation and pull-off searches only see P̄, P̄',
-//! P̄'' and the sign of the load jump.
+//! elastic–plastic transition, and (c) an optional non-contact load.
+//!
+//! * [`AsperityLaw::LennardJones`] — docs/model.md §11: the self-consistent
+//!   sphere with a Lennard-Jones surface force, from its loading table
+//!   (`lennard_jones/`), valid for every Tabor parameter; outside the table
+//!   (μ < 0.01, μ > 5) its closed-form limits stand in.
+//!
+//! The separation and pull-off searches only see P̄, P̄', P̄'' and the sign of
+//! the load jump.
 
 use serde::Serialize;
 
@@ -31,18 +36,26 @@ pub enum AdhesionModel {
     Jkr,
     /// Derjaguin–Muller–Toporov asperities with non-contact attraction (docs/model.md §7), for φ0 < 0.3.
     Dmt,
+    /// The self-consistent sphere with a Lennard-Jones surface force (docs/model.md §11),
+    /// of which the other two are the limits: for every φ0.
+    LennardJones,
 }
 
 impl AdhesionModel {
     /// Every asperity law, in the order problem files, options and messages list
     /// them: the registry every name, parser and list of laws reads.
-    pub const ALL: [AdhesionModel; 2] = [AdhesionModel::Jkr, AdhesionModel::Dmt];
+    pub const ALL: [AdhesionModel; 3] = [
+        AdhesionModel::Jkr,
+        AdhesionModel::Dmt,
+        AdhesionModel::LennardJones,
+    ];
 
     /// The word used in problem files and reports.
     pub fn as_str(self) -> &'static str {
         match self {
             AdhesionModel::Jkr => "jkr",
             AdhesionModel::Dmt => "dmt",
+            AdhesionModel::LennardJones => "lennard_jones",
         }
     }
 
@@ -52,7 +65,7 @@ impl AdhesionModel {
     }
 
     /// The names of every law, in order.
-    pub fn names() -> [&'static str; 2] {
+    pub fn names() -> [&'static str; 3] {
         Self::ALL.map(AdhesionModel::as_str)
     }
 
@@ -60,8 +73,17 @@ impl AdhesionModel {
     /// `attraction` key and its range).
     pub fn takes_attraction(self) -> bool {
         match self {
-            AdhesionModel::Jkr => false,
+            AdhesionModel::Jkr | AdhesionModel::LennardJones => false,
             AdhesionModel::Dmt => true,
+        }
+    }
+
+    /// The law's name as a report writes it in prose.
+    pub fn label(self) -> &'static str {
+        match self {
+            AdhesionModel::Jkr => "JKR",
+            AdhesionModel::Dmt => "DMT",
+            AdhesionModel::LennardJones => "Lennard-Jones",
         }
     }
 
@@ -71,24 +93,18 @@ impl AdhesionModel {
         match self {
             AdhesionModel::Jkr => (TRANSITION_TABOR.1, f64::INFINITY),
             AdhesionModel::Dmt => (0.0, TRANSITION_TABOR.0),
+            AdhesionModel::LennardJones => (0.0, f64::INFINITY),
         }
     }
 
-    /// The law on the other side of the transition φ0 lies in: of the laws whose
-    /// validity ends just below φ0 and starts just above it (the two that bracket
-    /// the truth there), the one that is not `self`. `None` outside every
-    /// transition (φ0 inside a law's validity with no law on its other side).
+    /// The law `eval` gives beside this one at φ0: inside the JKR–DMT transition
+    /// (ends included) a limit law (JKR or DMT) is answered beside by the law
+    /// valid there, the Lennard-Jones sphere. `None` for the Lennard-Jones law
+    /// itself and outside the transition (φ0 inside the limit law's validity).
     pub fn bracket(self, tabor: f64) -> Option<AdhesionModel> {
-        let below = Self::ALL
-            .into_iter()
-            .filter(|m| m.valid_tabor().1 <= tabor)
-            .max_by(|a, b| a.valid_tabor().1.total_cmp(&b.valid_tabor().1));
-        let above = Self::ALL
-            .into_iter()
-            .filter(|m| m.valid_tabor().0 >= tabor)
-            .min_by(|a, b| a.valid_tabor().0.total_cmp(&b.valid_tabor().0));
-        let (below, above) = (below?, above?);
-        [below, above].into_iter().find(|&m| m != self)
+        let inside = tabor >= TRANSITION_TABOR.0 && tabor <= TRANSITION_TABOR.1;
+        let general = AdhesionModel::LennardJones;
+        (inside && self != general).then_some(general)
     }
 }
 
@@ -187,6 +203,11 @@ pub enum AsperityLaw {
     Jkr,
     /// docs/model.md §7.
     Dmt(Attraction),
+    /// docs/model.md §11: the Lennard-Jones sphere, with z0 = Z0/σ.
+    LennardJones {
+        /// z0 = Z0/σ > 0.
+        range: f64,
+    },
 }
 
 impl AsperityLaw {
@@ -195,6 +216,7 @@ impl AsperityLaw {
         match self {
             AsperityLaw::Jkr => AdhesionModel::Jkr,
             AsperityLaw::Dmt(_) => AdhesionModel::Dmt,
+            AsperityLaw::LennardJones { .. } => AdhesionModel::LennardJones,
         }
     }
 
@@ -211,6 +233,9 @@ impl AsperityLaw {
                 attraction,
                 attraction.range(interatomic_distance, sigma),
             )),
+            AdhesionModel::LennardJones => AsperityLaw::LennardJones {
+                range: interatomic_distance / sigma,
+            },
         }
     }
 }
@@ -228,10 +253,13 @@ mod registry_tests {
         for a in AttractionKind::ALL {
             assert_eq!(AttractionKind::from_name(a.as_str()), Some(a));
         }
-        // Inside the transition (ends included) each limit law is bracketed by the other.
+        // Inside the transition (ends included) each limit law is answered by
+        // the Lennard-Jones law, which needs nothing beside it.
         for phi in [0.3, 1.0, 3.0] {
-            assert_eq!(AdhesionModel::Jkr.bracket(phi), Some(AdhesionModel::Dmt));
-            assert_eq!(AdhesionModel::Dmt.bracket(phi), Some(AdhesionModel::Jkr));
+            for m in [AdhesionModel::Jkr, AdhesionModel::Dmt] {
+                assert_eq!(m.bracket(phi), Some(AdhesionModel::LennardJones));
+            }
+            assert_eq!(AdhesionModel::LennardJones.bracket(phi), None);
         }
         // Well inside a law's validity nothing brackets it.
         assert_eq!(AdhesionModel::Jkr.bracket(100.0), None);

@@ -213,11 +213,12 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         f.minus(bump).signum()
     };
     // The large-h expansion puts the minimum near h ≈ p'(0)/|p(0)| = (3/2) c_d^{-1/3}/c_a.
-    let law_guess = match model.law {
+    let law_guess = match model.effective_law() {
         _ if !c.has_adhesion() => f64::INFINITY,
         super::law::AsperityLaw::Jkr => (1.5 / (c.c_d.cbrt() * c.c_a)).clamp(0.5, 1e6),
         // The minimum lies within a few units of the attraction's reach.
         super::law::AsperityLaw::Dmt(a) => 1.0 + a.range().min(1e3),
+        super::law::AsperityLaw::LennardJones { range } => 1.0 + range.min(1e3),
     };
     // A meniscus reaches k = d_K/σ: the minimum lies within a few units of it too,
     // or nearer where the solid law's own minimum is.
@@ -254,8 +255,10 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         // φ(u_c) < c_p √(π/2) / (|p(0)| + |J|).
         // A meniscus adds P̄_cap' ≤ c_cap φ(h) ≤ c_cap φ(u_c) there (capillary.rs).
         let capillary = model.capillary.map_or(0.0, |cap| cap.independent());
-        let ratio =
-            (-c.load_at_touch() + neg_jump + capillary) / (c.c_p * super::special::SQRT_HALF_PI);
+        // |p| ≤ c_0 under DMT, and ≤ 2 ℓ^{-3/2} = c_0 under the Lennard-Jones
+        // law (its pull-off, 2πγR at most): the bound takes the larger.
+        let tension = (-c.load_at_touch()).max(c.c_0);
+        let ratio = (tension + neg_jump + capillary) / (c.c_p * super::special::SQRT_HALF_PI);
         let u_left = if ratio > 1.0 {
             -(2.0 * ratio.ln()).sqrt()
         } else {

@@ -137,6 +137,16 @@ pub enum Note {
         /// log10 of the area in m².
         log10_area: f64,
     },
+    /// Under the Lennard-Jones law, φ0 lies outside its table (0.01–5) and the
+    /// closed-form limit there stands in.
+    LennardJonesStandIn {
+        /// φ0.
+        tabor_parameter: f64,
+        /// The law whose numbers stand in.
+        stand_in: super::law::AdhesionModel,
+        /// The relative error of its single-asperity pull-off at the table's end.
+        pull_off_error: f64,
+    },
 }
 
 /// Below this many expected contacts the Gaussian statistics of the model do not hold.

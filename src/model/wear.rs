@@ -165,6 +165,9 @@ pub struct Evaluation {
     pub nondimensional_pull_off_separation: Option<f64>,
     /// The JKR pull-off of one asperity, 1.5πγR (N), for comparison.
     pub asperity_pull_off_force: f64,
+    /// The pull-off of one asperity under the scene's law (N): JKR's 1.5πγR,
+    /// DMT's 2πγR, the Lennard-Jones sphere's (between them, from its table).
+    pub law_asperity_pull_off_force: f64,
     /// Which area wears.
     pub wear_area: WearArea,
     /// V = k A L (m³), eq. 13.
@@ -194,15 +197,21 @@ pub struct Evaluation {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub attraction: Option<AttractionKind>,
     /// Under DMT with van der Waals attraction, the Hamaker constant A = 12π Z0² γ
-    /// that makes the sphere–flat force -A R/(6 (g + Z0)²) equal -2πRγ at contact (J).
+    /// that makes the sphere–flat force -A R/(6 (g + Z0)²) equal -2πRγ at contact (J);
+    /// under the Lennard-Jones law its far field's, A = 16π Z0² γ.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub hamaker_constant: Option<f64>,
     /// The load carried by attracted asperities not in contact (N, ≤ 0; 0 under
     /// JKR); None when separated.
     pub noncontact_load: Option<f64>,
-    /// For 0.3 ≤ φ0 ≤ 3, where neither law is exact: the other law's numbers.
+    /// For 0.3 ≤ φ0 ≤ 3 under JKR or DMT, where neither is exact: the
+    /// Lennard-Jones law's numbers.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub other_model: Option<OtherModel>,
+    /// Under the Lennard-Jones law outside its table (μ < 0.01 or μ > 5): the
+    /// closed-form limit whose numbers stand in (`dmt` or `jkr`); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stand_in_model: Option<AdhesionModel>,
     /// Capillary adhesion (docs/model.md §9): present when the scene has an
     /// `[environment]` or a cantilever; its keys sit at the top level.
     #[serde(flatten)]
@@ -240,20 +249,8 @@ pub struct Humidity {
     pub detachment_length: Option<f64>,
 }
 
-impl Evaluation {
-    /// One asperity's pull-off under the scene's law (N): JKR's 1.5πγR (the
-    /// field [`Evaluation::asperity_pull_off_force`]) or Derjaguin's 2πγR under DMT,
-    /// 4/3 of it.
-    pub fn law_asperity_pull_off_force(&self) -> f64 {
-        match self.adhesion_model {
-            AdhesionModel::Jkr => self.asperity_pull_off_force,
-            AdhesionModel::Dmt => self.asperity_pull_off_force * 4.0 / 3.0,
-        }
-    }
-}
-
-/// The headline numbers of the other asperity law, for a scene in the JKR–DMT
-/// transition (0.3 ≤ φ0 ≤ 3) where the two laws bracket the truth.
+/// The headline numbers of the Lennard-Jones law beside a JKR or DMT scene in
+/// the JKR–DMT transition (0.3 ≤ φ0 ≤ 3), where neither limit law is exact.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct OtherModel {
     /// Which law.
@@ -390,8 +387,7 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
 
 /// As [`evaluate`], and for a scene in the JKR–DMT transition (0.3 ≤ φ0 ≤ 3,
 /// with adhesion) also the other law's headline numbers in `other_model`
-/// (what `wearopt eval` reports). Under JKR the other law is DMT with the scene's
-/// attraction (van der Waals by default).
+/// (what `wearopt eval` reports): the Lennard-Jones law, valid there.
 pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
     let mut ev = evaluate(scene, options);
     let phi = ev.indices.tabor_parameter;
@@ -490,6 +486,16 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
             });
         }
         _ => {}
+    }
+    let stand_in = model.stand_in().map(|law| law.adhesion_model());
+    if let Some(law) = stand_in {
+        notes.push(Note::LennardJonesStandIn {
+            tabor_parameter: phi,
+            stand_in: law,
+            pull_off_error: super::lennard_jones::rough::stand_in_pull_off_error(
+                law == AdhesionModel::Jkr,
+            ),
+        });
     }
     if reg.elastic_adhesion_matters {
         notes.push(Note::ElasticAdhesionMatters {
@@ -653,6 +659,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         pull_off_separation,
         nondimensional_pull_off_separation: pull_off_separation.map(|d| d / s),
         asperity_pull_off_force: 1.5 * PI * scene.work_of_adhesion * r,
+        law_asperity_pull_off_force: model.asperity_pull_off() * PI * scene.work_of_adhesion * r,
         wear_area: scene.wear_area,
         wear_volume: wear_rate * scene.sliding_distance,
         wear_rate,
@@ -666,11 +673,15 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         friction_coefficient: None,
         adhesion_model: scene.adhesion_model,
         attraction: (scene.adhesion_model == AdhesionModel::Dmt).then_some(scene.attraction),
-        hamaker_constant: (scene.adhesion_model == AdhesionModel::Dmt
-            && scene.attraction == AttractionKind::VanDerWaals)
-            .then(|| 12.0 * PI * scene.interatomic_distance.powi(2) * scene.work_of_adhesion),
+        hamaker_constant: match scene.adhesion_model {
+            AdhesionModel::Dmt if scene.attraction == AttractionKind::VanDerWaals => Some(12.0),
+            AdhesionModel::LennardJones => Some(16.0),
+            _ => None,
+        }
+        .map(|factor| factor * PI * scene.interatomic_distance.powi(2) * scene.work_of_adhesion),
         noncontact_load: at.map(|a| a.noncontact_load().scale(load_scale).value()),
         other_model: None,
+        stand_in_model: stand_in,
         humidity: None,
     };
     let humidity = env.map(|env| {

@@ -59,8 +59,9 @@ const MAX_PIECES: usize = 400;
 /// Γ̄ = -∫_{from}^∞ P̄(h) dh (model units: multiply by the load scale per unit area
 /// times σ for J/m²), and the model evaluations it spent.
 pub fn work_of_separation(model: &Model, from: f64) -> (f64, usize) {
-    let reach = match model.law {
+    let reach = match model.effective_law() {
         AsperityLaw::Dmt(a) => a.range(),
+        AsperityLaw::LennardJones { range } => range,
         AsperityLaw::Jkr => 0.0,
     }
     .max(model.capillary.map_or(0.0, |c| c.range))
@@ -131,10 +132,18 @@ pub fn work_of_separation(model: &Model, from: f64) -> (f64, usize) {
     // order the pieces were made in beyond the pieces themselves.
     pieces.sort_by(|x, y| x.0.total_cmp(&y.0));
     let mut integral: f64 = pieces.iter().map(|p| p.2).sum();
-    if let AsperityLaw::Dmt(Attraction::VanDerWaals { range }) = model.law {
+    // Beyond h = MAX_SEPARATION a power-law attraction's tail in closed form:
+    // −c_0 (z0/(z0 + h))² per summit under van der Waals, 4/3 of it under
+    // Lennard-Jones (Hamaker constant 16π Z0² γ against 12π).
+    let tail = match model.effective_law() {
+        AsperityLaw::Dmt(Attraction::VanDerWaals { range }) => Some((range, 1.0)),
+        AsperityLaw::LennardJones { range } => Some((range, 4.0 / 3.0)),
+        _ => None,
+    };
+    if let Some((range, factor)) = tail {
         if t_end < 1.0 {
             let c_0 = model.coefficients.c_0;
-            integral -= c_0 * SQRT_TWO_PI * range * range / (range + limit);
+            integral -= factor * c_0 * SQRT_TWO_PI * range * range / (range + limit);
         }
     }
     (-integral, evaluations)

@@ -31,8 +31,8 @@
 //! [interface]
 //! hardness = "10 GPa"             # H > 0 or "inf"; default: body a's catalogue value
 //! work_of_adhesion = "0.1 J/m^2"  # γ >= 0
-//! interatomic_distance = "0.3 nm" # Z0 > 0 (default 0.3 nm); under DMT also the attraction's range
-//! adhesion_model = "jkr"          # or "dmt" (default "jkr"): the asperity law
+//! interatomic_distance = "0.3 nm" # Z0 > 0 (default 0.3 nm); under DMT and Lennard-Jones also the attraction's range
+//! adhesion_model = "jkr"          # or "dmt", "lennard_jones" (default "jkr"): the asperity law
 //! attraction = "van_der_waals"    # DMT only: or "dugdale" (default "van_der_waals")
 //!
 //! [roughness]
@@ -858,10 +858,14 @@ impl Problem {
         let attraction = match &i.attraction {
             None => AttractionKind::default(),
             Some(w) if !adhesion_model.takes_attraction() => {
+                let why = match adhesion_model {
+                    AdhesionModel::LennardJones => "adhesion_model is \"lennard_jones\", whose attraction is its own (the Lennard-Jones force, range interatomic_distance): remove attraction, or set adhesion_model = \"dmt\"",
+                    _ => "adhesion_model is \"jkr\" (the default): remove attraction, or set adhesion_model = \"dmt\"",
+                };
                 return Err(r.invalid(
                     "interface.attraction",
                     &w.span(),
-                    "attraction applies to the DMT law only, and adhesion_model is \"jkr\" (the default): remove attraction, or set adhesion_model = \"dmt\"",
+                    format!("attraction applies to the DMT law only, and {why}"),
                 ));
             }
             Some(w) => match AttractionKind::from_name(w.get_ref()) {

@@ -206,6 +206,11 @@ fn law_words(ev: &Evaluation, sc: &Scene) -> String {
         AdhesionModel::Jkr => {
             "JKR (adhesion inside contacts only; adhesion_model = \"jkr\")".to_string()
         }
+        AdhesionModel::LennardJones => format!(
+            "Lennard-Jones sphere (self-consistent, for every Tabor parameter; attraction of asperities not in contact with range z0 = Z0/σ = {}, Hamaker constant A = 16π Z0² γ = {} J)",
+            sig_exp(sc.interatomic_distance / sc.sigma, 4),
+            sig_exp(ev.hamaker_constant.unwrap_or(f64::NAN), 4)
+        ),
         AdhesionModel::Dmt => match sc.attraction {
             AttractionKind::VanDerWaals => format!(
                 "DMT with van der Waals attraction of asperities not in contact (range z0 = Z0/σ = {}, Hamaker constant A = 12π Z0² γ = {} J)",
@@ -459,10 +464,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     }
     if let Some(st) = &ev.stiction {
         rows.push(vec![
-            format!(
-                "stiction ({} law)",
-                ev.adhesion_model.as_str().to_uppercase()
-            ),
+            format!("stiction ({} law)", ev.adhesion_model.label()),
             format!(
                 "margin {} → {}",
                 sig_exp(st.margin, 3),
@@ -475,10 +477,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     }
     if let Some((law, st)) = other_stiction(ev) {
         rows.push(vec![
-            format!(
-                "stiction under the {} law instead",
-                law.as_str().to_uppercase()
-            ),
+            format!("stiction under the {} law instead", law.label()),
             format!(
                 "pull-off {}, margin {} → {}",
                 q(st.pull_off_force, "N"),
@@ -492,10 +491,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     }
     if let Some(om) = &ev.other_model {
         rows.push(vec![
-            format!(
-                "under the {} law instead",
-                om.adhesion_model.as_str().to_uppercase()
-            ),
+            format!("under the {} law instead", om.adhesion_model.label()),
             match om.nondimensional_separation {
                 Some(_) => format!(
                     "real area {}, pull-off {}, wear rate {}",
@@ -698,7 +694,7 @@ pub fn text(r: &EvalReport) -> String {
         line(format!("  mean real pressure W/A_r = {}", si(p, "Pa", 4)));
     }
     match ev.noncontact_load {
-        Some(nc) if ev.adhesion_model == AdhesionModel::Dmt => line(format!(
+        Some(nc) if ev.adhesion_model != AdhesionModel::Jkr => line(format!(
             "  load carried: elastic {}, plastic {}, attracted asperities not in contact {}",
             si(ev.elastic_load, "N", 4),
             si(ev.plastic_load, "N", 4),
@@ -721,11 +717,18 @@ pub fn text(r: &EvalReport) -> String {
                 format!("{l:.1}")
             },
             ev.pull_off_separation.map_or("-".into(), |d| si(d, "m", 4)),
-            match ev.adhesion_model {
-                AdhesionModel::Jkr => "JKR 1.5πγR",
-                AdhesionModel::Dmt => "DMT 2πγR",
+            match (ev.adhesion_model, ev.stand_in_model) {
+                (AdhesionModel::Jkr, _) | (_, Some(AdhesionModel::Jkr)) => "JKR 1.5πγR".to_string(),
+                (AdhesionModel::Dmt, _) | (_, Some(_)) => "DMT 2πγR".to_string(),
+                (AdhesionModel::LennardJones, None) => format!(
+                    "Lennard-Jones sphere {}πγR",
+                    sig(
+                        1.5 * ev.law_asperity_pull_off_force / ev.asperity_pull_off_force,
+                        4
+                    )
+                ),
             },
-            si(ev.law_asperity_pull_off_force(), "N", 3)
+            si(ev.law_asperity_pull_off_force, "N", 3)
         )),
         (Some(f), None) => line(format!("  pull-off force {} (no adhesion)", si(f, "N", 3))),
         // γ > 0 but no pull-off: a warning above says why.
@@ -736,8 +739,8 @@ pub fn text(r: &EvalReport) -> String {
     }
     if let Some(om) = &ev.other_model {
         line(format!(
-            "  under the other law ({}): {}",
-            om.adhesion_model.as_str().to_uppercase(),
+            "  under the {} law, valid in this transition: {}",
+            om.adhesion_model.label(),
             match om.nondimensional_separation {
                 Some(h) => format!(
                     "h = {}, real area {}, pull-off force {}, wear rate {}",
@@ -838,24 +841,28 @@ pub fn text(r: &EvalReport) -> String {
         if let Some((law, o)) = other_stiction(ev) {
             line(format!(
                 "  under the {} law instead: pull-off force {}, margin {} → {}",
-                law.as_str().to_uppercase(),
+                law.label(),
                 si(o.pull_off_force, "N", 4),
                 sig_exp(o.margin, 3),
                 verdict_words(o.verdict)
             ));
             line(format!(
-                "  φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the two bracket the answer (docs/model.md §7){}",
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where {} is not exact and the Lennard-Jones law is (docs/model.md §11){}",
                 sig_exp(phi, 3),
+                ev.adhesion_model.label(),
                 if o.verdict == st.verdict {
                     "; both give the same verdict"
                 } else {
-                    "; they DISAGREE: design for the worse case or measure"
+                    "; they DISAGREE: trust the Lennard-Jones verdict"
                 }
             ));
-        } else if (0.3..=3.0).contains(&phi) {
+        } else if (0.3..=3.0).contains(&phi)
+            && ev.adhesion_model != crate::model::law::AdhesionModel::LennardJones
+        {
             line(format!(
-                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where neither law is exact: judge stiction under both (docs/model.md §7)",
-                sig_exp(phi, 3)
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where {} is not exact: judge stiction under adhesion_model = \"lennard_jones\" (docs/model.md §11)",
+                sig_exp(phi, 3),
+                ev.adhesion_model.label()
             ));
         } else if phi < 0.3
             && phi > 0.0

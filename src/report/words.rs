@@ -74,7 +74,7 @@ pub fn warning(w: &Warning) -> String {
                 )
             } else {
                 format!(
-                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the truth lies between this JKR result and the DMT one under other_model",
+                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3), where JKR is not exact: the Lennard-Jones law, valid there, is under other_model; set [interface] adhesion_model = \"lennard_jones\"",
                     sig_exp(*tabor_parameter, 3)
                 )
             }
@@ -87,7 +87,7 @@ pub fn warning(w: &Warning) -> String {
                 )
             } else {
                 format!(
-                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3): neither law is exact and the truth lies between this DMT result and the JKR one under other_model",
+                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3), where DMT is not exact: the Lennard-Jones law, valid there, is under other_model; set [interface] adhesion_model = \"lennard_jones\"",
                     sig_exp(*tabor_parameter, 3)
                 )
             }
@@ -176,6 +176,21 @@ pub fn note(n: &Note) -> String {
         Note::RealAreaUnderflow { log10_area } => format!(
             "the real area is below the smallest double: 10^{log10_area:.1} m²; reported as 0"
         ),
+        Note::LennardJonesStandIn {
+            tabor_parameter,
+            stand_in,
+            pull_off_error,
+        } => {
+            let (side, limit, rest) = match stand_in {
+                crate::model::law::AdhesionModel::Jkr => ("above 5", "JKR's (its large-μ limit)", ""),
+                _ => ("below 0.01", "DMT's with van der Waals attraction (its small-μ limit)", "; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)"),
+            };
+            format!(
+                "Tabor parameter φ0 = {} lies {side}, outside the Lennard-Jones law's table (0.01–5): the numbers are {limit}, whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end{rest}",
+                sig_exp(*tabor_parameter, 3),
+                100.0 * pull_off_error
+            )
+        }
     }
 }
 

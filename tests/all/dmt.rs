@@ -232,21 +232,27 @@ fn hub_reproduces_model_md() {
     assert!((sum / 800e-6 - 1.0).abs() < 1e-12, "{sum}");
 }
 
-/// φ0 = 0.374 (transition): `other_model` carries the other law's numbers, which
-/// equal that law's own evaluation.
+/// φ0 = 0.374 (transition): `other_model` carries the Lennard-Jones law's
+/// numbers, which equal that law's own evaluation, beside JKR and beside DMT.
 #[test]
 fn transition_scene_reports_the_other_law() {
     let scene = hub().scene;
     let opts = EvaluationOptions::default();
     let ev = evaluate_with_other(&scene, &opts);
     let om = ev.other_model.expect("0.3 ≤ φ0 ≤ 3");
-    assert_eq!(om.adhesion_model, AdhesionModel::Dmt);
-    let mut dmt_scene = scene.clone();
-    dmt_scene.adhesion_model = AdhesionModel::Dmt;
-    let d = evaluate(&dmt_scene, &opts);
+    assert_eq!(om.adhesion_model, AdhesionModel::LennardJones);
+    let mut lj_scene = scene.clone();
+    lj_scene.adhesion_model = AdhesionModel::LennardJones;
+    let d = evaluate(&lj_scene, &opts);
     assert_eq!(om.pull_off_force, d.pull_off_force);
     assert_eq!(om.wear_rate, d.wear_rate);
     assert_eq!(om.nondimensional_separation, d.nondimensional_separation);
+    let mut dmt_scene = scene.clone();
+    dmt_scene.adhesion_model = AdhesionModel::Dmt;
+    let beside_dmt = evaluate_with_other(&dmt_scene, &opts).other_model.unwrap();
+    assert_eq!(beside_dmt, om);
+    // The law valid in the transition needs nothing beside it.
+    assert!(evaluate_with_other(&lj_scene, &opts).other_model.is_none());
     // Outside the transition there is none.
     let mut far = scene.clone();
     far.interatomic_distance = 0.05e-9; // φ0 grows as Z0^{-1}: 0.374 · 6 = 2.2 → still transition

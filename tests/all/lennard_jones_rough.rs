@@ -8,7 +8,7 @@ use wearopt::model::lennard_jones::table::curves;
 
 /// Adaptive Simpson on [a, b] to `rel` of the integral of |f| (estimated
 /// first by a 64-point midpoint sum).
-fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, rel: f64) -> f64 {
+pub fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, rel: f64) -> f64 {
     let n = 64;
     let magnitude: f64 = (0..n)
         .map(|i| f(a + (b - a) * (i as f64 + 0.5) / n as f64).abs())
@@ -68,7 +68,7 @@ fn law_at_node(index: usize, ell: f64, c_h: f64) -> RoughLaw {
     let z0 = spacing(mu) / ell;
     let law = RoughLaw::new(c_0, c_h, z0).unwrap();
     assert!((law.tabor / mu - 1.0).abs() < 1e-13);
-    assert_eq!(law.critical_interferences().len(), 1);
+    assert_eq!(law.critical_interferences().count(), 1);
     law
 }
 
@@ -83,7 +83,7 @@ fn the_load_integrals_match_an_adaptive_quadrature() {
         for ell in [2.0f64, 30.0, 300.0] {
             for c_h in [f64::INFINITY, 1.2] {
                 let law = law_at_node(index, ell, c_h);
-                let dc = law.critical_interferences()[0].0;
+                let dc = law.critical_interferences().next().unwrap().0;
                 let p = |d: f64| ell.powf(-1.5) * curve.load(ell * d);
                 let switch = curve.switch / ell;
                 for h in [-1.5f64, 0.0, 0.7, 2.5, 6.0] {

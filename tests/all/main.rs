@@ -18,6 +18,7 @@ mod embed;
 mod figures;
 mod hock_schittkowski;
 mod html;
+mod lennard_jones_law;
 mod lennard_jones_rough;
 mod lennard_jones_table;
 mod materials;

@@ -81,6 +81,25 @@ pub struct RoughLaw {
     count: usize,
 }
 
+/// μ of a scene with load coefficient c_0 > 0 and attraction range z0 = Z0/σ
+/// (equal to its Tabor parameter φ0).
+pub fn tabor(c_0: f64, z0: f64) -> f64 {
+    let ell = (2.0 / c_0).powf(2.0 / 3.0);
+    super::spacing(1.0) / (ell * z0)
+}
+
+/// The relative error of the closed-form limit's pull-off (JKR's 1.5 above the
+/// table, Bradley's 2 below) at the table's end where it takes over.
+pub fn stand_in_pull_off_error(above: bool) -> f64 {
+    let pull_offs = super::table::pull_offs();
+    let (end, limit) = if above {
+        (pull_offs[pull_offs.len() - 1].1, -1.5)
+    } else {
+        (pull_offs[0].1, -2.0)
+    };
+    ((limit - end) / end).abs()
+}
+
 /// The Lagrange weights of the four nodes around μ (cubic in ln μ), or fewer at
 /// the table's ends; None outside the table.
 fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64)>> {
@@ -130,7 +149,7 @@ impl RoughLaw {
     #[doc(hidden)]
     pub fn interpolated(c_0: f64, c_h: f64, z0: f64, skip: Option<usize>) -> Option<RoughLaw> {
         let ell = (2.0 / c_0).powf(2.0 / 3.0);
-        let tabor = super::spacing(1.0) / (ell * z0);
+        let tabor = tabor(c_0, z0);
         let stencil = stencil(tabor, skip)?;
         let node = |&(k, weight): &(usize, f64)| {
             let curve = &curves()[k];
@@ -159,11 +178,38 @@ impl RoughLaw {
     }
 
     /// Δc of each node, with its weight.
-    pub fn critical_interferences(&self) -> Vec<(f64, f64)> {
+    pub fn critical_interferences(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        self.nodes().iter().map(|n| (n.critical, n.weight))
+    }
+
+    /// The pull-off of one summit, P̂ (Maugis units, < 0): each curve's,
+    /// interpolated in ln μ as the integrals are.
+    pub fn asperity_pull_off(&self) -> f64 {
+        let table = super::table::curves();
+        let pull_offs = super::table::pull_offs();
         self.nodes()
             .iter()
-            .map(|n| (n.critical, n.weight))
-            .collect()
+            .map(|n| {
+                let k = table
+                    .iter()
+                    .position(|c| std::ptr::eq(c, n.curve))
+                    .expect("a node's curve is the table's");
+                n.weight * pull_offs[k].1
+            })
+            .sum()
+    }
+
+    /// Each node's Δc, its weight and the load p(Δc) of one summit on its
+    /// curve there (§3 units), for the load jump at the transition.
+    pub fn transitions(&self) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
+        self.nodes().iter().map(|n| {
+            let load = if n.critical.is_finite() {
+                self.ell.powf(-1.5) * n.curve.load(self.ell * n.critical)
+            } else {
+                f64::NAN
+            };
+            (n.critical, n.weight, load)
+        })
     }
 
     /// The shares at separation h.

@@ -304,6 +304,50 @@ impl Curve {
         t
     }
 
+    /// The pull-off of one sphere, (δ̂, P̂) at the curve's most negative load:
+    /// where dP̂/dδ̂ turns positive on the contact part (bisection on the
+    /// slope), or the approach part's end if that is lower. The retraction
+    /// neck below δ̂_s is not in the table; on every tabulated curve the
+    /// minimum lies above δ̂_s (the reference's extrema: at μ = 5 the pull-off
+    /// is at δ̂ = −0.447, the jump in at −0.482).
+    pub fn pull_off(&self) -> (f64, f64) {
+        let end = self.approach(self.tau_end());
+        let mut best = (end.interference, end.load);
+        let last = self.breaks.len() - 1;
+        for k in 0..last {
+            let (a, b) = (self.breaks[k], self.breaks[k + 1]);
+            let (sa, sb) = (self.contact(a).1, self.contact(b).1);
+            if k == 0 && sa >= 0.0 {
+                best = if self.contact(a).0 < best.1 {
+                    (a, self.contact(a).0)
+                } else {
+                    best
+                };
+            }
+            if sa < 0.0 && sb >= 0.0 {
+                let (mut lo, mut hi) = (a, b);
+                for _ in 0..200 {
+                    let mid = 0.5 * (lo + hi);
+                    if mid <= lo || mid >= hi {
+                        break;
+                    }
+                    if self.contact(mid).1 < 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                let d = 0.5 * (lo + hi);
+                let load = self.contact(d).0;
+                if load < best.1 {
+                    best = (d, load);
+                }
+                break;
+            }
+        }
+        best
+    }
+
     /// The loading curve's P̂ at δ̂ (the approach part below δ̂_s, the contact
     /// part from it).
     pub fn load(&self, d: f64) -> f64 {
@@ -489,6 +533,12 @@ pub fn parse(text: &str) -> Result<Vec<Curve>, TableError> {
 
 /// The committed table.
 pub const TABLE: &str = include_str!("table.txt");
+
+/// Each tabulated curve's [`Curve::pull_off`], in the table's order.
+pub fn pull_offs() -> &'static [(f64, f64)] {
+    static PULL_OFFS: OnceLock<Vec<(f64, f64)>> = OnceLock::new();
+    PULL_OFFS.get_or_init(|| curves().iter().map(Curve::pull_off).collect())
+}
 
 /// The committed table's curves, in increasing μ (read once).
 pub fn curves() -> &'static [Curve] {
