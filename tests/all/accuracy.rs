@@ -188,11 +188,9 @@ fn quadrature_settings_are_valid_and_include_the_default() {
 
 #[test]
 fn finite_differences_against_the_reference_derivative() {
-    let problem = wearopt::problem::load(std::path::Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/problems/micro-gear.toml"
-    )))
-    .expect("shipped problem loads");
+    // Under JKR: the closed-form reference has no Lennard-Jones law.
+    let problem = wearopt::problem::load(&crate::common::under_law("micro-gear", "jkr"))
+        .expect("shipped problem loads");
     let scene = &problem.scene;
     let p = SceneParameter::Sigma;
     let r = finite_difference::reference_elasticity(scene, p).expect("reference derivative");
@@ -405,7 +403,8 @@ fn dmt_reference_matches_the_mpmath_table() {
 /// elasticity is an independent Neville extrapolation of the reference evaluator.
 #[test]
 fn accuracy_and_sensitivities_move_a_shared_modulus_alike() {
-    let p = wearopt::problem::load(std::path::Path::new("problems/gold-switch.toml")).unwrap();
+    // Under JKR: the closed-form reference has no Lennard-Jones law.
+    let p = wearopt::problem::load(&crate::common::under_law("gold-switch", "jkr")).unwrap();
     let scene = &p.scene;
     assert_eq!(scene.youngs_modulus_a, scene.youngs_modulus_b);
     let moved = finite_difference::perturbed(scene, SceneParameter::YoungsModulus, 1e-3);

@@ -376,21 +376,26 @@ fn every_command_names_the_formats_it_writes() {
 }
 
 /// The text report's single-asperity pull-off follows the scene's law: JKR's
-/// 1.5πγR (the micro-gear, γ = 0.1 J/m², R = 1 µm: 471 nN) and DMT's 2πγR, 4/3 of it
-/// (the DLC contact, γ = 50 mJ/m², R = 2 µm: 628 nN); the JSON key
+/// 1.5πγR (the micro-gear under JKR, γ = 0.1 J/m², R = 1 µm: 471 nN), the
+/// Lennard-Jones sphere's at the hub's μ = 0.374 (1.835πγR from its table,
+/// 576 nN) and DMT's 2πγR, 4/3 of JKR's (the DLC contact, γ = 50 mJ/m²,
+/// R = 2 µm: 628 nN); the JSON key
 /// `asperity_pull_off_force` keeps JKR's value whatever the law.
 #[test]
 fn eval_text_names_the_single_asperity_pull_off_of_the_law() {
     let text = |name: &str| {
-        let out = common::stdout(
-            wearopt().args(["eval", &format!("problems/{name}.toml")]),
-            0,
-        );
+        let out = common::stdout(wearopt().args(["eval", &format!("{name}.toml")]), 0);
         String::from_utf8(out).unwrap()
     };
-    let gear = text("micro-gear");
+    let jkr = common::under_law("micro-gear", "jkr");
+    let gear = text(jkr.with_extension("").to_str().unwrap());
     assert!(gear.contains("one asperity (JKR 1.5πγR): 471 nN"), "{gear}");
-    let dlc = text("dlc-contact");
+    let gear = text("problems/micro-gear");
+    assert!(
+        gear.contains("one asperity (Lennard-Jones sphere 1.835πγR): 576 nN"),
+        "{gear}"
+    );
+    let dlc = text("problems/dlc-contact");
     assert!(dlc.contains("one asperity (DMT 2πγR): 628 nN"), "{dlc}");
     let out = common::stdout(
         wearopt().args(["eval", "problems/dlc-contact.toml", "--format", "json"]),

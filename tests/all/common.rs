@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Where the 40-digit reference tables live (`WEAROPT_REFERENCE_DIR` overrides).
 pub fn data_dir() -> PathBuf {
@@ -197,4 +197,30 @@ pub fn stdout(cmd: &mut assert_cmd::Command, code: i32) -> Vec<u8> {
 /// Runs `cmd`, checks that it exits with `code`, and returns its stderr.
 pub fn stderr(cmd: &mut assert_cmd::Command, code: i32) -> Vec<u8> {
     cmd.assert().code(code).get_output().stderr.clone()
+}
+
+/// A shipped problem (`problems/{stem}.toml`) under another asperity law
+/// (`adhesion_model = "{law}"` in place of its own), written beside the test
+/// binaries; its path. For tests that pin one law's landscape on a shipped
+/// scene (the hub's JKR pull-off of 1e-63 N, say) after the scene moved on.
+pub fn under_law(stem: &str, law: &str) -> PathBuf {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("problems").join(format!("{stem}.toml")))
+        .expect("shipped problem");
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("adhesion_model"))
+        .expect("the problem names its law");
+    let text = text.replacen(line, &format!("adhesion_model = \"{law}\""), 1);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let path = dir.join(format!("{stem}-{law}.toml"));
+    // Tests run in parallel: each writes its own file and renames it into
+    // place, so no reader sees a half-written one.
+    let own = dir.join(format!(
+        "{stem}-{law}.{:?}.part",
+        std::thread::current().id()
+    ));
+    std::fs::write(&own, text).expect("tmp is writable");
+    std::fs::rename(&own, &path).expect("tmp is writable");
+    path
 }

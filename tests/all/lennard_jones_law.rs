@@ -230,10 +230,7 @@ fn bad_input_names_the_clash() {
     let clash = dir.join("lj-attraction.toml");
     std::fs::write(
         &clash,
-        text.replace(
-            "[interface]\n",
-            "[interface]\nadhesion_model = \"lennard_jones\"\nattraction = \"dugdale\"\n",
-        ),
+        text.replace("[interface]\n", "[interface]\nattraction = \"dugdale\"\n"),
     )
     .unwrap();
     let err = String::from_utf8(common::stderr(
@@ -247,8 +244,8 @@ fn bad_input_names_the_clash() {
     std::fs::write(
         &unknown,
         text.replace(
-            "[interface]\n",
-            "[interface]\nadhesion_model = \"lennard-jones\"\n",
+            "adhesion_model = \"lennard_jones\"",
+            "adhesion_model = \"lennard-jones\"",
         ),
     )
     .unwrap();

@@ -307,7 +307,10 @@ fn custom(
 /// Bad problems: no crash, a clear status, an honest (finite) KKT residual.
 #[test]
 fn bad_problems_end_with_clear_statuses() {
-    let p = load("micro-gear");
+    // The hub under JKR: with the Lennard-Jones law the nearly parallel pair
+    // below ends `stalled` (KKT residual 0.021, R 4e-5 above its bound), an
+    // honest status but not the one this regression pins.
+    let p = wearopt::problem::load(&crate::common::under_law("micro-gear", "jkr")).unwrap();
     let quick = OptimizerSettings {
         starts: 2,
         ..OptimizerSettings::default()

@@ -27,6 +27,13 @@ fn problem_path(name: &str) -> PathBuf {
         .join(name)
 }
 
+/// The hub under JKR: the tests that pin the optimiser on JKR's landscape
+/// (a pull-off of 1e-63 N at the baseline, a front with no trade-off at the
+/// low end) keep it, now that the shipped hub is under the Lennard-Jones law.
+fn jkr_hub() -> PathBuf {
+    crate::common::under_law("micro-gear", "jkr")
+}
+
 fn load(name: &str) -> Problem {
     wearopt::problem::load(&problem_path(name)).expect("problem loads")
 }
@@ -136,7 +143,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 #[test]
 fn micro_gear_low_has_no_trade_off_and_ends_at_the_least_wear_design() {
-    let p = load("micro-gear.toml");
+    let p = wearopt::problem::load(&jkr_hub()).unwrap();
     let s = study(&p);
     let front = pareto(&s, &p.study.pareto.unwrap(), &Silent).unwrap();
     assert_eq!(front.points.len(), 15);
@@ -176,7 +183,7 @@ fn micro_gear_low_has_no_trade_off_and_ends_at_the_least_wear_design() {
 
 #[test]
 fn micro_gear_high_is_a_trade_off_whose_ends_agree_with_single_runs() {
-    let p = load("micro-gear.toml");
+    let p = wearopt::problem::load(&jkr_hub()).unwrap();
     let s = study(&p);
     let front = pareto(
         &s,
@@ -404,7 +411,7 @@ fn cli_streams_csv_and_json_and_writes_the_plot() {
     assert!(parse_xml(&std::fs::read_to_string(&plot).unwrap()).is_ok());
 
     let out = wearopt()
-        .args(["pareto", problem_path("micro-gear.toml").to_str().unwrap()])
+        .args(["pareto", jkr_hub().to_str().unwrap()])
         .args(["--points", "3", "--format", "json"])
         .output()
         .unwrap();
@@ -415,7 +422,7 @@ fn cli_streams_csv_and_json_and_writes_the_plot() {
     assert!(v["knee"].is_null());
 
     let out = wearopt()
-        .args(["pareto", problem_path("micro-gear.toml").to_str().unwrap()])
+        .args(["pareto", jkr_hub().to_str().unwrap()])
         .args(["--points", "3"])
         .output()
         .unwrap();

@@ -19,14 +19,14 @@ fn stderr_failing(args: &[&str], code: i32) -> String {
     String::from_utf8(out.stderr).unwrap()
 }
 
-/// The micro-gear hub: A_r = 5.702e-13 m² and wear rate 5.702e-17 m³/m
-/// (tests/problem_files.rs pins the SI values); the text says so with the prefix on the
-/// length, and the line the contract names stays.
+/// The micro-gear hub (Lennard-Jones law): A_r = 6.403e-13 m² and wear rate
+/// 6.403e-17 m³/m; the text says so with the prefix on the length, and the line
+/// the contract names stays.
 #[test]
 fn eval_text_units_are_si() {
     let t = stdout_of(&["eval", "problems/micro-gear.toml"]);
-    assert!(t.contains("real area A_r = 0.5702 µm²"), "{t}");
-    assert!(t.contains("wear rate V/L = 57.02 µm³/m"), "{t}");
+    assert!(t.contains("real area A_r = 0.6403 µm²"), "{t}");
+    assert!(t.contains("wear rate V/L = 64.03 µm³/m"), "{t}");
     assert!(t.contains("asperity density N = 10.0 µm⁻²"), "{t}");
     assert!(
         !t.contains("fm²") && !t.contains("am³") && !t.contains(" um"),
@@ -147,8 +147,13 @@ fn few_contacts_and_dense_contact_are_said() {
     assert!(kinds_of(&v).contains(&"few_contacts".to_string()), "{v}");
     // The summit parameter of the shipped switch: 1 µm⁻² × 1 µm × 5 nm = 0.005.
     assert!(kinds_of(&v).contains(&"summit_parameter".to_string()));
-    // The shipped micro-gear hub is plausible in every respect but φ0.
+    // The shipped micro-gear hub is plausible in every respect, φ0 too (the
+    // Lennard-Jones law holds in the transition); under JKR φ0 is warned of.
     let t = stdout_of(&["eval", "problems/micro-gear.toml", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&t).unwrap();
+    assert!(kinds_of(&v).is_empty(), "{v}");
+    let jkr = crate::common::under_law("micro-gear", "jkr");
+    let t = stdout_of(&["eval", jkr.to_str().unwrap(), "--format", "json"]);
     let v: serde_json::Value = serde_json::from_str(&t).unwrap();
     assert_eq!(kinds_of(&v), vec!["outside_jkr_regime".to_string()]);
 }
@@ -205,19 +210,31 @@ fn designer_numbers_follow_their_definitions() {
 
 #[test]
 fn stiction_text_names_the_law() {
-    let mut text = std::fs::read_to_string("problems/gold-switch.toml").unwrap();
-    text = text.replacen(
-        "wear_area = \"plastic\"",
-        "wear_area = \"plastic\"\nrestoring_force = \"1 aN\"",
-        1,
-    );
-    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("stiction-law.toml");
-    std::fs::write(&path, text).unwrap();
-    let t = stdout_of(&["eval", path.to_str().unwrap()]);
-    assert!(t.contains("STICKS (margin ≥ 1)"), "{t}");
-    assert!(t.contains("adhesion law: JKR"), "{t}");
-    // φ0 = 1.59: the transition, where the other law must be weighed.
-    assert!(t.contains("JKR–DMT transition (0.3–3)"), "{t}");
+    for (law, words) in [
+        ("lennard_jones", "adhesion law: Lennard-Jones sphere"),
+        ("jkr", "adhesion law: JKR"),
+    ] {
+        let jkr = crate::common::under_law("gold-switch", law);
+        let mut text = std::fs::read_to_string(jkr).unwrap();
+        text = text.replacen(
+            "wear_area = \"plastic\"",
+            "wear_area = \"plastic\"\nrestoring_force = \"1 aN\"",
+            1,
+        );
+        let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+            .join(format!("stiction-law-{law}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let t = stdout_of(&["eval", path.to_str().unwrap()]);
+        assert!(t.contains("STICKS (margin ≥ 1)"), "{t}");
+        assert!(t.contains(words), "{t}");
+        // φ0 = 1.59: the transition, where JKR's verdict is weighed against
+        // the Lennard-Jones law's; that law's own needs nothing beside it.
+        assert_eq!(
+            t.contains("JKR–DMT transition (0.3–3)"),
+            law == "jkr",
+            "{t}"
+        );
+    }
 }
 
 #[test]
@@ -269,7 +286,7 @@ fn optimize_text_says_an_infeasible_baseline_plainly() {
 /// it stick. The report gives both and says they disagree.
 #[test]
 fn stiction_under_both_laws_in_the_transition() {
-    let text = std::fs::read_to_string("problems/micro-gear.toml")
+    let text = std::fs::read_to_string(crate::common::under_law("micro-gear", "jkr"))
         .unwrap()
         .replacen(
             "wear_area = \"total\"",
