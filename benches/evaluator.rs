@@ -122,7 +122,7 @@ fn capillary(c: &mut Criterion) {
         AsperityLaw::Dmt(Attraction::VanDerWaals { range: 0.1 }),
         Quadrature::default(),
     );
-    let wet = m.with_capillary(Some(wearopt::model::Capillary {
+    let wet = m.clone().with_capillary(Some(wearopt::model::Capillary {
         range: 0.5,
         wetting: 0.04,
         flooded: 1.3,
@@ -190,6 +190,22 @@ fn nondimensional_lennard_jones(c: &mut Criterion) {
                 b.iter(|| black_box(law.at(black_box(h))))
             });
         }
+        // The evaluator's P̄ + Ā (and the rest of `Integrals`): sums over the
+        // scene's grid of nodes, built once with the model.
+        let coefficients = wearopt::model::Coefficients::from_indices(184.0, 1.3e5);
+        let model = Model::with_law(
+            coefficients,
+            wearopt::model::AsperityLaw::LennardJones { range: z0 },
+            Quadrature::default(),
+        );
+        for h in [0.5, 2.0] {
+            g.bench_function(format!("{name} model (grid) h={h}"), |b| {
+                b.iter(|| black_box(model.at(black_box(h))))
+            });
+        }
+        g.bench_function(format!("{name} build the grid"), |b| {
+            b.iter(|| black_box(law.grid()))
+        });
     }
     g.finish();
 }

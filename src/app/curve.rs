@@ -131,7 +131,7 @@ pub struct CurveDocument {
 }
 
 /// The model at one (θ, λ, c_h) under one law: checked, then evaluated at any h.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct CurveModel {
     model: Model,
     critical_interference: f64,
@@ -306,19 +306,16 @@ pub fn curve_at(
             idx.iter()
                 .map(|&i| {
                     let key = (theta[i], lambda[i], hardness_coefficient[i]);
-                    let m = match &model {
-                        Some((k, m)) if *k == key => *m,
-                        _ => {
-                            let m = CurveModel::new(key.0, key.1, key.2, law).map_err(|e| {
-                                AppError::Element {
-                                    index: i,
-                                    error: Box::new(e),
-                                }
-                            })?;
-                            model = Some((key, m));
-                            m
-                        }
-                    };
+                    if !matches!(&model, Some((k, _)) if *k == key) {
+                        let m = CurveModel::new(key.0, key.1, key.2, law).map_err(|e| {
+                            AppError::Element {
+                                index: i,
+                                error: Box::new(e),
+                            }
+                        })?;
+                        model = Some((key, m));
+                    }
+                    let (_, m) = model.as_ref().expect("set just above");
                     Ok(m.row(h[i]))
                 })
                 .collect()

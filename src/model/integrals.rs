@@ -17,10 +17,11 @@ use super::coefficients::{Coefficients, Transition};
 use super::dmt::{hertz, noncontact, Noncontact};
 use super::gauss;
 use super::law::{AsperityLaw, Attraction};
-use super::lennard_jones::rough::{self, RoughLaw};
+use super::lennard_jones::rough::{self, Grid, RoughLaw};
 use super::quadrature::{contact_level, Quadrature};
 use super::scaled::Scaled;
 use super::special::{gauss_scaled, kappa, tail0, tail1_given};
+use std::sync::Arc;
 
 /// The largest scale difference κ - E at which [`Integrals`] adds the shares at
 /// the contact scale (the non-contact mantissa times e^{κ-E} ≤ e^{300} stays finite;
@@ -35,7 +36,7 @@ const NONCONTACT_GAP_LIMIT: f64 = 300.0;
 /// c_a = c_d = 0 (Hertz contact, Δc = c_h²) with the constant -c_0 of the elastic
 /// asperity load in closed form and its Hertz integral by `dmt::hertz`, plus the
 /// attraction of `dmt.rs`. DMT without adhesion (c_0 = 0) is the JKR path itself.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Model {
     /// The load-law coefficients (c_a, c_0 carry γ whatever the law).
     pub coefficients: Coefficients,
@@ -61,6 +62,9 @@ pub struct Model {
     effective: AsperityLaw,
     /// The Lennard-Jones law's rough-surface integrals (its table in use).
     lennard_jones: Option<RoughLaw>,
+    /// Their quadrature nodes over the separations most evaluations ask for,
+    /// built once with the model (shared by its clones).
+    lennard_jones_grid: Option<Arc<Grid>>,
 }
 
 /// The shares of the plastic junctions beyond Δc in closed form, scaled by
@@ -293,6 +297,7 @@ impl Model {
             Some(table) => lennard_jones_transition(&coefficients, table),
             None => contact.transition(),
         };
+        let lennard_jones_grid = lennard_jones.as_ref().map(|t| Arc::new(t.grid()));
         Model {
             coefficients,
             law,
@@ -305,6 +310,7 @@ impl Model {
             capillary: None,
             effective,
             lennard_jones,
+            lennard_jones_grid,
         }
     }
 
@@ -494,7 +500,10 @@ impl Model {
     /// §3's area and counts over Δ ≥ 0 (MODEL.md §8).
     fn lennard_jones_at(&self, table: &RoughLaw, h: f64) -> Integrals {
         let t0_h = tail0(h);
-        let shares = table.at(h);
+        let shares = match &self.lennard_jones_grid {
+            Some(grid) if Grid::serves(h) => grid.at(h),
+            _ => table.at(h),
+        };
         let mut out = Integrals {
             separation: h,
             scale_exponent: kappa(h),

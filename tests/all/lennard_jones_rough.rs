@@ -195,3 +195,60 @@ fn the_interpolation_in_tabor_holds_where_a_node_is_left_out() {
     }
     assert!(worst < 5e-3, "{worst:e}");
 }
+
+/// The per-scene grid (the same panels laid out from the grid's ends, built
+/// once) against the quadrature laid out from each h's window: both
+/// integrate the same tabulated load to rounding, so they agree to 1e-12 of
+/// the larger share's size at every h the grid serves (measured 1.0e-13), between
+/// the table's curves (four integrated) and at one, weak and strong adhesion.
+#[test]
+fn the_scene_grid_matches_the_windowed_quadrature() {
+    use wearopt::model::lennard_jones::rough::{Grid, GRID_SEPARATIONS};
+    let mut worst = 0.0f64;
+    for (c_0, z0, c_h) in [
+        (2.0 * std::f64::consts::PI / 184.0, 0.1, 10.0),
+        (0.3, 0.05, f64::INFINITY),
+        (0.01, 0.3, 3.0),
+    ] {
+        let law = RoughLaw::new(c_0, c_h, z0).expect("in the table");
+        let grid = law.grid();
+        assert!(!grid.is_empty());
+        let (lo, hi) = GRID_SEPARATIONS;
+        let mut h = lo;
+        while h <= hi {
+            assert!(Grid::serves(h));
+            let (a, b) = (grid.at(h), law.at(h));
+            assert_eq!(a.noncontact_exponent, b.noncontact_exponent);
+            assert_eq!(a.elastic_exponent, b.elastic_exponent);
+            // Values, against the larger share's size: each window is cut
+            // where the weight is e^-46 of its peak, which for the smaller
+            // share (the non-contact one at h = -9) need not be small against
+            // that share alone.
+            let value = |m: [f64; 3], exponent: f64| m.map(|x| x * (-exponent).exp());
+            let shares = [
+                (
+                    value(a.noncontact, a.noncontact_exponent),
+                    value(b.noncontact, b.noncontact_exponent),
+                ),
+                (
+                    value(a.elastic, a.elastic_exponent),
+                    value(b.elastic, b.elastic_exponent),
+                ),
+            ];
+            let size = shares
+                .iter()
+                .flat_map(|(_, y)| y.iter())
+                .fold(1e-300f64, |m, y| m.max(y.abs()));
+            for (x, y) in shares {
+                for i in 0..3 {
+                    let e = (x[i] - y[i]).abs() / size;
+                    worst = worst.max(e);
+                    assert!(e < 1e-12, "c_0={c_0} z0={z0} h={h}: {x:?} vs {y:?}");
+                }
+            }
+            h += 0.37;
+        }
+    }
+    assert!(!Grid::serves(GRID_SEPARATIONS.1 + 1.0));
+    eprintln!("worst {worst:e}");
+}

@@ -32,7 +32,15 @@ fn dmt(scene: &Scene, attraction: AttractionKind) -> Scene {
 /// weak and stiff extremes of the hub under both laws.
 fn scenes() -> Vec<(String, Scene)> {
     let mut out = Vec::new();
-    let hub = shipped("micro-gear").scene;
+    let lennard_jones = shipped("micro-gear").scene;
+    out.push((
+        "micro-gear (Lennard-Jones)".to_string(),
+        lennard_jones.clone(),
+    ));
+    let hub = Scene {
+        adhesion_model: wearopt::model::AdhesionModel::Jkr,
+        ..lennard_jones
+    };
     out.push(("micro-gear (JKR)".to_string(), hub.clone()));
     out.push((
         "micro-gear DMT vdW".to_string(),

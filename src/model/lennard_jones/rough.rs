@@ -243,12 +243,32 @@ impl RoughLaw {
     }
 
     fn node_at(&self, node: &Node, h: f64) -> Shares {
+        let mut out = Shares::default();
+        self.visit(node, -h - REACH, -h + REACH, &mut |d, f, contact| {
+            let u = h + d;
+            let g = f * Self::weight(h, d, contact);
+            let share = if contact {
+                &mut out.elastic
+            } else {
+                &mut out.noncontact
+            };
+            share[0] += g;
+            share[1] -= g * u;
+            share[2] += g * (u * u - 1.0);
+        });
+        out
+    }
+
+    /// Visits the quadrature nodes of one curve's summits with lo ≤ Δ ≤ hi
+    /// and Δ ≤ Δc (whole panels from anchors that do not depend on the
+    /// window's ends but its lower one): `visit(Δ, f, contact)`, f the load
+    /// times the node's weight in Δ (the Gaussian weight left out), `contact`
+    /// for the contact part at Δ ≥ 0.
+    fn visit(&self, node: &Node, lo: f64, hi: f64, visit: &mut dyn FnMut(f64, f64, bool)) {
         let c = node.curve;
         let ell = self.ell;
         let scale = ell.powf(-1.5);
         let switch = c.switch / ell;
-        let (lo, hi) = (-h - REACH, -h + REACH);
-        let mut out = Shares::default();
         let rule = gauss::rule(ORDER);
         // The approach part, in τ.
         let top = hi.min(switch);
@@ -276,12 +296,11 @@ impl RoughLaw {
                 let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
                 for (x, w) in rule.nodes.iter().zip(&rule.weights) {
                     let (interference, slope, load) = c.approach_load(mid + half * x);
-                    let d = interference / ell;
-                    let u = h + d;
-                    let f = scale * load * slope / ell * Self::weight(h, d, false) * w * half;
-                    out.noncontact[0] += f;
-                    out.noncontact[1] -= f * u;
-                    out.noncontact[2] += f * (u * u - 1.0);
+                    visit(
+                        interference / ell,
+                        scale * load * slope / ell * w * half,
+                        false,
+                    );
                 }
                 d0 = d1;
                 t0 = t1;
@@ -322,28 +341,104 @@ impl RoughLaw {
                     let b = pair[0] + (pair[1] - pair[0]) * (k + 1) as f64 / pieces as f64;
                     let contact = a >= 0.0;
                     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-                    let mut sums = [0.0; 3];
                     for (x, w) in rule.nodes.iter().zip(&rule.weights) {
                         let d = mid + half * x;
-                        let u = h + d;
-                        let load = c.contact_load(ell * d);
-                        let f = scale * load * Self::weight(h, d, contact) * w * half;
-                        sums[0] += f;
-                        sums[1] -= f * u;
-                        sums[2] += f * (u * u - 1.0);
-                    }
-                    let share = if contact {
-                        &mut out.elastic
-                    } else {
-                        &mut out.noncontact
-                    };
-                    for i in 0..3 {
-                        share[i] += sums[i];
+                        visit(d, scale * c.contact_load(ell * d) * w * half, contact);
                     }
                 }
             }
         }
+    }
+}
+
+/// The separations the per-scene [`Grid`] serves, h ∈ [lo, hi]: the
+/// operating points and pull-offs of every shipped scene and far beyond;
+/// outside, the shares are integrated at h itself.
+pub const GRID_SEPARATIONS: (f64, f64) = (-12.0, 40.0);
+
+/// One scene's quadrature nodes over every summit the separations of
+/// [`GRID_SEPARATIONS`] weigh, with their loads: built once with the law
+/// ([`RoughLaw::grid`]), then the shares at any such h are sums of a
+/// Gaussian over them, with no table to evaluate. The nodes are those of
+/// [`RoughLaw::at`]'s panels, laid out from the grid's ends instead of the
+/// window's.
+#[derive(Debug, Clone, Default)]
+pub struct Grid {
+    /// (Δ, the load times the node's weight and the curve's), ascending in Δ:
+    /// the approach part and the contact part below Δ = 0.
+    noncontact: Vec<(f64, f64)>,
+    /// The same for the contact part at Δ ≥ 0 (up to each curve's Δc).
+    contact: Vec<(f64, f64)>,
+}
+
+impl Grid {
+    /// True when the grid holds every summit the weight at h reaches.
+    pub fn serves(h: f64) -> bool {
+        h >= GRID_SEPARATIONS.0 && h <= GRID_SEPARATIONS.1
+    }
+
+    /// The nodes, non-contact and contact.
+    pub fn len(&self) -> usize {
+        self.noncontact.len() + self.contact.len()
+    }
+
+    /// True without nodes.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The shares at h (which the grid serves: [`Grid::serves`]).
+    pub fn at(&self, h: f64) -> Shares {
+        let mut out = Shares {
+            noncontact_exponent: 0.5 * (-h).max(0.0).powi(2),
+            elastic_exponent: 0.5 * h.max(0.0).powi(2),
+            ..Shares::default()
+        };
+        let (lo, hi) = (-h - REACH, -h + REACH);
+        for (nodes, contact) in [(&self.noncontact, false), (&self.contact, true)] {
+            let first = nodes.partition_point(|n| n.0 < lo);
+            let end = nodes.partition_point(|n| n.0 <= hi);
+            let mut sums = [0.0; 3];
+            for &(d, f) in &nodes[first..end] {
+                let u = h + d;
+                let g = f * RoughLaw::weight(h, d, contact);
+                sums[0] += g;
+                sums[1] -= g * u;
+                sums[2] += g * (u * u - 1.0);
+            }
+            if contact {
+                out.elastic = sums;
+            } else {
+                out.noncontact = sums;
+            }
+        }
         out
+    }
+}
+
+impl RoughLaw {
+    /// The scene's [`Grid`]: every node of every curve in use over the
+    /// summits [`GRID_SEPARATIONS`] weigh, its curve's weight folded in.
+    pub fn grid(&self) -> Grid {
+        let (h_lo, h_hi) = GRID_SEPARATIONS;
+        let (lo, hi) = (-h_hi - REACH, -h_lo + REACH);
+        let mut grid = Grid::default();
+        for node in self.nodes() {
+            let weight = node.weight;
+            self.visit(node, lo, hi, &mut |d, f, contact| {
+                let nodes = if contact {
+                    &mut grid.contact
+                } else {
+                    &mut grid.noncontact
+                };
+                nodes.push((d, weight * f));
+            });
+        }
+        // A stable sort: nodes at one Δ keep their curves' order, so the sums
+        // are the same on every machine and thread count.
+        grid.noncontact.sort_by(|a, b| a.0.total_cmp(&b.0));
+        grid.contact.sort_by(|a, b| a.0.total_cmp(&b.0));
+        grid
     }
 }
 
