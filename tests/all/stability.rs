@@ -491,7 +491,7 @@ fn scene() -> impl Strategy<Value = Scene> {
             prop_oneof![4 => Just(1.0), 1 => Just(-1.0)], // compressive or tensile
             log_uniform(1e-12, 1e-4),                     // A_n
             any::<bool>(),                                // plastic wear area
-            0..3u8,                                       // JKR, DMT van der Waals, DMT Dugdale
+            0..4u8, // JKR, DMT van der Waals, DMT Dugdale, Lennard-Jones
         ),
     )
         .prop_map(
@@ -516,10 +516,10 @@ fn scene() -> impl Strategy<Value = Scene> {
                     WearArea::Total
                 },
                 requirements: Default::default(),
-                adhesion_model: if law == 0 {
-                    AdhesionModel::Jkr
-                } else {
-                    AdhesionModel::Dmt
+                adhesion_model: match law {
+                    0 => AdhesionModel::Jkr,
+                    3 => AdhesionModel::LennardJones,
+                    _ => AdhesionModel::Dmt,
                 },
                 attraction: if law == 2 {
                     AttractionKind::Dugdale
@@ -837,11 +837,27 @@ proptest! {
     }
 }
 
+/// [`scene`] under the Lennard-Jones law: its table (μ = 0.01–5) and the
+/// stand-ins on either side, over E, H, γ, σ, R, N, W and A_n as wide as the
+/// other laws'.
+fn lennard_jones_scene() -> impl Strategy<Value = Scene> {
+    scene().prop_map(|s| Scene {
+        adhesion_model: AdhesionModel::LennardJones,
+        attraction: AttractionKind::VanDerWaals,
+        ..s
+    })
+}
+
 proptest! {
     #![proptest_config(config(CASES / 2))]
 
     #[test]
     fn dimensional_scenes_evaluate_sanely(s in scene()) {
+        scene_outputs_sane(&s)?;
+    }
+
+    #[test]
+    fn lennard_jones_scenes_evaluate_sanely(s in lennard_jones_scene()) {
         scene_outputs_sane(&s)?;
     }
 }
@@ -1003,6 +1019,10 @@ fn long_run_million_cases() {
     });
     run("scenes", &|r| {
         r.run(&scene(), |s| scene_outputs_sane(&s))
+            .map_err(|e| fail(&e))
+    });
+    run("Lennard-Jones scenes", &|r| {
+        r.run(&lennard_jones_scene(), |s| scene_outputs_sane(&s))
             .map_err(|e| fail(&e))
     });
     run("humid scenes", &|r| {
