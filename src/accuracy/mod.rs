@@ -26,6 +26,7 @@
 //! the areas are closed forms, so their rows are the same for every setting.
 
 pub mod finite_difference;
+pub mod lennard_jones;
 pub mod reference;
 
 use std::hint::black_box;
@@ -90,6 +91,8 @@ pub enum RowLaw {
     Jkr,
     /// DMT (docs/model.md §7) with this attraction, at the default setting.
     Dmt(AttractionKind),
+    /// The Lennard-Jones sphere (docs/model.md §11): its table and grid.
+    LennardJones,
 }
 
 impl RowLaw {
@@ -98,22 +101,24 @@ impl RowLaw {
         match self {
             RowLaw::Jkr => AdhesionModel::Jkr,
             RowLaw::Dmt(_) => AdhesionModel::Dmt,
+            RowLaw::LennardJones => AdhesionModel::LennardJones,
         }
     }
 
     /// The attraction (DMT only).
     pub fn attraction(self) -> Option<AttractionKind> {
         match self {
-            RowLaw::Jkr => None,
+            RowLaw::Jkr | RowLaw::LennardJones => None,
             RowLaw::Dmt(kind) => Some(kind),
         }
     }
 
-    /// JKR, then DMT with van der Waals, then with Dugdale.
-    pub const ALL: [RowLaw; 3] = [
+    /// JKR, then DMT with van der Waals, then with Dugdale, then Lennard-Jones.
+    pub const ALL: [RowLaw; 4] = [
         RowLaw::Jkr,
         RowLaw::Dmt(AttractionKind::VanDerWaals),
         RowLaw::Dmt(AttractionKind::Dugdale),
+        RowLaw::LennardJones,
     ];
 }
 
@@ -173,6 +178,11 @@ pub struct WorkPrecision {
     /// The largest estimated relative error of the DMT reference over its grid
     /// (contact loads relative to their parts, N to |N|).
     pub dmt_reference_error: f64,
+    /// Points of the Lennard-Jones rows (P̄ samples).
+    pub lennard_jones_points: usize,
+    /// The Lennard-Jones law's single-summit pull-off error of the closed-form
+    /// limit where it stands in: (DMT below μ = 0.01, JKR above μ = 5).
+    pub lennard_jones_stand_in_error: (f64, f64),
 }
 
 /// Options of the run.
@@ -502,7 +512,16 @@ pub fn work_precision(scenes: &[(String, Scene)], options: Options) -> WorkPreci
         dmt_reference_error = dmt_reference_error.max(d.reference_error);
         rows.extend(d.rows);
     }
+    let lj_scenes: Vec<(Coefficients, f64)> = scene_list
+        .iter()
+        .filter(|s| s.work_of_adhesion > 0.0)
+        .map(|s| (wear::coefficients(s), s.interatomic_distance / s.sigma))
+        .collect();
+    let lj_points = lennard_jones::points(&lj_scenes);
+    rows.extend(lennard_jones::rows(&lj_points, reps));
     WorkPrecision {
+        lennard_jones_points: lj_points.len(),
+        lennard_jones_stand_in_error: lennard_jones::stand_in_errors(),
         rows,
         grid_points: points.len(),
         wear_points: wear_scenes.len(),

@@ -199,6 +199,12 @@ impl RoughLaw {
             .sum()
     }
 
+    /// The curves in use, each with its weight and Δc (what an independent
+    /// reference integrates: `accuracy::lennard_jones`).
+    pub fn curves(&self) -> impl Iterator<Item = (&'static Curve, f64, f64)> + '_ {
+        self.nodes().iter().map(|n| (n.curve, n.weight, n.critical))
+    }
+
     /// Each node's Δc, its weight and the load p(Δc) of one summit on its
     /// curve there (§3 units), for the load jump at the transition.
     pub fn transitions(&self) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
