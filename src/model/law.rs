@@ -29,7 +29,7 @@ pub const TRANSITION_TABOR: (f64, f64) = (0.3, 3.0);
 
 /// Which asperity law a scene uses (the problem-file key `adhesion_model`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
-#[serde(rename_all = "lowercase")]
+#[serde(rename_all = "snake_case")]
 pub enum AdhesionModel {
     /// Johnson–Kendall–Roberts asperities (docs/model.md §3), for φ0 > 3.
     #[default]

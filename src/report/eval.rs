@@ -200,6 +200,23 @@ fn humidity_rows(h: &crate::model::wear::Humidity) -> Vec<[String; 2]> {
     rows
 }
 
+/// The asperity law in a few words (a table cell): its name, DMT's attraction,
+/// the closed form that stands in for the Lennard-Jones law outside its table.
+fn law_label(ev: &Evaluation, sc: &Scene) -> String {
+    let name = match ev.adhesion_model {
+        AdhesionModel::Dmt => match sc.attraction {
+            AttractionKind::VanDerWaals => "DMT, van der Waals".to_string(),
+            AttractionKind::Dugdale => "DMT, Dugdale".to_string(),
+        },
+        AdhesionModel::LennardJones => "Lennard-Jones sphere".to_string(),
+        AdhesionModel::Jkr => "JKR".to_string(),
+    };
+    match ev.stand_in_model {
+        Some(m) => format!("{name} ({} stands in)", m.label()),
+        None => name,
+    }
+}
+
 /// The asperity law in words, with the attraction's range under DMT.
 fn law_words(ev: &Evaluation, sc: &Scene) -> String {
     match ev.adhesion_model {
@@ -378,6 +395,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
         vec!["nominal area A_n".into(), q(sc.nominal_area, "m²")],
         vec!["sliding distance L".into(), q(sc.sliding_distance, "m")],
         vec!["wear coefficient k".into(), sig_exp(sc.wear_coefficient, 3)],
+        vec!["asperity law".into(), law_label(ev, sc)],
     ];
     p.table(&["input", "value"], &rows, &[]);
     p.list(&super::words::input_notes(r.input_notes), "note");
@@ -404,7 +422,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
             vec![
                 "Tabor parameter φ0".into(),
                 sig_exp(i.tabor_parameter, 4),
-                format!("adhesion model: {}", ev.regime.adhesion_model),
+                format!("regime: {}", ev.regime.adhesion_model),
             ],
             vec![
                 "critical interference Δc·σ".into(),
@@ -443,6 +461,10 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
             "pull-off force".into(),
             ev.pull_off_force.map_or("—".into(), |x| q(x, "N")),
         ],
+        vec![
+            "pull-off of one asperity".into(),
+            q(ev.law_asperity_pull_off_force, "N"),
+        ],
         vec!["wear rate V/L".into(), q(ev.wear_rate, "m³/m")],
         vec!["wear volume V".into(), q(ev.wear_volume, "m³")],
         vec![
@@ -450,6 +472,18 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
             format!("{} per m slid", q(ev.wear_depth_rate, "m")),
         ],
     ];
+    if let Some(nc) = ev
+        .noncontact_load
+        .filter(|_| ev.adhesion_model != AdhesionModel::Jkr)
+    {
+        rows.insert(
+            6,
+            vec![
+                "load carried by attracted asperities not in contact".into(),
+                q(nc, "N"),
+            ],
+        );
+    }
     if let Some(l) = ev.life_sliding_distance {
         rows.push(vec![
             "life: sliding distance to the allowed depth".into(),
@@ -649,7 +683,7 @@ pub fn text(r: &EvalReport) -> String {
         ev.regime.deformation
     ));
     line(format!(
-        "  Tabor parameter φ0       = {}   (adhesion model: {})",
+        "  Tabor parameter φ0       = {}   (regime: {})",
         sig_exp(i.tabor_parameter, 4),
         ev.regime.adhesion_model
     ));

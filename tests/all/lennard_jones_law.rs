@@ -257,3 +257,44 @@ fn bad_input_names_the_clash() {
     assert!(err.contains("jkr, dmt, lennard_jones"), "{err}");
     assert!(err.contains("did you mean \"lennard_jones\""), "{err}");
 }
+
+/// The JSON names the law as problem files do: `adhesion_model` of the
+/// shipped hub and of a JKR scene's `other_model` read "lennard_jones".
+#[test]
+fn json_names_the_law_as_problem_files_do() {
+    let out = common::stdout(
+        wearopt().args(["eval", "problems/micro-gear.toml", "--format", "json"]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["adhesion_model"], "lennard_jones");
+    assert!(v.get("other_model").is_none());
+    assert!(v.get("stand_in_model").is_none());
+    let jkr = common::under_law("micro-gear", "jkr");
+    let out = common::stdout(
+        wearopt().args(["eval", jkr.to_str().unwrap(), "--format", "json"]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["adhesion_model"], "jkr");
+    assert_eq!(v["other_model"]["adhesion_model"], "lennard_jones");
+    let far = std::fs::read_to_string("problems/micro-gear.toml")
+        .unwrap()
+        .replace(
+            "interatomic_distance = \"0.3 nm\"",
+            "interatomic_distance = \"0.01 nm\"",
+        );
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lj-stand-in.toml");
+    std::fs::write(&path, far).unwrap();
+    let out = common::stdout(
+        wearopt().args(["eval", path.to_str().unwrap(), "--format", "json"]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["stand_in_model"], "jkr");
+    let notes = v["note_details"].as_array().unwrap();
+    assert!(
+        notes.iter().any(|n| n["kind"] == "lennard_jones_stand_in"),
+        "{notes:?}"
+    );
+}
