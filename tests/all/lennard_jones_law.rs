@@ -298,3 +298,53 @@ fn json_names_the_law_as_problem_files_do() {
         "{notes:?}"
     );
 }
+
+/// Humid air under the Lennard-Jones law (docs/model.md §10 on this law's
+/// load): at RH = 0 the humid hub is the dry hub bit for bit; at 50 % the
+/// meniscus pulls (capillary load < 0), the pull-off and Γ grow, and the
+/// loads still add up to W.
+#[test]
+fn humid_air_adds_to_the_lennard_jones_load() {
+    let humid = std::fs::read_to_string("problems/micro-gear-humid.toml")
+        .unwrap()
+        .replace(
+            "adhesion_model = \"dmt\"",
+            "adhesion_model = \"lennard_jones\"",
+        );
+    let humid: String = humid
+        .lines()
+        .filter(|l| !l.starts_with("attraction"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let wet = wearopt::problem::parse(&humid, "humid-lj.toml")
+        .unwrap()
+        .scene;
+    assert_eq!(wet.adhesion_model, AdhesionModel::LennardJones);
+    let mut dry = wet.clone();
+    dry.environment = dry.environment.map(|mut e| {
+        e.relative_humidity = 0.0;
+        e
+    });
+    let opts = EvaluationOptions::default();
+    let (w, d) = (evaluate(&wet, &opts), evaluate(&dry, &opts));
+    let plain = evaluate(
+        &wearopt::model::Scene {
+            environment: None,
+            requirements: Default::default(),
+            ..dry.clone()
+        },
+        &opts,
+    );
+    assert_eq!(d.nondimensional_separation, plain.nondimensional_separation);
+    assert_eq!(d.pull_off_force, plain.pull_off_force);
+    let hum = w.humidity.unwrap();
+    assert!(hum.capillary_load.unwrap() < 0.0);
+    assert!(w.pull_off_force.unwrap() > d.pull_off_force.unwrap());
+    assert!(
+        hum.apparent_work_of_adhesion.unwrap()
+            > d.humidity.unwrap().apparent_work_of_adhesion.unwrap()
+    );
+    let sum =
+        w.elastic_load + w.plastic_load + w.noncontact_load.unwrap() + hum.capillary_load.unwrap();
+    assert!((sum / wet.load - 1.0).abs() < 1e-10, "{sum}");
+}
