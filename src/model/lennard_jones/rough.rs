@@ -301,8 +301,12 @@ impl RoughLaw {
                     };
                 }
                 let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
-                for (x, w) in rule.nodes.iter().zip(&rule.weights) {
-                    let (interference, slope, load) = c.approach_load(mid + half * x);
+                let mut taus = [0.0; ORDER];
+                for (t, x) in taus.iter_mut().zip(&rule.nodes) {
+                    *t = mid + half * x;
+                }
+                let loads = c.approach_loads(&taus);
+                for (&(interference, slope, load), w) in loads.iter().zip(&rule.weights) {
                     visit(
                         interference / ell,
                         scale * load * slope / ell * w * half,

@@ -138,6 +138,10 @@ pub struct Curve {
     approach_load: Chebyshev,
     /// e(τ) on the approach part.
     opening: Chebyshev,
+    /// The coefficients of P̂/B, e and de/dτ side by side, highest degree
+    /// last (de/dτ's padded with 0): one Clenshaw recurrence runs all three,
+    /// three independent chains at once (what a quadrature's nodes cost).
+    approach_fused: Vec<[f64; 3]>,
     /// The contact panels' ends, ascending from δ̂_s to δ̂_max.
     breaks: Vec<f64>,
     /// P̂(δ̂) on each contact panel.
@@ -204,15 +208,55 @@ impl Curve {
     #[inline]
     pub fn approach_load(&self, tau: f64) -> (f64, f64, f64) {
         let x = self.approach_load.x(tau);
-        let ratio = Chebyshev::clenshaw(&self.approach_load.coefficients, x);
-        let e = Chebyshev::clenshaw(&self.opening.coefficients, x);
-        let de = Chebyshev::clenshaw(&self.opening.derivative, x);
+        let [ratio, e, de] = clenshaw3(&self.approach_fused, x);
         let t2 = tau * tau;
         (
             self.z0 * (1.0 - 1.0 / t2 + e),
             self.z0 * (2.0 / (t2 * tau) + de),
             ratio * bradley(tau).0,
         )
+    }
+
+    /// [`Curve::approach_load`] at N values of τ at once: one recurrence whose
+    /// every step updates all N nodes (a quadrature panel's), stored series by
+    /// series so the steps vectorise — the same numbers as one at a time.
+    pub fn approach_loads<const N: usize>(&self, taus: &[f64; N]) -> [(f64, f64, f64); N] {
+        let xs = taus.map(|t| self.approach_load.x(t));
+        // Clenshaw's b_{k+1} and b_{k+2}: each step overwrites the older with
+        // b_k = 2x b_{k+1} − b_{k+2} + c_k.
+        let (mut a, mut b) = ([[0.0; N]; 3], [[0.0; N]; 3]);
+        let step = |into: &mut [[f64; N]; 3], from: &[[f64; N]; 3], c: &[f64; 3]| {
+            for j in 0..3 {
+                for i in 0..N {
+                    into[j][i] = 2.0 * xs[i] * from[j][i] - into[j][i] + c[j];
+                }
+            }
+        };
+        // Two steps a turn (b_k into `a`, b_{k−1} into `b`), so the roles
+        // alternate without a copy; `newer` says which holds b_1 at the end.
+        let mut coefficients = self.approach_fused[1..].iter().rev();
+        let mut newer_is_a = false;
+        while let Some(c) = coefficients.next() {
+            step(&mut a, &b, c);
+            newer_is_a = true;
+            if let Some(c) = coefficients.next() {
+                step(&mut b, &a, c);
+                newer_is_a = false;
+            }
+        }
+        let (newer, older) = if newer_is_a { (&a, &b) } else { (&b, &a) };
+        let first = self.approach_fused[0];
+        std::array::from_fn(|i| {
+            let x = xs[i];
+            let [ratio, e, de] = [0, 1, 2].map(|j| x * newer[j][i] - older[j][i] + first[j]);
+            let tau = taus[i];
+            let t2 = tau * tau;
+            (
+                self.z0 * (1.0 - 1.0 / t2 + e),
+                self.z0 * (2.0 / (t2 * tau) + de),
+                ratio * bradley(tau).0,
+            )
+        })
     }
 
     /// P̂ alone on the contact part at δ̂ ≥ δ̂_s (what a quadrature needs).
@@ -359,6 +403,27 @@ impl Curve {
     }
 }
 
+/// Three Chebyshev series at one x by one Clenshaw recurrence over their
+/// coefficients side by side (the same sums, term by term, as three separate
+/// recurrences: the same numbers).
+#[inline]
+fn clenshaw3(series: &[[f64; 3]], x: f64) -> [f64; 3] {
+    let (mut b1, mut b2) = ([0.0; 3], [0.0; 3]);
+    for c in series.iter().skip(1).rev() {
+        let mut b0 = [0.0; 3];
+        for i in 0..3 {
+            b0[i] = 2.0 * x * b1[i] - b2[i] + c[i];
+        }
+        b2 = b1;
+        b1 = b0;
+    }
+    let mut out = [0.0; 3];
+    for i in 0..3 {
+        out[i] = x * b1[i] - b2[i] + series[0][i];
+    }
+    out
+}
+
 /// Bradley's rigid-sphere load at apex gap G = τ⁻², (2/3)(τ¹⁶ − 4τ⁴), and its
 /// τ-derivative (negative for G > 4^{-1/6}: every approach part ends above).
 #[inline]
@@ -457,6 +522,19 @@ impl Curve {
         let r = slope.max(0.0) / 1.5;
         let c = d - r * r;
         let b = r * r * r - p;
+        let approach_fused = (0..approach_load
+            .coefficients
+            .len()
+            .max(opening.coefficients.len()))
+            .map(|k| {
+                let at = |v: &[f64]| v.get(k).copied().unwrap_or(0.0);
+                [
+                    at(&approach_load.coefficients),
+                    at(&opening.coefficients),
+                    at(&opening.derivative),
+                ]
+            })
+            .collect();
         Curve {
             tabor,
             z0,
@@ -465,6 +543,7 @@ impl Curve {
             jumps,
             approach_load,
             opening,
+            approach_fused,
             breaks,
             panels,
             radius,
