@@ -256,7 +256,9 @@ def curve(
     ``noncontact_load``, each an array of the broadcast shape.
     ``adhesion_model="dmt"`` with ``attraction`` ("van_der_waals" or
     "dugdale") and ``attraction_range`` (z0 = Z0/σ or h0/σ) is
-    ``wearopt curve --adhesion-model dmt``. ``theta`` or ``lam`` may be ``inf`` (no
+    ``wearopt curve --adhesion-model dmt``; ``adhesion_model="lennard_jones"``
+    with ``attraction_range`` (z0 = Z0/σ, no ``attraction``) is the
+    self-consistent Lennard-Jones sphere (docs/model.md §11). ``theta`` or ``lam`` may be ``inf`` (no
     adhesion, no plasticity); with ``theta = inf`` plasticity comes from
     ``hardness_coefficient`` c_h. Runs in parallel without the GIL.
 
