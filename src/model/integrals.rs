@@ -60,11 +60,10 @@ pub struct Model {
     /// Lennard-Jones law outside its table or without adhesion, where its
     /// closed-form limit stands in (see [`Model::stand_in`]).
     effective: AsperityLaw,
-    /// The Lennard-Jones law's rough-surface integrals (its table in use).
-    lennard_jones: Option<RoughLaw>,
-    /// Their quadrature nodes over the separations most evaluations ask for,
+    /// The Lennard-Jones law's rough-surface integrals: its table in use and
+    /// their quadrature nodes over the separations most evaluations ask for,
     /// built once with the model (shared by its clones).
-    lennard_jones_grid: Option<Arc<Grid>>,
+    lennard_jones: Option<Arc<Grid>>,
 }
 
 /// The shares of the plastic junctions beyond Δc in closed form, scaled by
@@ -297,7 +296,6 @@ impl Model {
             Some(table) => lennard_jones_transition(&coefficients, table),
             None => contact.transition(),
         };
-        let lennard_jones_grid = lennard_jones.as_ref().map(|t| Arc::new(t.grid()));
         Model {
             coefficients,
             law,
@@ -309,8 +307,7 @@ impl Model {
             c_d_cubed: contact.c_d.cbrt().powi(3),
             capillary: None,
             effective,
-            lennard_jones,
-            lennard_jones_grid,
+            lennard_jones: lennard_jones.map(|t| Arc::new(t.grid())),
         }
     }
 
@@ -323,13 +320,13 @@ impl Model {
     /// The Lennard-Jones law's table in use (None under the other laws, and
     /// under this one where a closed form stands in).
     pub fn lennard_jones_table(&self) -> Option<&RoughLaw> {
-        self.lennard_jones.as_ref()
+        self.lennard_jones.as_deref().map(Grid::law)
     }
 
     /// One asperity's pull-off under the model's law in units of πγR: JKR's
     /// 1.5, DMT's 2, the Lennard-Jones sphere's from its table (between them).
     pub fn asperity_pull_off(&self) -> f64 {
-        match (&self.lennard_jones, self.effective) {
+        match (self.lennard_jones_table(), self.effective) {
             (Some(table), _) => -table.asperity_pull_off(),
             (None, AsperityLaw::Dmt(_)) => 2.0,
             // Bradley's rigid sphere at contact, 2πγR, below the table; its
@@ -416,8 +413,8 @@ impl Model {
 
     /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
-        let mut out = match &self.lennard_jones {
-            Some(table) => self.lennard_jones_at(table, h),
+        let mut out = match self.lennard_jones.as_deref() {
+            Some(grid) => self.lennard_jones_at(grid, h),
             None => self.contact_at(h),
         };
         if let Some(c) = &self.capillary {
@@ -498,12 +495,9 @@ impl Model {
     /// non-contact shares from the rough-surface quadrature, the plastic
     /// junctions of each of its curves (own Δc and weight) in closed form, and
     /// §3's area and counts over Δ ≥ 0 (MODEL.md §8).
-    fn lennard_jones_at(&self, table: &RoughLaw, h: f64) -> Integrals {
+    fn lennard_jones_at(&self, grid: &Grid, h: f64) -> Integrals {
         let t0_h = tail0(h);
-        let shares = match &self.lennard_jones_grid {
-            Some(grid) if Grid::serves(h) => grid.at(h),
-            _ => table.at(h),
-        };
+        let shares = grid.shares(h);
         let mut out = Integrals {
             separation: h,
             scale_exponent: kappa(h),
@@ -529,7 +523,7 @@ impl Model {
         // keeps them ≥ 0 where the Lagrange weights are not.
         let mut shares = [0.0; 3];
         let mut signs = (true, true);
-        for (dc, weight) in table.critical_interferences() {
+        for (dc, weight) in grid.law().critical_interferences() {
             let p = Plastic::at(&self.coefficients, h, dc);
             shares[0] += weight * p.load;
             shares[1] += weight * p.dload;

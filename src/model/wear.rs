@@ -390,10 +390,9 @@ pub fn evaluate(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
 /// (what `wearopt eval` reports): the Lennard-Jones law, valid there.
 pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evaluation {
     let mut ev = evaluate(scene, options);
-    let phi = ev.indices.tabor_parameter;
-    let transition = phi >= TRANSITION_TABOR.0 && phi <= TRANSITION_TABOR.1;
-    let other = scene.adhesion_model.bracket(phi);
-    if let (true, true, Some(other)) = (transition, scene.work_of_adhesion > 0.0, other) {
+    // `bracket` answers only inside the transition.
+    let other = scene.adhesion_model.bracket(ev.indices.tabor_parameter);
+    if let (true, Some(other)) = (scene.work_of_adhesion > 0.0, other) {
         let other_scene = Scene {
             adhesion_model: other,
             ..scene.clone()

@@ -65,6 +65,8 @@ pub struct Shares {
 /// One node's share of the law: its curve, its weight and its Δc.
 #[derive(Debug, Clone, Copy)]
 struct Node {
+    /// The curve's place in the table.
+    index: usize,
     curve: &'static Curve,
     weight: f64,
     critical: f64,
@@ -155,6 +157,7 @@ impl RoughLaw {
         let node = |&(k, weight): &(usize, f64)| {
             let curve = &curves()[k];
             Node {
+                index: k,
                 curve,
                 weight,
                 critical: critical_interference(curve, c_h * ell.sqrt()) / ell,
@@ -186,17 +189,10 @@ impl RoughLaw {
     /// The pull-off of one summit, P̂ (Maugis units, < 0): each curve's,
     /// interpolated in ln μ as the integrals are.
     pub fn asperity_pull_off(&self) -> f64 {
-        let table = super::table::curves();
         let pull_offs = super::table::pull_offs();
         self.nodes()
             .iter()
-            .map(|n| {
-                let k = table
-                    .iter()
-                    .position(|c| std::ptr::eq(c, n.curve))
-                    .expect("a node's curve is the table's");
-                n.weight * pull_offs[k].1
-            })
+            .map(|n| n.weight * pull_offs[n.index].1)
             .sum()
     }
 
@@ -252,16 +248,12 @@ impl RoughLaw {
     fn node_at(&self, node: &Node, h: f64) -> Shares {
         let mut out = Shares::default();
         self.visit(node, -h - REACH, -h + REACH, &mut |d, f, contact| {
-            let u = h + d;
-            let g = f * Self::weight(h, d, contact);
             let share = if contact {
                 &mut out.elastic
             } else {
                 &mut out.noncontact
             };
-            share[0] += g;
-            share[1] -= g * u;
-            share[2] += g * (u * u - 1.0);
+            add_moments(share, f * Self::weight(h, d, contact), h + d);
         });
         out
     }
@@ -362,6 +354,15 @@ impl RoughLaw {
     }
 }
 
+/// Adds one node's g = f φ̄ to a share's [P̄, P̄', P̄''] at u = h + Δ
+/// (φ̄' = −u φ̄, φ̄'' = (u² − 1) φ̄).
+#[inline]
+fn add_moments(share: &mut [f64; 3], g: f64, u: f64) {
+    share[0] += g;
+    share[1] -= g * u;
+    share[2] += g * (u * u - 1.0);
+}
+
 /// The separations the per-scene [`Grid`] serves, h ∈ [lo, hi]: the
 /// operating points and pull-offs of every shipped scene and far beyond;
 /// outside, the shares are integrated at h itself.
@@ -373,8 +374,11 @@ pub const GRID_SEPARATIONS: (f64, f64) = (-12.0, 40.0);
 /// Gaussian over them, with no table to evaluate. The nodes are those of
 /// [`RoughLaw::at`]'s panels, laid out from the grid's ends instead of the
 /// window's.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 pub struct Grid {
+    /// The law the nodes are laid out for (and that integrates at h itself
+    /// where the grid does not reach).
+    law: RoughLaw,
     /// (Δ, the load times the node's weight and the curve's), ascending in Δ:
     /// the approach part and the contact part below Δ = 0.
     noncontact: Vec<(f64, f64)>,
@@ -386,6 +390,21 @@ impl Grid {
     /// True when the grid holds every summit the weight at h reaches.
     pub fn serves(h: f64) -> bool {
         h >= GRID_SEPARATIONS.0 && h <= GRID_SEPARATIONS.1
+    }
+
+    /// The law the grid is laid out for.
+    pub fn law(&self) -> &RoughLaw {
+        &self.law
+    }
+
+    /// The shares at any h: from the grid where it serves h, else integrated
+    /// at h itself ([`RoughLaw::at`]).
+    pub fn shares(&self, h: f64) -> Shares {
+        if Self::serves(h) {
+            self.at(h)
+        } else {
+            self.law.at(h)
+        }
     }
 
     /// The nodes, non-contact and contact.
@@ -411,11 +430,7 @@ impl Grid {
             let end = nodes.partition_point(|n| n.0 <= hi);
             let mut sums = [0.0; 3];
             for &(d, f) in &nodes[first..end] {
-                let u = h + d;
-                let g = f * RoughLaw::weight(h, d, contact);
-                sums[0] += g;
-                sums[1] -= g * u;
-                sums[2] += g * (u * u - 1.0);
+                add_moments(&mut sums, f * RoughLaw::weight(h, d, contact), h + d);
             }
             if contact {
                 out.elastic = sums;
@@ -433,7 +448,11 @@ impl RoughLaw {
     pub fn grid(&self) -> Grid {
         let (h_lo, h_hi) = GRID_SEPARATIONS;
         let (lo, hi) = (-h_hi - REACH, -h_lo + REACH);
-        let mut grid = Grid::default();
+        let mut grid = Grid {
+            law: *self,
+            noncontact: Vec::new(),
+            contact: Vec::new(),
+        };
         for node in self.nodes() {
             let weight = node.weight;
             self.visit(node, lo, hi, &mut |d, f, contact| {
