@@ -8,6 +8,8 @@
 //! 2. [`model`]: the physics of the rough-surface adhesion model (`docs/model.md`):
 //!    coefficients, indices, the asperity laws, the load and area integrals, the
 //!    separation solve, Archard wear. No I/O. [`surface`]: height maps to σ, R and N.
+//!    [`contact`]: the FFT boundary-element solver on a map (imports [`surface`]'s
+//!    synthetic maps in its tests only).
 //! 3. [`optimize`]: the constrained design search (SQP on clarabel subproblems,
 //!    argmin-driven, multistart with rayon); [`accuracy`] and [`figures`].
 //! 4. [`sweep`]: design-space sampling; [`problem`]: the TOML problem-file schema,
@@ -21,6 +23,7 @@
 pub mod accuracy;
 pub mod app;
 pub mod calibrate;
+pub mod contact;
 pub mod figures;
 pub mod model;
 pub mod optimize;
