@@ -8,7 +8,7 @@
 //! in flags. The Python half (`python/wearopt/__init__.py`) turns the JSON into
 //! dicts and the arrays into numpy shapes. The GIL is released while the model runs.
 
-use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{IntoPyArray, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -368,6 +368,152 @@ fn roughness_array_json(
     })
 }
 
+/// The contact options of keyword arguments, checked in the command line's order.
+#[allow(clippy::too_many_arguments)]
+fn contact_options(
+    modulus: &str,
+    pressures: &[String],
+    hardness: Option<&str>,
+    level: &str,
+    pixel_size: Option<&str>,
+    height_unit: Option<&str>,
+    tolerance: f64,
+    fields: bool,
+) -> Result<app::contact::ContactOptions, AppError> {
+    use app::contact::positive;
+    use app::roughness::{height_unit as unit, length, levelling};
+    let pixel_size = pixel_size
+        .map(|t| length(OptionName("pixel_size"), t))
+        .transpose()?;
+    let height_unit = height_unit
+        .map(|t| unit(OptionName("height_unit"), t))
+        .transpose()?;
+    let modulus = positive(OptionName("modulus"), modulus, Dimension::Pressure)?;
+    if pressures.is_empty() {
+        return Err(AppError::Invalid {
+            options: vec![(OptionName("pressures"), "[]".to_string())],
+            rule: "give one or more mean pressures".to_string(),
+        });
+    }
+    let pressures = pressures
+        .iter()
+        .map(|t| positive(OptionName("pressures"), t, Dimension::Pressure))
+        .collect::<Result<Vec<f64>, _>>()?;
+    let hardness = hardness
+        .map(|t| positive(OptionName("hardness"), t, Dimension::Pressure))
+        .transpose()?;
+    Ok(app::contact::ContactOptions {
+        modulus,
+        pressures,
+        hardness,
+        level: levelling(OptionName("level"), level)?,
+        pixel_size,
+        height_unit,
+        tolerance,
+        fields,
+    })
+}
+
+/// The JSON of a contact document and, when asked, each point's pressure and gap
+/// fields as (ny, nx) arrays.
+type ContactOut<'py> = (
+    String,
+    Vec<Bound<'py, numpy::PyArray2<f64>>>,
+    Vec<Bound<'py, numpy::PyArray2<f64>>>,
+);
+
+fn contact_out<'py>(
+    py: Python<'py>,
+    doc: app::contact::ContactDocument,
+) -> PyResult<ContactOut<'py>> {
+    let json = report::contact::json_document(&doc).to_string();
+    let [nx, ny] = doc.pixels;
+    let mut pressures = Vec::new();
+    let mut gaps = Vec::new();
+    for pt in doc.points {
+        if pt.solution.pressures.is_empty() {
+            continue;
+        }
+        let shape = |v: Vec<f64>| -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
+            v.into_pyarray(py)
+                .reshape([ny, nx])
+                .map_err(|e| value_error(e.to_string()))
+        };
+        pressures.push(shape(pt.solution.pressures)?);
+        gaps.push(shape(pt.solution.gaps)?);
+    }
+    Ok((json, pressures, gaps))
+}
+
+/// `wearopt contact FILE --modulus E --pressure P1,… [--hardness H] … --format json`.
+#[pyfunction]
+#[pyo3(signature = (path, modulus, pressures, hardness=None, level="plane".to_string(), pixel_size=None, height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false))]
+#[allow(clippy::too_many_arguments)]
+fn contact_json<'py>(
+    py: Python<'py>,
+    path: String,
+    modulus: String,
+    pressures: Vec<String>,
+    hardness: Option<String>,
+    level: String,
+    pixel_size: Option<String>,
+    height_unit: Option<String>,
+    tolerance: f64,
+    fields: bool,
+) -> PyResult<ContactOut<'py>> {
+    let doc = detached(py, || {
+        let options = contact_options(
+            &modulus,
+            &pressures,
+            hardness.as_deref(),
+            &level,
+            pixel_size.as_deref(),
+            height_unit.as_deref(),
+            tolerance,
+            fields,
+        )
+        .map_err(words)?;
+        app::contact::contact(std::path::Path::new(&path), &options).map_err(words)
+    })?;
+    contact_out(py, doc)
+}
+
+/// The contact of heights in memory (a 2-D array, rows along y).
+#[pyfunction]
+#[pyo3(signature = (heights, pixel_size, modulus, pressures, hardness=None, level="plane".to_string(), height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false))]
+#[allow(clippy::too_many_arguments)]
+fn contact_array<'py>(
+    py: Python<'py>,
+    heights: PyReadonlyArray2<'py, f64>,
+    pixel_size: String,
+    modulus: String,
+    pressures: Vec<String>,
+    hardness: Option<String>,
+    level: String,
+    height_unit: Option<String>,
+    tolerance: f64,
+    fields: bool,
+) -> PyResult<ContactOut<'py>> {
+    let array = heights.as_array();
+    let (ny, nx) = array.dim();
+    let values: Vec<f64> = array.iter().copied().collect();
+    let doc = detached(py, || {
+        let options = contact_options(
+            &modulus,
+            &pressures,
+            hardness.as_deref(),
+            &level,
+            Some(&pixel_size),
+            height_unit.as_deref(),
+            tolerance,
+            fields,
+        )
+        .map_err(words)?;
+        app::contact::contact_of_heights("<height array>", nx, ny, values, &options).map_err(words)
+    })?;
+    contact_out(py, doc)
+}
+
 /// A quantity keyword argument: a string with a unit, read as `dimension`.
 fn quantity(name: &'static str, text: &str, dimension: Dimension) -> Result<f64, AppError> {
     parse_quantity(text, dimension).map_err(|e| AppError::Invalid {
@@ -515,6 +661,8 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(merge_text, m)?)?;
     m.add_function(wrap_pyfunction!(roughness_json, m)?)?;
     m.add_function(wrap_pyfunction!(roughness_array_json, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_json, m)?)?;
+    m.add_function(wrap_pyfunction!(contact_array, m)?)?;
     m.add_function(wrap_pyfunction!(fit_adhesion_json, m)?)?;
     m.add_function(wrap_pyfunction!(figures_json, m)?)?;
     m.add_function(wrap_pyfunction!(accuracy_json, m)?)?;

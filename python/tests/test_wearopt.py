@@ -469,3 +469,74 @@ def test_asperity_equals_cli_json_and_words_errors_as_keywords():
         wearopt.asperity(1.0, -1.0, 0.0, 3, adhesion_model="maugis")
     with pytest.raises(ValueError, match=r"^points=1: must lie in 2..="):
         wearopt.asperity(1.0, -1.0, 0.0, 1)
+
+
+# ---- wearopt.contact: the FFT boundary-element solver on a scan ----------------
+
+
+def test_contact_equals_cli_json():
+    scan = "problems/scans/self-affine.gsf"
+    expected = json.loads(
+        cli("contact", scan, "--modulus", "150 GPa", "--pressure", "50 MPa,200 MPa",
+            "--hardness", "12 GPa", "--format", "json").stdout
+    )
+    got = wearopt.contact(scan, modulus="150 GPa", pressures=["50 MPa", "200 MPa"], hardness="12 GPa")
+    assert got == expected
+
+
+def test_contact_bad_input_has_the_cli_message():
+    scan = "problems/scans/self-affine.gsf"
+    r = cli("contact", scan, "--modulus", "150 GPa", "--pressure", "-1 MPa", ok=(2,))
+    with pytest.raises(ValueError) as e:
+        wearopt.contact(scan, modulus="150 GPa", pressures="-1 MPa")
+    assert str(e.value) == keywords(r.stderr.strip().removeprefix("Error: ")).replace(
+        "pressure=", "pressures="
+    )
+    z = np.zeros((8, 8))
+    z[2, 3] = np.nan
+    with pytest.raises(ValueError, match="1 of 64 points are missing"):
+        wearopt.contact(z, pixel_size="10 nm", modulus="100 GPa", pressures=1e6)
+
+
+def _self_affine(n, seed, hurst=0.8):
+    """A self-affine map from Tamaas's own generator (rms 1 nm)."""
+    import tamaas as tm
+
+    sg = tm.SurfaceGeneratorFilter2D([n, n])
+    sg.random_seed = seed
+    sg.spectrum = tm.Isopowerlaw2D()
+    sg.spectrum.q0 = 4
+    sg.spectrum.q1 = 4
+    sg.spectrum.q2 = n // 4
+    sg.spectrum.hurst = hurst
+    h = np.array(sg.buildSurface())
+    return h / np.sqrt(np.mean(h**2)) * 1e-9
+
+
+@pytest.mark.parametrize("seed,fraction", [(3, 0.03), (11, 0.1)])
+def test_contact_matches_tamaas(seed, fraction):
+    """Tamaas 2.9's Polonsky–Keer solver (PolonskyKeerRey, pressure primal and
+    constraint) on the same periodic map, E* and mean pressure: the same
+    contacting pixels (within two), the mean gap within 1e-6 and the pressures
+    within 1e-6 of their largest."""
+    import tamaas as tm
+
+    n, length, e_star = 128, 1e-6, 100e9
+    h = _self_affine(n, seed)
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [length, length], [n, n])
+    model.E, model.nu = e_star, 0.0
+    slope = np.sqrt(np.mean(np.gradient(h, length / n, axis=0) ** 2 + np.gradient(h, length / n, axis=1) ** 2))
+    pressure = fraction * e_star * slope / 2  # ~ κ⁻¹ E* h' A/A0 with κ = 2
+    tm.PolonskyKeerRey(model, h, 1e-12).solve(pressure)
+    traction = np.array(model.traction)
+    gap = np.array(model.displacement) - h
+    gap -= gap[traction > 0].mean()
+    c = wearopt.contact(h, pixel_size=length / n, modulus=e_star, pressures=pressure,
+                        level="none", tolerance=1e-12, fields=True)
+    point = c["points"][0]
+    assert point["status"] == "converged"
+    assert abs(int((point["pressure_field"] > 0).sum()) - int((traction > 0).sum())) <= 2
+    mean_gap = np.maximum(gap, 0).mean()
+    assert abs(point["mean_gap"] / mean_gap - 1) < 1e-6
+    assert np.abs(point["pressure_field"] - traction).max() < 1e-6 * traction.max()
+    assert abs(point["pressure_field"].mean() / pressure - 1) < 1e-12

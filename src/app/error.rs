@@ -140,6 +140,13 @@ pub enum AppError {
     DmtWithoutRange,
     /// The height map cannot be read.
     Read(ReadError),
+    /// The height map cannot be solved for contact (too small, missing points).
+    Contact {
+        /// The map as the caller named it.
+        origin: String,
+        /// What the contact solver cannot take.
+        error: crate::contact::ContactError,
+    },
     /// The height map cannot be analysed.
     Surface {
         /// The file as named by the caller.
@@ -250,6 +257,7 @@ impl AppError {
             ),
             AppError::Read(e) => read_message(e, vocabulary),
             AppError::Surface { origin, error } => format!("{origin}: {error}"),
+            AppError::Contact { origin, error } => format!("{origin}: {error}"),
             AppError::Calibration(e) => calibration_message(e, vocabulary),
             AppError::Sweep {
                 origin,

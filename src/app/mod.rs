@@ -2,7 +2,7 @@
 //! document out.
 //!
 //! `wearopt eval`, `optimize` (a ranking too, when `[design]` lists materials),
-//! `pareto`, `curve`, `figures`, `accuracy`, `fit-adhesion`, `roughness`, `sweep`
+//! `pareto`, `curve`, `figures`, `accuracy`, `fit-adhesion`, `roughness`, `contact`, `sweep`
 //! and `merge` each have a function here. The command line (`src/cli/`) and the
 //! Python package (`python/`) are adapters: they turn flags or keyword arguments
 //! into these options, call one function, hand the document to the report stage
@@ -17,6 +17,7 @@
 
 pub mod accuracy;
 pub mod asperity;
+pub mod contact;
 pub mod curve;
 pub mod eval;
 pub mod figures;

@@ -3,6 +3,7 @@
 //! rendering written out, errors worded as flags.
 
 mod accuracy;
+mod contact;
 mod figures;
 mod fit_adhesion;
 mod format;
@@ -131,6 +132,15 @@ wearopt roughness scan.npy --pixel-size 20nm --height-unit nm --format json --ps
 Exit code 2 for an unreadable file or a map that cannot be analysed."
     )]
     Roughness(roughness::RoughnessArgs),
+    /// Exact contact of a measured height map (FFT boundary elements) at given mean pressures, beside the statistical model's real area on the same map.
+    #[command(
+        after_help = "Example:\n  wearopt contact problems/scans/self-affine.gsf --modulus 150GPa --pressure 50MPa,100MPa,200MPa\n  \
+wearopt contact scan.npy --pixel-size 20nm --height-unit nm --modulus 100GPa --pressure 1GPa --hardness 10GPa --format html > contact.html\n\n\
+JSON: pixels, pixel_size, modulus and points (pressure, real_area_fraction, contact_patches, mean_gap, max_pressure, residual, iterations, \
+gw_real_area_fraction, gw_contact_count, area_ratio). Exit code 2 for an unreadable file, missing points, a map under 8 × 8 \
+or a pressure, modulus or hardness out of range."
+    )]
+    Contact(contact::ContactArgs),
     /// The non-dimensional model at N evenly spaced separations (what the paper's figures are drawn from).
     #[command(
         after_help = "Columns: h, load, area, plastic_area, critical_interference, dload_dh, noncontact_load.\n\
@@ -265,6 +275,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::Sweep(args) => sweep::run(args),
         Command::Merge(args) => sweep::merge(args),
         Command::Roughness(args) => roughness::run(args),
+        Command::Contact(args) => contact::run(args),
         Command::FitAdhesion(args) => fit_adhesion::run(args),
         Command::Curve(args) => curve(args),
         Command::Humidity(args) => humidity(args),
@@ -363,7 +374,7 @@ pub(crate) fn unwritable(path: &std::path::Path, what: &str, e: &std::io::Error)
     usage(format!("cannot write {what} to {}: {e}", path.display()))
 }
 
-fn usage(msg: String) -> anyhow::Error {
+pub(crate) fn usage(msg: String) -> anyhow::Error {
     UsageError(msg).into()
 }
 

@@ -47,12 +47,18 @@ pub(crate) struct RoughnessArgs {
     psd: Option<PathBuf>,
 }
 
+impl From<LevelArg> for Levelling {
+    fn from(level: LevelArg) -> Self {
+        match level {
+            LevelArg::None => Levelling::None,
+            LevelArg::Plane => Levelling::Plane,
+            LevelArg::Quadratic => Levelling::Quadratic,
+        }
+    }
+}
+
 pub(crate) fn run(args: RoughnessArgs) -> Result<ExitCode> {
-    let level = match args.level {
-        LevelArg::None => Levelling::None,
-        LevelArg::Plane => Levelling::Plane,
-        LevelArg::Quadratic => Levelling::Quadratic,
-    };
+    let level = args.level.into();
     // As the command line always checked them: pixel size, height unit, cut-off.
     let pixel_size = args
         .pixel_size

@@ -15,6 +15,10 @@ pub mod patches;
 
 use fft::Compliance;
 
+/// Iterations without a new best residual after which the capped conjugate
+/// scheme is taken to cycle.
+const STALL: usize = 100;
+
 /// The smallest map side the solver accepts (points along x and along y).
 pub const MIN_SIDE: usize = 8;
 
@@ -411,13 +415,19 @@ impl Solver {
         let mut conjugate = false;
         let mut g_norm_old = 1.0;
         let mut iterations = 0;
+        let mut best = (f64::INFINITY, 0);
         loop {
             self.gap(p, g, cap);
             let residual = self.residual(p, g, cap);
             if residual <= settings.tolerance {
                 return (iterations, residual, Outcome::Converged);
             }
-            if iterations >= settings.max_iterations {
+            // A stall (no new best residual for STALL iterations) is a cycle of
+            // active sets: hand over to the projected gradient.
+            if residual < best.0 {
+                best = (residual, iterations);
+            }
+            if iterations >= settings.max_iterations || iterations - best.1 > STALL {
                 return (iterations, residual, Outcome::IterationLimit);
             }
             iterations += 1;

@@ -92,6 +92,11 @@ impl Page {
         );
     }
 
+    /// Markup written by the caller (images, inline figures), as is.
+    pub fn raw(&mut self, markup: &str) {
+        let _ = writeln!(self.body, "<div>{markup}</div>");
+    }
+
     /// The finished document.
     pub fn finish(self) -> String {
         format!(

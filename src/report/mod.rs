@@ -6,13 +6,14 @@
 //! One module per result type, each with one renderer per [`Format`] it writes and
 //! the list of those formats (`FORMATS`, checked by [`format::parse`]):
 //! [`eval`], [`optimize`], [`materials`], [`pareto`], [`sweep`], [`accuracy`],
-//! [`calibrate`] (fit-adhesion), [`humidity`], [`roughness`], [`curve`], [`figures`]. Shared
+//! [`calibrate`] (fit-adhesion), [`humidity`], [`roughness`], [`contact`], [`curve`], [`figures`]. Shared
 //! pieces: [`crate::units`] (SI prefixes and the numbers' text), [`words`] (the library's
 //! warnings and notes in words), [`svg`] (line plots and bar charts).
 
 pub mod accuracy;
 pub mod asperity;
 pub mod calibrate;
+pub mod contact;
 pub mod curve;
 pub mod eval;
 pub mod figures;
@@ -22,6 +23,7 @@ pub mod humidity;
 pub mod materials;
 pub mod optimize;
 pub mod pareto;
+pub(crate) mod png;
 pub mod roughness;
 pub mod svg;
 pub mod sweep;

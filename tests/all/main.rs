@@ -10,6 +10,7 @@ mod asperity;
 mod calibrate;
 mod capillary;
 mod cli;
+mod contact;
 mod dmt;
 mod dmt_reference;
 mod dmt_studies;

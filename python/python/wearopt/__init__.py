@@ -44,6 +44,7 @@ __all__ = [
     "humidity",
     "asperity",
     "roughness",
+    "contact",
     "curve",
     "sweep",
     "merge",
@@ -230,6 +231,70 @@ def roughness(
             height_unit,
         )
     )
+
+
+def contact(
+    heights: Any,
+    pixel_size: Any = None,
+    modulus: Any = None,
+    pressures: Any = None,
+    hardness: Any = None,
+    level: str = "plane",
+    height_unit: Any = None,
+    tolerance: float = 1e-10,
+    fields: bool = False,
+) -> Dict[str, Any]:
+    """The exact contact of a height map against an elastic half-space of
+    composite modulus E* at each mean pressure (periodic FFT boundary
+    elements), beside the statistical model's real area on the same map: the
+    JSON of ``wearopt contact SCAN --modulus E --pressure P1,… [--hardness H]
+    --format json``. Pressures and moduli are strings with units ("150 GPa")
+    or numbers in pascals; ``pressures`` is one or a list.
+
+    ``heights`` is a 2-D array (rows along y) in metres, or in
+    ``height_unit``, with square pixels of ``pixel_size``; or a path to a scan
+    (.gsf, .x3p, .npy, ASCII), whose pixel size and unit it carries. With
+    ``fields=True`` each point also holds ``pressure_field`` (Pa) and
+    ``gap_field`` (m), arrays shaped like the map.
+
+    >>> import numpy as np
+    >>> z = np.load("problems/scans/self-affine-nm.npy")
+    >>> c = wearopt.contact(z, pixel_size="20 nm", height_unit="nm",
+    ...                     modulus="150 GPa", pressures=["50 MPa", "200 MPa"])
+    >>> [round(p["real_area_fraction"], 3) for p in c["points"]]
+    [0.017, 0.063]
+    >>> c["points"][0]["area_ratio"] < 1   # the statistical model's area is low
+    True
+    """
+    if modulus is None or pressures is None:
+        raise TypeError("contact() needs modulus= (E*, e.g. \"150 GPa\") and pressures= (one or a list)")
+    if height_unit is not None and not isinstance(height_unit, str):
+        height_unit = repr(float(height_unit))
+    if isinstance(pressures, (str, int, float)) and not isinstance(pressures, bool):
+        pressures = [pressures]
+    pressure_list = [_quantity("a pressure", p, "pascals") for p in pressures]
+    e_star = _quantity("modulus", modulus, "pascals")
+    cap = _quantity("hardness", hardness, "pascals")
+    if isinstance(heights, (str, os.PathLike)):
+        text, p_fields, g_fields = _wearopt.contact_json(
+            os.fspath(heights), e_star, pressure_list, cap, level,
+            _length(pixel_size), height_unit, float(tolerance), bool(fields),
+        )
+    else:
+        z = _float_array("heights", heights)
+        if z.ndim != 2:
+            raise ValueError(f"heights: a 2-D array (rows along y) is needed, not {z.ndim}-D")
+        if pixel_size is None:
+            raise ValueError('pixel_size=None: heights in an array carry no pixel size; give one, e.g. "10 nm"')
+        text, p_fields, g_fields = _wearopt.contact_array(
+            np.ascontiguousarray(z, dtype=np.float64), _length(pixel_size), e_star,
+            pressure_list, cap, level, height_unit, float(tolerance), bool(fields),
+        )
+    doc = json.loads(text)
+    for point, p, g in zip(doc["points"], p_fields, g_fields):
+        point["pressure_field"] = p
+        point["gap_field"] = g
+    return doc
 
 
 def _float_array(name: str, value: Any) -> np.ndarray:

@@ -1,7 +1,7 @@
 """Type stubs of the `wearopt` package (see the docstrings in __init__.py)."""
 
 import os
-from typing import Any, Dict, Iterable, Optional, Tuple, Union
+from typing import Any, Dict, Iterable, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -39,6 +39,25 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
 
     >>> len(wearopt.pareto("problems/micro-gear.toml", points=5)["points"])
     5
+    """
+
+def contact(
+    heights: Union[str, os.PathLike[str], ArrayLike],
+    pixel_size: Union[str, float, None] = None,
+    modulus: Union[str, float, None] = None,
+    pressures: Union[str, float, Sequence[Union[str, float]], None] = None,
+    hardness: Union[str, float, None] = None,
+    level: str = "plane",
+    height_unit: Union[str, float, None] = None,
+    tolerance: float = 1e-10,
+    fields: bool = False,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt contact SCAN … --format json` as a dict (fields as
+    arrays with `fields=True`).
+
+    >>> wearopt.contact("problems/scans/self-affine.gsf", modulus="150 GPa",
+    ...                 pressures="100 MPa")["points"][0]["status"]
+    'converged'
     """
 
 def roughness(

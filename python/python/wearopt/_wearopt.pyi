@@ -1,6 +1,6 @@
 """The compiled half of `wearopt` (private: use the functions of `wearopt`)."""
 
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -42,6 +42,28 @@ def roughness_array_json(
     level: str = "plane",
     height_unit: Optional[str] = None,
 ) -> str: ...
+def contact_json(
+    path: str,
+    modulus: str,
+    pressures: List[str],
+    hardness: Optional[str] = None,
+    level: str = "plane",
+    pixel_size: Optional[str] = None,
+    height_unit: Optional[str] = None,
+    tolerance: float = 1e-10,
+    fields: bool = False,
+) -> Tuple[str, List[np.ndarray], List[np.ndarray]]: ...
+def contact_array(
+    heights: np.ndarray,
+    pixel_size: str,
+    modulus: str,
+    pressures: List[str],
+    hardness: Optional[str] = None,
+    level: str = "plane",
+    height_unit: Optional[str] = None,
+    tolerance: float = 1e-10,
+    fields: bool = False,
+) -> Tuple[str, List[np.ndarray], List[np.ndarray]]: ...
 def fit_adhesion_json(
     path: str,
     radius: str,

@@ -1,0 +1,115 @@
+//! `wearopt contact`: a height map in, its exact contact at each mean pressure out,
+//! beside the statistical model's.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::Result;
+use clap::Args;
+
+use wearopt::app::contact::{self as ct, ContactOptions};
+use wearopt::app::roughness as rough;
+use wearopt::app::OptionName;
+use wearopt::report::{self, Format};
+use wearopt::units::Dimension;
+
+use super::format::formats;
+use super::roughness::LevelArg;
+use super::write_output;
+
+#[derive(Debug, Args)]
+pub(crate) struct ContactArgs {
+    /// The height map: .gsf, .x3p, .npy (shape (ny, nx)) or an ASCII matrix; taken as one
+    /// period of a periodic surface, complete (no missing points), at least 8 × 8.
+    scan: PathBuf,
+    /// Pixel size (both directions), e.g. "20 nm"; required for .npy and a bare ASCII
+    /// matrix, overrides the file's otherwise.
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pixel_size: Option<String>,
+    /// The unit of the stored heights, e.g. "nm" or "1e-9"; required for .npy and a bare
+    /// ASCII matrix, overrides the file's otherwise.
+    #[arg(long, value_name = "UNIT")]
+    height_unit: Option<String>,
+    /// The composite modulus E* of the pair, 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2, e.g. "150 GPa".
+    #[arg(long, value_name = "E_STAR", allow_hyphen_values = true)]
+    modulus: String,
+    /// The mean (nominal) pressure, or several comma-separated, e.g. "50 MPa,100 MPa,200 MPa".
+    #[arg(long, value_name = "P1[,P2,…]", allow_hyphen_values = true)]
+    pressure: String,
+    /// Cap every pixel's pressure at the hardness H (elastic–perfectly plastic), e.g. "10 GPa".
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
+    hardness: Option<String>,
+    /// Form removal before the solve.
+    #[arg(long, value_enum, default_value_t = LevelArg::Plane)]
+    level: LevelArg,
+    /// The residual at which each solve stops (see docs/contact.md).
+    #[arg(long, value_name = "TOL", default_value_t = ct::DEFAULT_TOLERANCE, allow_hyphen_values = true)]
+    tolerance: f64,
+    /// Output format.
+    #[arg(long, value_parser = formats("contact", report::contact::FORMATS), default_value = "text")]
+    format: Format,
+    /// Write the plot of real area against pressure, both models, as SVG ("-": stdout).
+    #[arg(long, value_name = "AREA.svg")]
+    plot: Option<PathBuf>,
+    /// Write each pressure's pressure and gap fields as .npy into this folder
+    /// (pressure_1.npy, gap_1.npy, … in the order of --pressure; Pa and m, shape (ny, nx)).
+    #[arg(long, value_name = "DIR")]
+    fields: Option<PathBuf>,
+}
+
+pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
+    let pixel_size = args
+        .pixel_size
+        .as_deref()
+        .map(|t| rough::length(OptionName("pixel_size"), t))
+        .transpose()?;
+    let height_unit = args
+        .height_unit
+        .as_deref()
+        .map(|t| rough::height_unit(OptionName("height_unit"), t))
+        .transpose()?;
+    let modulus = ct::positive(OptionName("modulus"), &args.modulus, Dimension::Pressure)?;
+    let pressures = ct::pressures(OptionName("pressure"), &args.pressure)?;
+    let hardness = args
+        .hardness
+        .as_deref()
+        .map(|t| ct::positive(OptionName("hardness"), t, Dimension::Pressure))
+        .transpose()?;
+    if let Some(dir) = &args.fields {
+        if !dir.is_dir() {
+            return Err(super::usage(format!(
+                "--fields {}: not a folder (create it first)",
+                dir.display()
+            )));
+        }
+    }
+    let options = ContactOptions {
+        modulus,
+        pressures,
+        hardness,
+        level: args.level.into(),
+        pixel_size,
+        height_unit,
+        tolerance: args.tolerance,
+        fields: args.fields.is_some() || args.format == Format::Html,
+    };
+    let doc = ct::contact(&args.scan, &options)?;
+    if let Some(path) = &args.plot {
+        write_output(path, &report::contact::area_plot(&doc), "the area plot")?;
+    }
+    if let Some(dir) = &args.fields {
+        let [nx, ny] = doc.pixels;
+        for (i, pt) in doc.points.iter().enumerate() {
+            for (name, field) in [
+                ("pressure", &pt.solution.pressures),
+                ("gap", &pt.solution.gaps),
+            ] {
+                let path = dir.join(format!("{name}_{}.npy", i + 1));
+                std::fs::write(&path, report::contact::npy(nx, ny, field))
+                    .map_err(|e| super::unwritable(&path, "a field", &e))?;
+            }
+        }
+    }
+    super::print_out(&report::contact::render(&doc, args.format)?)?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,580 @@
+//! The report of `wearopt contact`: the boundary-element contact of a scan beside
+//! the statistical model's, as text, CSV, JSON and an HTML page; the plot of real
+//! area against pressure; the pressure and gap fields as `.npy`.
+
+use serde_json::{json, Value};
+
+use super::format::FormatError;
+use super::svg::{Axis, LinePlot, Marker, Series};
+use super::{number, sig, sig_exp, Format};
+use crate::app::contact::{ContactDocument, ContactPoint, Outcome};
+use crate::units::{format_quantity, Dimension};
+
+/// The formats `wearopt contact` writes (the first is the default).
+pub const FORMATS: &[Format] = &[Format::Text, Format::Csv, Format::Json, Format::Html];
+
+/// The CSV columns, in order.
+pub const COLUMNS: [&str; 14] = [
+    "pressure",
+    "real_area_fraction",
+    "plastic_area_fraction",
+    "contact_patches",
+    "mean_gap",
+    "max_pressure",
+    "residual",
+    "iterations",
+    "status",
+    "gw_real_area_fraction",
+    "gw_plastic_area_fraction",
+    "gw_contact_count",
+    "gw_status",
+    "area_ratio",
+];
+
+/// The status word of a solve.
+pub fn status_word(outcome: Outcome) -> &'static str {
+    match outcome {
+        Outcome::Converged => "converged",
+        Outcome::IterationLimit => "iteration_limit",
+    }
+}
+
+/// The document in `format` (every format there is; the `Result` keeps the
+/// signature of the other reports').
+pub fn render(doc: &ContactDocument, format: Format) -> Result<String, FormatError> {
+    Ok(match format {
+        Format::Text => text(doc),
+        Format::Csv => csv(doc),
+        Format::Json => super::json_text(&json_document(doc)),
+        Format::Html => html(doc),
+    })
+}
+
+fn cell(x: Option<f64>) -> String {
+    x.map(number).unwrap_or_default()
+}
+
+/// CSV, one row per pressure in the order given; empty cells where the
+/// statistical model has no answer.
+pub fn csv(doc: &ContactDocument) -> String {
+    let mut out = COLUMNS.join(",");
+    out.push('\n');
+    for pt in &doc.points {
+        let s = &pt.solution;
+        let gw = pt.statistical;
+        let cells = [
+            number(s.pressure),
+            number(s.real_area_fraction),
+            number(s.plastic_area_fraction),
+            s.contact_patches.to_string(),
+            number(s.mean_gap),
+            number(s.max_pressure),
+            number(s.residual),
+            s.iterations.to_string(),
+            status_word(s.outcome).to_string(),
+            cell(gw.map(|g| g.real_area_fraction)),
+            cell(gw.map(|g| g.plastic_area_fraction)),
+            cell(gw.map(|g| g.contact_count)),
+            gw.map(|g| g.status.as_str().to_string())
+                .unwrap_or_default(),
+            cell(pt.area_ratio()),
+        ];
+        out.push_str(&cells.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// The JSON document as a value (what Python reads).
+pub fn json_document(doc: &ContactDocument) -> Value {
+    let o = &doc.options;
+    let statistical_inputs = match &doc.roughness {
+        Ok(r) => json!({
+            "summit_sigma": r.parameters.summit_sigma,
+            "summit_radius": r.parameters.summit_radius,
+            "summit_density": r.parameters.summit_density,
+            "bandwidth": r.parameters.bandwidth,
+        }),
+        Err(_) => Value::Null,
+    };
+    let points: Vec<Value> = doc
+        .points
+        .iter()
+        .map(|pt| {
+            let s = &pt.solution;
+            let gw = pt.statistical;
+            json!({
+                "pressure": s.pressure,
+                "real_area_fraction": s.real_area_fraction,
+                "plastic_area_fraction": s.plastic_area_fraction,
+                "contact_patches": s.contact_patches,
+                "mean_gap": s.mean_gap,
+                "max_pressure": s.max_pressure,
+                "residual": s.residual,
+                "iterations": s.iterations,
+                "status": status_word(s.outcome),
+                "gw_real_area_fraction": gw.map(|g| g.real_area_fraction),
+                "gw_plastic_area_fraction": gw.map(|g| g.plastic_area_fraction),
+                "gw_contact_count": gw.map(|g| g.contact_count),
+                "gw_status": gw.map(|g| g.status.as_str()),
+                "area_ratio": pt.area_ratio(),
+            })
+        })
+        .collect();
+    json!({
+        "file": doc.file,
+        "format": doc.format.name(),
+        "pixels": doc.pixels,
+        "pixel_size": doc.pixel_size,
+        "level": o.level.as_str(),
+        "rms_height": doc.rms_height,
+        "modulus": o.modulus,
+        "hardness": o.hardness,
+        "tolerance": o.tolerance,
+        "statistical_inputs": statistical_inputs,
+        "statistical_error": doc.roughness.as_ref().err(),
+        "points": points,
+    })
+}
+
+/// The statistical model against the exact one over all pressures, in words.
+pub fn comparison_words(doc: &ContactDocument) -> Option<String> {
+    let ratios: Vec<f64> = doc
+        .points
+        .iter()
+        .filter_map(ContactPoint::area_ratio)
+        .collect();
+    if ratios.is_empty() {
+        return None;
+    }
+    let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = ratios.iter().copied().fold(0.0, f64::max);
+    let range = if ratios.len() == 1 || sig(lo, 2) == sig(hi, 2) {
+        format!("{}×", sig(lo, 2))
+    } else {
+        format!("{}–{}×", sig(lo, 2), sig(hi, 2))
+    };
+    let verdict = if hi < 0.95 {
+        "the statistical model under-predicts the real area, and so Archard wear (proportional to it), by that factor"
+    } else if lo > 1.05 {
+        "the statistical model over-predicts the real area, and so Archard wear, by that factor"
+    } else {
+        "the two agree within 5 %"
+    };
+    Some(format!(
+        "On this map the statistical (Greenwood–Williamson) real area is {range} the exact one: {verdict}."
+    ))
+}
+
+fn pressure(x: f64) -> String {
+    format_quantity(x, Dimension::Pressure)
+}
+
+fn length(x: f64) -> String {
+    format_quantity(x, Dimension::Length)
+}
+
+fn percent(x: f64) -> String {
+    format!("{} %", sig(100.0 * x, 3))
+}
+
+/// The header lines: the map, the pair, the method.
+fn header(doc: &ContactDocument) -> Vec<String> {
+    let o = &doc.options;
+    let [nx, ny] = doc.pixels;
+    let [dx, dy] = doc.pixel_size;
+    let pixel = if dx == dy {
+        length(dx)
+    } else {
+        format!("{} × {}", length(dx), length(dy))
+    };
+    let mut lines = vec![
+        format!(
+            "Map: {} ({}), {nx} × {ny} points, pixel {pixel}, {} levelled, rms height {}; taken as one period of a periodic surface.",
+            doc.file,
+            doc.format.name(),
+            o.level.as_str(),
+            length(doc.rms_height)
+        ),
+        format!(
+            "Pair: composite modulus E* = {}, {}.",
+            pressure(o.modulus),
+            match o.hardness {
+                Some(h) => format!("hardness H = {} (pixels capped at H: elastic–perfectly plastic)", pressure(h)),
+                None => "no hardness cap (purely elastic)".to_string(),
+            }
+        ),
+        format!(
+            "Exact: periodic FFT boundary elements (Westergaard kernel), Polonsky–Keer conjugate gradient, residual tolerance {}.",
+            sig_exp(o.tolerance, 2)
+        ),
+    ];
+    match &doc.roughness {
+        Ok(r) => {
+            let p = r.parameters;
+            lines.push(format!(
+                "Statistical: Greenwood–Williamson with McCool's summit σ = {}, R = {}, density {}, no adhesion{}.",
+                length(p.summit_sigma),
+                length(p.summit_radius),
+                format_quantity(p.summit_density, Dimension::InverseArea),
+                if o.hardness.is_some() { ", the same H" } else { "" }
+            ));
+        }
+        Err(e) => lines.push(format!(
+            "Statistical: no McCool parameters for this map ({e}); only the exact answer."
+        )),
+    }
+    lines
+}
+
+/// The text report.
+pub fn text(doc: &ContactDocument) -> String {
+    let mut out = header(doc).join("\n");
+    out.push_str("\n\n");
+    let head = [
+        "mean pressure",
+        "real area",
+        "plastic",
+        "patches",
+        "mean gap",
+        "max pressure",
+        "iterations",
+        "residual",
+        "GW area",
+        "GW contacts",
+        "GW/exact",
+    ];
+    let rows: Vec<Vec<String>> = doc
+        .points
+        .iter()
+        .map(|pt| {
+            let s = &pt.solution;
+            let gw = pt.statistical;
+            vec![
+                pressure(s.pressure),
+                percent(s.real_area_fraction),
+                percent(s.plastic_area_fraction),
+                s.contact_patches.to_string(),
+                length(s.mean_gap),
+                pressure(s.max_pressure),
+                s.iterations.to_string(),
+                sig_exp(s.residual, 2),
+                gw.map_or("-".into(), |g| percent(g.real_area_fraction)),
+                gw.map_or("-".into(), |g| sig(g.contact_count, 3)),
+                pt.area_ratio().map_or("-".into(), |r| sig(r, 3)),
+            ]
+        })
+        .collect();
+    out.push_str(&aligned(&head, &rows));
+    let mut notes = Vec::new();
+    for pt in &doc.points {
+        let s = &pt.solution;
+        if s.outcome == Outcome::IterationLimit {
+            notes.push(format!(
+                "WARNING: at {} the solve stopped at its iteration limit ({} iterations) with residual {} above the tolerance {}: that row is the last iterate, not a solution",
+                pressure(s.pressure),
+                s.iterations,
+                sig_exp(s.residual, 2),
+                sig_exp(doc.options.tolerance, 2)
+            ));
+        }
+        if s.real_area_fraction > 0.3 {
+            notes.push(format!(
+                "note: at {} the contact covers {} of the map: far beyond the statistical model's reach (separate asperities, a few per cent of contact)",
+                pressure(s.pressure),
+                percent(s.real_area_fraction)
+            ));
+        }
+    }
+    let small = doc.points.iter().any(|pt| {
+        let s = &pt.solution;
+        s.real_area_fraction > 0.0
+            && (s.real_area_fraction * (doc.pixels[0] * doc.pixels[1]) as f64)
+                < 20.0 * s.contact_patches as f64
+    });
+    if small {
+        notes.push(
+            "note: the contact patches are a few pixels each (fewer than 20 on average): the real area is resolution-limited; a finer scan of the same region gives a smaller, truer area"
+                .to_string(),
+        );
+    }
+    if let Some(w) = comparison_words(doc) {
+        out.push('\n');
+        out.push_str(&w);
+        out.push('\n');
+    }
+    if !notes.is_empty() {
+        out.push('\n');
+        out.push_str(&notes.join("\n"));
+        out.push('\n');
+    }
+    out
+}
+
+/// Columns padded to their widest cell, the first left-aligned.
+fn aligned(head: &[&str], rows: &[Vec<String>]) -> String {
+    let width = |s: &str| s.chars().count();
+    let mut widths: Vec<usize> = head.iter().map(|h| width(h)).collect();
+    for r in rows {
+        for (w, c) in widths.iter_mut().zip(r) {
+            *w = (*w).max(width(c));
+        }
+    }
+    let line = |cells: Vec<&str>| {
+        let mut s = String::new();
+        for (i, (c, w)) in cells.iter().zip(&widths).enumerate() {
+            let pad = " ".repeat(w - width(c));
+            if i == 0 {
+                s.push_str(c);
+                s.push_str(&pad);
+            } else {
+                s.push_str("  ");
+                s.push_str(&pad);
+                s.push_str(c);
+            }
+        }
+        s.trim_end().to_string() + "\n"
+    };
+    let mut out = line(head.to_vec());
+    for r in rows {
+        out.push_str(&line(r.iter().map(String::as_str).collect()));
+    }
+    out
+}
+
+/// The real-area fraction against the mean pressure, both models.
+pub fn area_plot(doc: &ContactDocument) -> String {
+    let exact: Vec<(f64, f64)> = sorted(
+        doc.points
+            .iter()
+            .map(|pt| (pt.solution.pressure, pt.solution.real_area_fraction))
+            .collect(),
+    );
+    let gw: Vec<(f64, f64)> = sorted(
+        doc.points
+            .iter()
+            .filter_map(|pt| {
+                pt.statistical
+                    .map(|g| (pt.solution.pressure, g.real_area_fraction))
+            })
+            .filter(|p| p.1 > 0.0)
+            .collect(),
+    );
+    let mut plot = LinePlot::new(
+        format!("Real area against pressure — {}", doc.file),
+        Axis::log("mean pressure p̄").with_unit("Pa"),
+        Axis::log("real area / nominal area"),
+    )
+    .with_series(Series::new("exact (FFT boundary elements)", exact).with_marker(Marker::Circle));
+    if !gw.is_empty() {
+        plot = plot.with_series(
+            Series::new("statistical (Greenwood–Williamson, McCool)", gw)
+                .with_marker(Marker::Square)
+                .with_color("#d55e00"),
+        );
+    }
+    plot.to_svg()
+}
+
+fn sorted(mut v: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    v
+}
+
+/// The largest side of an image on the HTML page (larger maps are averaged
+/// over blocks of pixels).
+const IMAGE_SIDE: usize = 256;
+
+/// Block size and image size for a map of `nx` × `ny`.
+fn blocks(nx: usize, ny: usize) -> (usize, usize, usize) {
+    let b = nx.max(ny).div_ceil(IMAGE_SIDE).max(1);
+    (b, nx.div_ceil(b), ny.div_ceil(b))
+}
+
+/// The levelled map as a grey image (black low, white high), block-averaged.
+fn map_image(doc: &ContactDocument) -> Vec<u8> {
+    let [nx, ny] = doc.pixels;
+    let (b, w, h) = blocks(nx, ny);
+    let mean = block_mean(&doc.heights, nx, ny, b);
+    let lo = mean.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = mean.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let mut rgb = Vec::with_capacity(3 * w * h);
+    for v in mean {
+        let g = (255.0 * (v - lo) / span).round() as u8;
+        rgb.extend_from_slice(&[g, g, g]);
+    }
+    super::png::rgb_png(w, h, &rgb)
+}
+
+/// The contact at one pressure: the map in pale grey, the contacting share of
+/// each block in blue (red where saturated at H).
+fn contact_image(doc: &ContactDocument, pressures: &[f64]) -> Vec<u8> {
+    let [nx, ny] = doc.pixels;
+    let (b, w, h) = blocks(nx, ny);
+    let heights = block_mean(&doc.heights, nx, ny, b);
+    let lo = heights.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    let cap = doc.options.hardness.unwrap_or(f64::INFINITY);
+    let touching: Vec<f64> = pressures
+        .iter()
+        .map(|&p| if p > 0.0 { 1.0 } else { 0.0 })
+        .collect();
+    let saturated: Vec<f64> = pressures
+        .iter()
+        .map(|&p| if p >= cap { 1.0 } else { 0.0 })
+        .collect();
+    let contact = block_mean(&touching, nx, ny, b);
+    let plastic = block_mean(&saturated, nx, ny, b);
+    let mut rgb = Vec::with_capacity(3 * w * h);
+    for i in 0..w * h {
+        let grey = 200.0 + 55.0 * (heights[i] - lo) / span;
+        let mix = |base: f64, ink: f64, share: f64| (base + (ink - base) * share).round() as u8;
+        let (c, p) = (contact[i], plastic[i]);
+        let ink = if p > 0.0 {
+            [200.0, 30.0, 30.0]
+        } else {
+            [0.0, 90.0, 200.0]
+        };
+        rgb.extend_from_slice(&[
+            mix(grey, ink[0], c),
+            mix(grey, ink[1], c),
+            mix(grey, ink[2], c),
+        ]);
+    }
+    super::png::rgb_png(w, h, &rgb)
+}
+
+/// The mean of `field` over `b` × `b` blocks (the last ones partial).
+fn block_mean(field: &[f64], nx: usize, ny: usize, b: usize) -> Vec<f64> {
+    let (w, h) = (nx.div_ceil(b), ny.div_ceil(b));
+    let mut sum = vec![0.0; w * h];
+    let mut count = vec![0usize; w * h];
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = (j / b) * w + i / b;
+            sum[k] += field[j * nx + i];
+            count[k] += 1;
+        }
+    }
+    sum.iter()
+        .zip(&count)
+        .map(|(s, &c)| s / c.max(1) as f64)
+        .collect()
+}
+
+fn image_tag(png: &[u8], alt: &str, side: usize) -> String {
+    format!(
+        "<img alt=\"{}\" width=\"{side}\" style=\"image-rendering:pixelated;border:1px solid #ccc\" src=\"data:image/png;base64,{}\"/>",
+        super::svg::escape(alt),
+        super::png::base64(png)
+    )
+}
+
+/// One self-contained HTML page: the map, its contact at each pressure, the
+/// comparison table and plot.
+pub fn html(doc: &ContactDocument) -> String {
+    let mut p = super::html::Page::new(&format!("wearopt contact — {}", doc.file));
+    for l in header(doc) {
+        p.paragraph(&l, None);
+    }
+    if let Some(w) = comparison_words(doc) {
+        p.paragraph(&w, Some("status"));
+    }
+    p.heading("Real area, both ways");
+    let rows: Vec<Vec<String>> = doc
+        .points
+        .iter()
+        .map(|pt| {
+            let s = &pt.solution;
+            let gw = pt.statistical;
+            vec![
+                pressure(s.pressure),
+                percent(s.real_area_fraction),
+                percent(s.plastic_area_fraction),
+                s.contact_patches.to_string(),
+                length(s.mean_gap),
+                pressure(s.max_pressure),
+                format!("{} ({} it.)", status_word(s.outcome), s.iterations),
+                sig_exp(s.residual, 2),
+                gw.map_or("-".into(), |g| percent(g.real_area_fraction)),
+                gw.map_or("-".into(), |g| sig(g.contact_count, 3)),
+                pt.area_ratio().map_or("-".into(), |r| sig(r, 3)),
+            ]
+        })
+        .collect();
+    p.table(
+        &[
+            "mean pressure",
+            "real area",
+            "plastic",
+            "patches",
+            "mean gap",
+            "max pressure",
+            "status",
+            "residual",
+            "GW real area",
+            "GW contacts",
+            "GW / exact",
+        ],
+        &rows,
+        &[6],
+    );
+    p.figure(
+        "area",
+        &area_plot(doc),
+        "Real-area fraction against mean pressure: the exact boundary-element solution (circles) and the statistical model with McCool's parameters of the same map (squares).",
+    );
+    p.heading("The map and its contact");
+    let [nx, ny] = doc.pixels;
+    let (b, w, _) = blocks(nx, ny);
+    let side = (2 * w).min(360);
+    let averaged = if b > 1 {
+        format!(" (averaged over {b} × {b} pixel blocks)")
+    } else {
+        String::new()
+    };
+    let mut images = vec![format!(
+        "<figure style=\"width:{side}px;margin:0\">{}<figcaption>levelled map, black low to white high, {} to {}{averaged}</figcaption></figure>",
+        image_tag(&map_image(doc), "height map", side),
+        length(doc.heights.iter().copied().fold(f64::INFINITY, f64::min)),
+        length(doc.heights.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
+    )];
+    for pt in &doc.points {
+        let s = &pt.solution;
+        if s.pressures.is_empty() {
+            continue;
+        }
+        images.push(format!(
+            "<figure style=\"width:{side}px;margin:0\">{}<figcaption>at {}: {} in contact (blue{}), {} patches</figcaption></figure>",
+            image_tag(&contact_image(doc, &s.pressures), "contact", side),
+            pressure(s.pressure),
+            percent(s.real_area_fraction),
+            if s.plastic_area_fraction > 0.0 { "; red at H" } else { "" },
+            s.contact_patches
+        ));
+    }
+    p.raw(&format!(
+        "<div style=\"display:flex;flex-wrap:wrap;gap:1em\">\n{}\n</div>",
+        images.join("\n")
+    ));
+    p.finish()
+}
+
+/// A field as a NumPy `.npy` file: little-endian f64, C order, shape (ny, nx).
+pub fn npy(nx: usize, ny: usize, field: &[f64]) -> Vec<u8> {
+    let mut header = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': ({ny}, {nx}), }}");
+    // Magic (6) + version (2) + length (2) + header + newline, padded to 64.
+    let total = 10 + header.len() + 1;
+    header.push_str(&" ".repeat((64 - total % 64) % 64));
+    header.push('\n');
+    let mut out = Vec::with_capacity(10 + header.len() + 8 * field.len());
+    out.extend_from_slice(b"\x93NUMPY\x01\x00");
+    out.extend_from_slice(&(header.len() as u16).to_le_bytes());
+    out.extend_from_slice(header.as_bytes());
+    for x in field {
+        out.extend_from_slice(&x.to_le_bytes());
+    }
+    out
+}
