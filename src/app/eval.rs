@@ -35,6 +35,9 @@ pub struct EvalDocument {
     pub sensitivities: Vec<Sensitivity>,
     /// The load–separation curve, when asked for.
     pub load_curve: Option<LoadCurve>,
+    /// For a scene built on a scan: the exact contact on that scan at the
+    /// operating point, or why there is none.
+    pub scan_contact: Option<Result<super::contact::ScanContact, String>>,
 }
 
 impl EvalDocument {
@@ -61,7 +64,11 @@ pub fn eval(
     let load_curve = options
         .load_curve_points
         .map(|n| model::load_curve(&problem.scene, &evaluation, &evaluation_options, n));
+    let scan_contact = problem.scan.as_ref().map(|scan| {
+        super::contact::scan_contact(scan, &problem.scene, evaluation.equivalent_modulus)
+    });
     Ok(EvalDocument {
+        scan_contact,
         name: problem.name.clone(),
         scene: problem.scene.clone(),
         input_notes: problem.notes.clone(),

@@ -34,6 +34,10 @@ pub struct ScanSource {
     pub format: Format,
     /// The whole analysis (moments, parameters, summit count, warnings).
     pub roughness: Roughness,
+    /// The pixel size and height unit the problem file gave (to read the map
+    /// again as it was read).
+    #[serde(skip)]
+    pub overrides: Overrides,
 }
 
 /// The optional keys that only make sense with `topography`.
@@ -137,6 +141,7 @@ impl Reader<'_> {
             path: path.display().to_string(),
             format: Format::from_path(&path).unwrap_or(Format::Ascii),
             roughness,
+            overrides,
         };
         Ok(Some((
             p.summit_sigma,

@@ -50,6 +50,7 @@ pub fn view(doc: &EvalDocument) -> EvalReport<'_> {
         evaluation: &doc.evaluation,
         sensitivities: &doc.sensitivities,
         scan: doc.scan.as_ref(),
+        scan_contact: doc.scan_contact.as_ref(),
     }
 }
 
@@ -67,6 +68,8 @@ pub struct EvalReport<'a> {
     pub sensitivities: &'a [Sensitivity],
     /// The measured scan σ, R and N came from, if any.
     pub scan: Option<&'a crate::problem::ScanSource>,
+    /// The exact contact on that scan at the operating point, or why there is none.
+    pub scan_contact: Option<&'a Result<crate::app::contact::ScanContact, String>>,
 }
 
 fn opt(x: Option<f64>) -> Value {
@@ -116,6 +119,34 @@ pub fn json_value(r: &EvalReport) -> Value {
             "roughness_source".into(),
             r.scan.map_or(Value::Null, super::roughness::scan_json),
         );
+        if let Some(c) = r.scan_contact {
+            let (bem, ratio, detail) = match c {
+                Ok(c) => (
+                    json!(c.solution.real_area_fraction),
+                    opt(c.area_ratio()),
+                    json!({
+                        "pressure": c.pressure,
+                        "modulus": c.modulus,
+                        "hardness": if c.hardness.is_finite() { json!(c.hardness) } else { Value::Null },
+                        "pixels": c.pixels,
+                        "real_area_fraction": c.solution.real_area_fraction,
+                        "plastic_area_fraction": c.solution.plastic_area_fraction,
+                        "contact_patches": c.solution.contact_patches,
+                        "mean_gap": c.solution.mean_gap,
+                        "max_pressure": c.solution.max_pressure,
+                        "residual": c.solution.residual,
+                        "iterations": c.solution.iterations,
+                        "status": super::contact::status_word(c.solution.outcome),
+                        "gw_real_area_fraction": c.statistical.real_area_fraction,
+                        "gw_contact_count": c.statistical.contact_count,
+                    }),
+                ),
+                Err(reason) => (Value::Null, Value::Null, json!({ "error": reason })),
+            };
+            obj.insert("bem_real_area_fraction".into(), bem);
+            obj.insert("area_ratio".into(), ratio);
+            obj.insert("scan_contact".into(), detail);
+        }
         let mut sens = Map::new();
         for s in r.sensitivities {
             sens.insert(
@@ -399,6 +430,14 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     ];
     p.table(&["input", "value"], &rows, &[]);
     p.list(&super::words::input_notes(r.input_notes), "note");
+    if let Some(c) = r.scan_contact {
+        p.heading("The real area on the scan itself");
+        let lines: Vec<String> = scan_contact_lines(c)
+            .into_iter()
+            .map(|l| l.trim().to_string())
+            .collect();
+        p.list(&lines, "note");
+    }
     p.heading("Indices and regime");
     let i = &ev.indices;
     p.table(
@@ -719,6 +758,11 @@ pub fn text(r: &EvalReport) -> String {
         si(ev.plastic_real_area, "m²", 4),
         sig_exp(ev.plastic_area_fraction, 3)
     ));
+    if let Some(c) = r.scan_contact {
+        for l in scan_contact_lines(c) {
+            line(l);
+        }
+    }
     line(format!(
         "  contacts: {} in all, {} plastic",
         sig_exp(ev.contact_count, 4),
@@ -942,6 +986,59 @@ pub fn text(r: &EvalReport) -> String {
 /// Why a sensitivity has no value, in words ("" when it has one).
 fn gap(s: &crate::model::Sensitivity) -> &'static str {
     s.note.map_or("", super::words::sensitivity_gap)
+}
+
+/// The exact contact on the scene's scan in words: the like-for-like comparison
+/// (both without adhesion) and what it means for this report's real area and wear.
+pub(crate) fn scan_contact_lines(
+    c: &Result<crate::app::contact::ScanContact, String>,
+) -> Vec<String> {
+    let c = match c {
+        Ok(c) => c,
+        Err(reason) => {
+            return vec![format!(
+                "  on the scan itself: no exact contact solved ({reason})"
+            )]
+        }
+    };
+    let s = &c.solution;
+    let mut out = vec![format!(
+        "  on the scan itself (exact contact, FFT boundary elements on its {} × {} map at the nominal pressure {}, no adhesion): real area {} of nominal in {} patches; the statistical model on the same terms gives {}",
+        c.pixels[0],
+        c.pixels[1],
+        si(c.pressure, "Pa", 3),
+        sig_exp(s.real_area_fraction, 3),
+        s.contact_patches,
+        sig_exp(c.statistical.real_area_fraction, 3)
+    )];
+    if s.outcome != crate::contact::Outcome::Converged {
+        out.push(format!(
+            "  WARNING: the exact contact stopped at its iteration limit (residual {}): its area is the last iterate's",
+            sig_exp(s.residual, 2)
+        ));
+    }
+    if let Some(ratio) = c.area_ratio() {
+        let words = if ratio < 0.95 {
+            "the statistical model's real area, and so this report's wear, is low by that factor"
+        } else if ratio > 1.05 {
+            "the statistical model's real area, and so this report's wear, is high by that factor"
+        } else {
+            "the two agree within 5 %"
+        };
+        out.push(format!(
+            "    area ratio statistical / exact = {}: {words}",
+            sig(ratio, 3)
+        ));
+    }
+    let pixels = s.real_area_fraction * (c.pixels[0] * c.pixels[1]) as f64;
+    if s.contact_patches > 0 && pixels < 20.0 * s.contact_patches as f64 {
+        out.push(format!(
+            "    note: {} contacting pixels in {} patches: the exact area is resolution-limited at this pressure (a finer scan would give a smaller one)",
+            pixels.round(),
+            s.contact_patches
+        ));
+    }
+    out
 }
 
 #[cfg(test)]

@@ -396,19 +396,32 @@ pub const ANISOTROPY_LIMIT: f64 = 2.0;
 /// The η R σ range Greenwood–Williamson analyses assume.
 pub const GW_PRODUCT_RANGE: (f64, f64) = (0.03, 0.05);
 
-/// Levels the map, applies the optional cut-off (and levels again on the kept points),
-/// takes the moments, the McCool parameters and the summit count.
-pub fn analyse(map: &HeightMap, settings: &Settings) -> Result<Roughness, SurfaceError> {
+/// The map [`analyse`] takes its moments of: levelled, filtered by the optional
+/// cut-off (its edge band dropped) and levelled again on the kept points.
+pub fn analysed_map(map: &HeightMap, settings: &Settings) -> Result<HeightMap, SurfaceError> {
+    analysed_map_with_band(map, settings).map(|(m, _)| m)
+}
+
+fn analysed_map_with_band(
+    map: &HeightMap,
+    settings: &Settings,
+) -> Result<(HeightMap, (usize, usize)), SurfaceError> {
     map.check_analysable()?;
     let levelled = level(map, settings.level)?;
-    let (work, band) = match settings.cutoff {
+    Ok(match settings.cutoff {
         None => (levelled, (0, 0)),
         Some(cutoff) => {
             let filtered = filter::gaussian_cutoff(&levelled, cutoff)?;
             filtered.map.check_analysable()?;
             (level(&filtered.map, settings.level)?, filtered.edge_band)
         }
-    };
+    })
+}
+
+/// Levels the map, applies the optional cut-off (and levels again on the kept points),
+/// takes the moments, the McCool parameters and the summit count.
+pub fn analyse(map: &HeightMap, settings: &Settings) -> Result<Roughness, SurfaceError> {
+    let (work, band) = analysed_map_with_band(map, settings)?;
     let moments = Moments::of(&work);
     let parameters = Parameters::from_moments(&moments)?;
     let summits = (!work.is_profile()).then(|| SummitCount::of(&work));

@@ -299,3 +299,53 @@ fn the_html_page_shows_the_map_and_its_contact() {
     assert!(!html.contains("http:") && !html.contains("https:"));
     assert!(html.contains("GW / exact"));
 }
+
+/// A scene built on a scan: `eval` adds the exact real area on that scan at the
+/// scene's nominal pressure and E* (`bem_real_area_fraction`) and the statistical
+/// model's ratio to it on the same terms (`area_ratio`), and says so in words; a
+/// scene with σ, R and N given has neither.
+#[test]
+fn eval_of_a_scan_based_scene_says_how_far_the_statistical_model_is() {
+    let v: serde_json::Value = serde_json::from_slice(&stdout(
+        wearopt().current_dir(root()).args([
+            "eval",
+            "problems/micro-gear-scan.toml",
+            "--format",
+            "json",
+        ]),
+        0,
+    ))
+    .unwrap();
+    let bem = v["bem_real_area_fraction"].as_f64().unwrap();
+    let c = &v["scan_contact"];
+    assert_eq!(c["status"], "converged");
+    assert_eq!(c["real_area_fraction"].as_f64(), Some(bem));
+    let load = v["scene"]["load"].as_f64().unwrap();
+    let area = v["scene"]["nominal_area"].as_f64().unwrap();
+    assert_eq!(c["pressure"].as_f64(), Some(load / area));
+    assert_eq!(c["modulus"].as_f64(), v["equivalent_modulus"].as_f64());
+    let ratio = c["gw_real_area_fraction"].as_f64().unwrap() / bem;
+    assert_eq!(v["area_ratio"].as_f64(), Some(ratio));
+    assert!((0.3..1.0).contains(&ratio), "{ratio}");
+    let text = String::from_utf8(stdout(
+        wearopt()
+            .current_dir(root())
+            .args(["eval", "problems/micro-gear-scan.toml"]),
+        0,
+    ))
+    .unwrap();
+    assert!(text.contains("on the scan itself (exact contact"), "{text}");
+    assert!(text.contains("area ratio statistical / exact"));
+    let plain: serde_json::Value = serde_json::from_slice(&stdout(
+        wearopt().current_dir(root()).args([
+            "eval",
+            "problems/micro-gear.toml",
+            "--format",
+            "json",
+        ]),
+        0,
+    ))
+    .unwrap();
+    assert!(plain.get("bem_real_area_fraction").is_none());
+    assert!(plain.get("area_ratio").is_none());
+}
