@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """wearopt's contact solver against Tamaas 2.9, side by side, one thread each.
 
-The same self-affine map (Tamaas's own generator, Hurst 0.8, rolloff at a
-quarter of the map's wavenumbers... see below), the same composite modulus and
+The same self-affine map (Tamaas's own generator: Hurst 0.8, power between
+wavenumbers 4 and n/4 in units of 2π/L, rms 1 nm), the same composite modulus and
 mean pressure (about 5 % contact), the same tolerance (1e-10, each solver's own
 residual: Tamaas's is the pressure-weighted gap over the contact, as wearopt's
 first term), on 512² and 1024² maps. Prints each solver's time, iterations and

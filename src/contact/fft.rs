@@ -30,12 +30,8 @@ pub struct Compliance {
     inverse_columns: Arc<dyn Fft<f64>>,
     /// 2 / (E* |q|) / (nx ny), transposed (index `kx * ny + ky`); 0 at q = 0.
     kernel: Vec<f64>,
-    /// Row spectra, `ny` rows of `mx`.
-    rows: Vec<Complex<f64>>,
     /// Column spectra, `mx` columns of `ny` (the transposed layout).
     columns: Vec<Complex<f64>>,
-    /// A copy of the input (realfft uses its input as scratch).
-    input: Vec<f64>,
 }
 
 impl Compliance {
@@ -78,9 +74,7 @@ impl Compliance {
             forward_columns: complex.plan_fft_forward(ny),
             inverse_columns: complex.plan_fft_inverse(ny),
             kernel,
-            rows: vec![Complex::default(); mx * ny],
             columns: vec![Complex::default(); mx * ny],
-            input: vec![0.0; nx * ny],
         }
     }
 
@@ -102,24 +96,46 @@ impl Compliance {
 
     /// `output = K * field` (both `ny` rows of `nx`, row-major). The mean of
     /// `output` is zero.
+    ///
+    /// The transposes are fused into the row passes: a block of [`BLOCK`] rows
+    /// is transformed in cache and scattered into the column spectra (and
+    /// gathered back on the way out), so the map's spectrum crosses memory
+    /// twice an application instead of six times.
     pub fn apply(&mut self, field: &[f64], output: &mut [f64]) {
         let (nx, ny, mx) = (self.nx, self.ny, self.mx);
-        debug_assert_eq!(field.len(), nx * ny);
-        debug_assert_eq!(output.len(), nx * ny);
-        self.input.copy_from_slice(field);
-        // Rows: real to complex.
+        assert_eq!(field.len(), nx * ny);
+        assert_eq!(output.len(), nx * ny);
+        // Rows: real to complex, scattered into the transposed layout.
         let forward = &self.forward_rows;
-        self.input
-            .par_chunks_mut(nx)
-            .zip(self.rows.par_chunks_mut(mx))
-            .for_each_init(
-                || forward.make_scratch_vec(),
-                |scratch, (row, spectrum)| {
+        let columns = SharedColumns(self.columns.as_mut_ptr(), self.columns.len());
+        let columns = &columns;
+        field.par_chunks(BLOCK * nx).enumerate().for_each_init(
+            || {
+                (
+                    vec![0.0; nx],
+                    vec![Complex::default(); BLOCK * mx],
+                    forward.make_scratch_vec(),
+                )
+            },
+            |(row, block, scratch), (b, rows)| {
+                let j0 = b * BLOCK;
+                let count = rows.len() / nx;
+                for (jj, input) in rows.chunks_exact(nx).enumerate() {
+                    // realfft uses its input as scratch: a copy in cache.
+                    row.copy_from_slice(input);
+                    let spectrum = &mut block[jj * mx..(jj + 1) * mx];
                     // Lengths match by construction: the call cannot fail.
                     let _ = forward.process_with_scratch(row, spectrum, scratch);
-                },
-            );
-        transpose(&self.rows, &mut self.columns, ny, mx);
+                }
+                for kx in 0..mx {
+                    for jj in 0..count {
+                        // SAFETY: index kx·ny + j0 + jj < mx·ny, and row
+                        // block b alone writes rows j0..j0 + count.
+                        unsafe { columns.write(kx * ny + j0 + jj, block[jj * mx + kx]) };
+                    }
+                }
+            },
+        );
         // Columns: forward, times the kernel, inverse.
         let (fwd, inv) = (&self.forward_columns, &self.inverse_columns);
         let scratch_len = fwd
@@ -145,32 +161,60 @@ impl Compliance {
                     inv.process_outofplace_with_scratch(spectrum, column, scratch);
                 },
             );
-        transpose(&self.columns, &mut self.rows, mx, ny);
-        // Rows: complex to real. The zero and (even nx) Nyquist bins of a real
-        // row's spectrum are real; rounding leaves ~1e-16 imaginary parts there,
-        // which realfft would refuse.
+        // Rows: gathered from the columns, complex to real. The zero and (even
+        // nx) Nyquist bins of a real row's spectrum are real; rounding leaves
+        // ~1e-16 imaginary parts there, which realfft would refuse.
         let inverse = &self.inverse_rows;
         let even = nx % 2 == 0;
-        self.rows
-            .par_chunks_mut(mx)
-            .zip(output.par_chunks_mut(nx))
-            .for_each_init(
-                || inverse.make_scratch_vec(),
-                |scratch, (spectrum, row)| {
+        let columns = &self.columns;
+        output.par_chunks_mut(BLOCK * nx).enumerate().for_each_init(
+            || {
+                (
+                    vec![Complex::default(); BLOCK * mx],
+                    inverse.make_scratch_vec(),
+                )
+            },
+            |(block, scratch), (b, rows)| {
+                let j0 = b * BLOCK;
+                let count = rows.len() / nx;
+                for kx in 0..mx {
+                    let column = &columns[kx * ny + j0..kx * ny + j0 + count];
+                    for (jj, &c) in column.iter().enumerate() {
+                        block[jj * mx + kx] = c;
+                    }
+                }
+                for (jj, row) in rows.chunks_exact_mut(nx).enumerate() {
+                    let spectrum = &mut block[jj * mx..(jj + 1) * mx];
                     spectrum[0].im = 0.0;
                     if even {
                         spectrum[mx - 1].im = 0.0;
                     }
                     let _ = inverse.process_with_scratch(spectrum, row, scratch);
-                },
-            );
+                }
+            },
+        );
     }
 }
 
-/// `to[c * rows + r] = from[r * cols + c]` (the transpose crate's cache-aware
-/// blocked transpose, which rustfft itself uses).
-fn transpose(from: &[Complex<f64>], to: &mut [Complex<f64>], rows: usize, cols: usize) {
-    transpose::transpose(from, to, cols, rows);
+/// Rows transformed together before their spectra are scattered into columns.
+const BLOCK: usize = 8;
+
+/// The column spectra, written by several row blocks at once, each to its own
+/// rows (disjoint indices).
+struct SharedColumns(*mut Complex<f64>, usize);
+
+// SAFETY: the pointer is only written through `write`, at indices each task
+// owns alone (see `Compliance::apply`), while `apply` holds `&mut self`.
+unsafe impl Send for SharedColumns {}
+unsafe impl Sync for SharedColumns {}
+
+impl SharedColumns {
+    /// # Safety
+    /// `index < len`, and no other thread reads or writes `index` meanwhile.
+    unsafe fn write(&self, index: usize, value: Complex<f64>) {
+        debug_assert!(index < self.1);
+        unsafe { self.0.add(index).write(value) };
+    }
 }
 
 #[cfg(test)]
