@@ -55,6 +55,11 @@ dump("roughness-npy.json", wearopt.roughness("problems/scans/self-affine-nm.npy"
                                              pixel_size="20 nm", height_unit="nm", level="none"))
 error("roughness-npy-missing.txt", lambda: wearopt.roughness("problems/scans/self-affine-nm.npy"))
 
+dump("contact.json", wearopt.contact("problems/scans/self-affine.gsf", modulus="150 GPa",
+                                     pressures=["50 MPa", "200 MPa"], hardness="12 GPa"))
+error("contact-bad.txt", lambda: wearopt.contact("problems/scans/self-affine.gsf",
+                                                 modulus="150 GPa", pressures="0 MPa"))
+
 s = wearopt.sweep("problems/micro-gear-study.toml", 16)
 (out / "sweep.csv").write_text(s)
 parts = [wearopt.sweep("problems/micro-gear-study.toml", 16, shard=(i, 2), format="json") for i in range(2)]

@@ -286,17 +286,22 @@ pub fn text(doc: &ContactDocument) -> String {
             ));
         }
     }
-    let small = doc.points.iter().any(|pt| {
-        let s = &pt.solution;
-        s.real_area_fraction > 0.0
-            && (s.real_area_fraction * (doc.pixels[0] * doc.pixels[1]) as f64)
-                < 20.0 * s.contact_patches as f64
-    });
-    if small {
-        notes.push(
-            "note: the contact patches are a few pixels each (fewer than 20 on average): the real area is resolution-limited; a finer scan of the same region gives a smaller, truer area"
-                .to_string(),
-        );
+    let small: Vec<String> = doc
+        .points
+        .iter()
+        .filter(|pt| {
+            let s = &pt.solution;
+            s.contact_patches > 0
+                && (s.real_area_fraction * (doc.pixels[0] * doc.pixels[1]) as f64)
+                    < 20.0 * s.contact_patches as f64
+        })
+        .map(|pt| pressure(pt.solution.pressure))
+        .collect();
+    if !small.is_empty() {
+        notes.push(format!(
+            "note: at {} the contact patches average fewer than 20 pixels: the real area there is resolution-limited (a finer scan of the same region gives a smaller, truer area)",
+            small.join(", ")
+        ));
     }
     if let Some(w) = comparison_words(doc) {
         out.push('\n');
