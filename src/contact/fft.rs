@@ -97,7 +97,7 @@ impl Compliance {
     /// `output = K * field` (both `ny` rows of `nx`, row-major). The mean of
     /// `output` is zero.
     ///
-    /// The transposes are fused into the row passes: a block of [`BLOCK`] rows
+    /// The transposes are fused into the row passes: a block of `BLOCK` rows
     /// is transformed in cache and scattered into the column spectra (and
     /// gathered back on the way out), so the map's spectrum crosses memory
     /// twice an application instead of six times.

@@ -57,6 +57,11 @@ pub struct Scene {
     pub wear_coefficient: f64,
     /// Which real area wears.
     pub wear_area: WearArea,
+    /// A measured factor on the statistical model's real area (and so on its wear
+    /// and friction), > 0, finite: 1 for the model as it is;
+    /// `[roughness] contact_model = "bem_corrected"` sets it to the exact-to-statistical
+    /// ratio of real areas on the scene's scan at the file's operating point.
+    pub real_area_scale: f64,
     /// What the designer judges the contact by: allowed wear, cycles, the spring that
     /// must free the part, the interface's shear strength (all optional).
     pub requirements: Requirements,
@@ -181,6 +186,7 @@ impl Scene {
             ("asperity_radius", self.asperity_radius),
             ("asperity_density", self.asperity_density),
             ("nominal_area", self.nominal_area),
+            ("real_area_scale", self.real_area_scale),
         ] {
             check(field, value, positive(value), POSITIVE)?;
         }

@@ -466,7 +466,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         scene.nominal_area,
     );
     let load_scale = k * n * r.sqrt() * s * s.sqrt() * an / SQRT_TWO_PI;
-    let area_scale = an * PI * n * r * s / SQRT_TWO_PI;
+    let area_scale = an * PI * n * r * s / SQRT_TWO_PI * scene.real_area_scale;
     let count_scale = an * n / SQRT_TWO_PI;
     let target = scene.load / load_scale;
 

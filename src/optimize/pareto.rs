@@ -240,6 +240,9 @@ pub struct Front {
     pub probes: usize,
     /// Wall time (s).
     pub time_seconds: f64,
+    /// The scene's factor on the statistical real area (1 unless the problem's
+    /// `contact_model` is `bem_corrected`).
+    pub real_area_scale: f64,
 }
 
 impl Front {
@@ -1154,6 +1157,7 @@ pub fn pareto_with(
         evaluations,
         probes,
         time_seconds: t0.elapsed().as_secs_f64(),
+        real_area_scale: study.scene.real_area_scale,
     })
 }
 

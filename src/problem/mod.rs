@@ -49,6 +49,7 @@ mod error;
 mod locate;
 pub mod notes;
 pub(crate) mod raw;
+pub mod scan_contact;
 mod study;
 mod topography;
 
@@ -63,7 +64,7 @@ pub(crate) use error::suggest;
 pub use error::{Location, ProblemError};
 pub use notes::{BodyKey, CatalogueProperty, InputNote};
 pub use study::{Dimensioned, Study};
-pub use topography::ScanSource;
+pub use topography::{ContactModel, ScanSource};
 
 use crate::model::{
     AdhesionModel, AttractionKind, Cantilever, Environment, HumidityRange, Liquid, Scene, WearArea,
@@ -907,6 +908,7 @@ impl Problem {
             sliding_distance,
             wear_coefficient,
             wear_area,
+            real_area_scale: 1.0,
             requirements: crate::model::Requirements {
                 allowed_wear_depth,
                 sliding_per_cycle,
@@ -919,6 +921,7 @@ impl Problem {
             environment,
         };
 
+        let (scene, scan) = r.bem_correction(&raw, scene, scan)?;
         let study = r.study(&raw, &scene)?;
         Ok(Problem {
             name,

@@ -207,6 +207,8 @@ pub struct RawRoughness {
     pub level: Option<Spanned<String>>,
     pub pixel_size: Option<Spanned<RawQuantity>>,
     pub height_unit: Option<Spanned<String>>,
+    /// "statistical" (default) or "bem_corrected": see `ContactModel`.
+    pub contact_model: Option<Spanned<String>>,
 }
 
 /// `{ min = …, max = … }` of one design variable.

@@ -38,10 +38,45 @@ pub struct ScanSource {
     /// again as it was read).
     #[serde(skip)]
     pub overrides: Overrides,
+    /// How the scene takes its real area.
+    pub contact_model: ContactModel,
+    /// The exact contact on the scan at the operating point, when the contact
+    /// model needed it at loading (`bem_corrected`).
+    #[serde(skip)]
+    pub exact: Option<super::scan_contact::ScanContact>,
 }
 
 /// The optional keys that only make sense with `topography`.
-const SCAN_KEYS: [&str; 4] = ["cutoff", "level", "pixel_size", "height_unit"];
+const SCAN_KEYS: [&str; 5] = [
+    "cutoff",
+    "level",
+    "pixel_size",
+    "height_unit",
+    "contact_model",
+];
+
+/// How a scan-based scene's real area is taken (`[roughness] contact_model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactModel {
+    /// The statistical model's real area as it is (the default).
+    #[default]
+    Statistical,
+    /// The statistical real area times the exact-to-statistical ratio of real
+    /// areas on the scan at the file's operating point (nominal pressure, E*, H;
+    /// no adhesion on either side), held fixed as a study moves the design.
+    BemCorrected,
+}
+
+impl ContactModel {
+    /// The name a problem file and the JSON use.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ContactModel::Statistical => "statistical",
+            ContactModel::BemCorrected => "bem_corrected",
+        }
+    }
+}
 
 impl Reader<'_> {
     /// σ, R, N and the source, when `[roughness]` names a topography; `None` otherwise
@@ -51,7 +86,8 @@ impl Reader<'_> {
         g: &RawRoughness,
     ) -> Result<Option<(f64, f64, f64, ScanSource)>, ProblemError> {
         let Some(topo) = &g.topography else {
-            let given: [(&str, Option<Range<usize>>); 4] = [
+            let given: [(&str, Option<Range<usize>>); 5] = [
+                ("contact_model", g.contact_model.as_ref().map(|v| v.span())),
                 ("cutoff", g.cutoff.as_ref().map(|v| v.span())),
                 ("level", g.level.as_ref().map(|v| v.span())),
                 ("pixel_size", g.pixel_size.as_ref().map(|v| v.span())),
@@ -135,8 +171,25 @@ impl Reader<'_> {
         let settings = Settings { level, cutoff };
         let roughness = analyse(&map, &settings)
             .map_err(|e| scan_error(self, format!("{}: {e}", path.display())))?;
+        let contact_model =
+            match &g.contact_model {
+                None => ContactModel::Statistical,
+                Some(m) => match m.get_ref().as_str() {
+                    "statistical" => ContactModel::Statistical,
+                    "bem_corrected" => ContactModel::BemCorrected,
+                    other => return Err(self.invalid(
+                        "roughness.contact_model",
+                        &m.span(),
+                        format!(
+                            "unknown contact model {other:?} (one of: statistical, bem_corrected)"
+                        ),
+                    )),
+                },
+            };
         let p = roughness.parameters;
         let source = ScanSource {
+            contact_model,
+            exact: None,
             topography: written,
             path: path.display().to_string(),
             format: Format::from_path(&path).unwrap_or(Format::Ascii),
@@ -149,5 +202,47 @@ impl Reader<'_> {
             p.summit_density,
             source,
         )))
+    }
+
+    /// Under `contact_model = "bem_corrected"`: the exact contact on the scan at the
+    /// scene's operating point, and the scene's real-area scale set to the
+    /// exact-to-statistical ratio (both without adhesion). A ratio that cannot be
+    /// measured is an error of the file, naming why.
+    pub(super) fn bem_correction(
+        &self,
+        raw: &super::raw::RawProblem,
+        mut scene: crate::model::Scene,
+        scan: Option<ScanSource>,
+    ) -> Result<(crate::model::Scene, Option<ScanSource>), ProblemError> {
+        let Some(mut scan) = scan else {
+            return Ok((scene, None));
+        };
+        if scan.contact_model != ContactModel::BemCorrected {
+            return Ok((scene, Some(scan)));
+        }
+        let span = raw
+            .roughness
+            .as_ref()
+            .and_then(|r| r.get_ref().contact_model.as_ref())
+            .map(|m| m.span())
+            .unwrap_or(0..0);
+        let modulus = crate::model::wear::equivalent_modulus(&scene);
+        let exact = super::scan_contact::scan_contact(&scan, &scene, modulus).map_err(|why| {
+            self.invalid(
+                "roughness.contact_model",
+                &span,
+                format!("\"bem_corrected\" needs the exact contact on the scan at the operating point, which cannot be had: {why}"),
+            )
+        })?;
+        let Some(ratio) = exact.area_ratio().filter(|r| r.is_finite() && *r > 0.0) else {
+            return Err(self.invalid(
+                "roughness.contact_model",
+                &span,
+                "\"bem_corrected\": the exact contact on the scan has no real area to compare with at the operating point",
+            ));
+        };
+        scene.real_area_scale = 1.0 / ratio;
+        scan.exact = Some(exact);
+        Ok((scene, Some(scan)))
     }
 }

@@ -155,7 +155,7 @@ pub fn comparison_words(doc: &ContactDocument) -> Option<String> {
         format!("{}–{}×", sig(lo, 2), sig(hi, 2))
     };
     let verdict = if hi < 0.95 {
-        "the statistical model under-predicts the real area, and so Archard wear (proportional to it), by that factor"
+        "the statistical model under-predicts the real area, and so Archard wear (proportional to it), by that factor; a problem file built on this scan can take the correction with [roughness] contact_model = \"bem_corrected\""
     } else if lo > 1.05 {
         "the statistical model over-predicts the real area, and so Archard wear, by that factor"
     } else {

@@ -119,6 +119,11 @@ pub fn json_value(r: &EvalReport) -> Value {
             "roughness_source".into(),
             r.scan.map_or(Value::Null, super::roughness::scan_json),
         );
+        obj.insert(
+            "contact_model".into(),
+            json!(r.scan.map_or("statistical", |s| s.contact_model.as_str())),
+        );
+        obj.insert("real_area_scale".into(), json!(r.scene.real_area_scale));
         if let Some(c) = r.scan_contact {
             let (bem, ratio, detail) = match c {
                 Ok(c) => (
@@ -432,7 +437,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     p.list(&super::words::input_notes(r.input_notes), "note");
     if let Some(c) = r.scan_contact {
         p.heading("The real area on the scan itself");
-        let lines: Vec<String> = scan_contact_lines(c)
+        let lines: Vec<String> = scan_contact_lines(c, r.scene.real_area_scale != 1.0)
             .into_iter()
             .map(|l| l.trim().to_string())
             .collect();
@@ -747,10 +752,18 @@ pub fn text(r: &EvalReport) -> String {
         None => line("  separation: none — the surfaces are apart".into()),
     }
     line(format!(
-        "  real area A_r = {}  ({} of nominal; 10^{} m²)",
+        "  real area A_r = {}  ({} of nominal; 10^{} m²){}",
         si(ev.real_area, "m²", 4),
         sig_exp(ev.real_area_fraction, 3),
-        sig(ev.log10_real_area, 5)
+        sig(ev.log10_real_area, 5),
+        if sc.real_area_scale != 1.0 {
+            format!(
+                "  — the statistical model's × {} (bem_corrected)",
+                sig(sc.real_area_scale, 4)
+            )
+        } else {
+            String::new()
+        }
     ));
     line(format!(
         "    elastic contacts {}   plastic junctions {}  (plastic fraction {})",
@@ -759,7 +772,7 @@ pub fn text(r: &EvalReport) -> String {
         sig_exp(ev.plastic_area_fraction, 3)
     ));
     if let Some(c) = r.scan_contact {
-        for l in scan_contact_lines(c) {
+        for l in scan_contact_lines(c, r.scene.real_area_scale != 1.0) {
             line(l);
         }
     }
@@ -992,6 +1005,7 @@ fn gap(s: &crate::model::Sensitivity) -> &'static str {
 /// (both without adhesion) and what it means for this report's real area and wear.
 pub(crate) fn scan_contact_lines(
     c: &Result<crate::app::contact::ScanContact, String>,
+    corrected: bool,
 ) -> Vec<String> {
     let c = match c {
         Ok(c) => c,
@@ -1018,7 +1032,9 @@ pub(crate) fn scan_contact_lines(
         ));
     }
     if let Some(ratio) = c.area_ratio() {
-        let words = if ratio < 0.95 {
+        let words = if corrected {
+            "this report's real area, wear and friction are the statistical model's divided by it (contact_model = \"bem_corrected\")"
+        } else if ratio < 0.95 {
             "the statistical model's real area, and so this report's wear, is low by that factor"
         } else if ratio > 1.05 {
             "the statistical model's real area, and so this report's wear, is high by that factor"

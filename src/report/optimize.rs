@@ -137,6 +137,9 @@ pub fn json_value(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> Valu
     if let (Some(h), Value::Object(obj)) = (o.objective_humidity, &mut v) {
         obj.insert("objective_humidity".into(), json!(h));
     }
+    if let (true, Value::Object(obj)) = (o.scene.real_area_scale != 1.0, &mut v) {
+        obj.insert("real_area_scale".into(), json!(o.scene.real_area_scale));
+    }
     v
 }
 
@@ -183,6 +186,9 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
         out.push('\n');
     };
     line(format!("wearopt optimize — {name}"));
+    if let Some(n) = super::words::real_area_scale_note(o.scene.real_area_scale) {
+        line(n);
+    }
     line(String::new());
     let verdict = match o.status {
         OptimizationStatus::Optimal => {
@@ -429,6 +435,9 @@ pub fn html(
 ) -> String {
     let mut p = super::html::Page::new(&format!("wearopt optimize — {name}"));
     p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status"));
+    if let Some(n) = super::words::real_area_scale_note(o.scene.real_area_scale) {
+        p.paragraph(&n, Some("note"));
+    }
     let mut warnings: Vec<String> = broken
         .iter()
         .map(|b| {

@@ -423,6 +423,9 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
     let m = front.measure;
     let ounit = super::objective_unit(front.objective_name);
     line(format!("wearopt pareto — {name}"));
+    if let Some(n) = super::words::real_area_scale_note(front.real_area_scale) {
+        line(n);
+    }
     line(String::new());
     line(trade_off_line(front));
     line(format!("Status: {}", status_sentence(front)));
@@ -746,6 +749,9 @@ pub fn html(
         &format!("Status: {}", status_sentence(front)),
         Some("status"),
     );
+    if let Some(n) = super::words::real_area_scale_note(front.real_area_scale) {
+        p.paragraph(&n, Some("note"));
+    }
     p.paragraph(&trade_off_line(front), None);
     p.paragraph(&reachable_line(front), None);
     if let Some(b) = front.baseline.as_ref().filter(|b| !b.feasible) {

@@ -445,7 +445,25 @@ pub(crate) fn scan_lines(scan: &crate::problem::ScanSource) -> Vec<String> {
         };
         lines.push(format!("  scan: {text}"));
     }
+    if let Some(l) = bem_corrected_words(scan) {
+        lines.push(format!("  {l}"));
+    }
     lines
+}
+
+/// Under `contact_model = "bem_corrected"`: what the scene's real area is, in
+/// words, for every report that shows the scene.
+pub(crate) fn bem_corrected_words(scan: &crate::problem::ScanSource) -> Option<String> {
+    if scan.contact_model != crate::problem::ContactModel::BemCorrected {
+        return None;
+    }
+    let exact = scan.exact.as_ref()?;
+    let ratio = exact.area_ratio()?;
+    Some(format!(
+        "contact model: bem_corrected — the statistical real area, and so the wear and friction, × {} (the exact-to-statistical ratio of real areas on the scan at the operating point {}, both without adhesion; held fixed as a study moves the design)",
+        sig(1.0 / ratio, 4),
+        si(exact.pressure, "Pa", 3)
+    ))
 }
 
 /// The JSON object of a scene's scan source (SI units).
@@ -468,5 +486,6 @@ pub(crate) fn scan_json(scan: &crate::problem::ScanSource) -> Value {
         "summit_density": p.summit_density,
         "mean_summit_height": p.mean_summit_height,
         "warnings": g.warnings.iter().map(warning_text).collect::<Vec<_>>(),
+        "contact_model": scan.contact_model.as_str(),
     })
 }

@@ -284,6 +284,17 @@ pub fn evaluation_json(ev: &Evaluation) -> Value {
     v
 }
 
+/// The line every report of a scene with a corrected real area carries (none
+/// for the statistical model as it is).
+pub fn real_area_scale_note(scale: f64) -> Option<String> {
+    (scale != 1.0).then(|| {
+        format!(
+            "contact model: bem_corrected — every real area, wear and friction here is the statistical model's × {} (the exact-to-statistical ratio on the scan at the file's operating point, held fixed as the design moves)",
+            super::sig(scale, 4)
+        )
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -153,6 +153,7 @@ fn hub(rh: Option<f64>) -> Scene {
         sliding_distance: 1.0,
         wear_coefficient: 1e-4,
         wear_area: Default::default(),
+        real_area_scale: 1.0,
         requirements: Default::default(),
         adhesion_model: wearopt::model::AdhesionModel::Dmt,
         attraction: Default::default(),

@@ -349,3 +349,81 @@ fn eval_of_a_scan_based_scene_says_how_far_the_statistical_model_is() {
     assert!(plain.get("bem_real_area_fraction").is_none());
     assert!(plain.get("area_ratio").is_none());
 }
+
+/// micro-gear-scan.toml with `extra` added to its [roughness] table, beside a copy
+/// of the scan; its path.
+fn scan_problem(extra: &str, tag: &str) -> PathBuf {
+    let text = std::fs::read_to_string(root().join("problems/micro-gear-scan.toml")).unwrap();
+    let text = text.replacen("[roughness]\n", &format!("[roughness]\n{extra}\n"), 1);
+    let dir = tmp(tag);
+    std::fs::create_dir_all(dir.join("scans")).unwrap();
+    std::fs::copy(
+        root().join("problems/scans/self-affine.gsf"),
+        dir.join("scans/self-affine.gsf"),
+    )
+    .unwrap();
+    let path = dir.join("p.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn eval_json(path: &Path) -> serde_json::Value {
+    serde_json::from_slice(&stdout(
+        wearopt().args(["eval", path.to_str().unwrap(), "--format", "json"]),
+        0,
+    ))
+    .unwrap()
+}
+
+/// `contact_model = "bem_corrected"` multiplies the statistical real area, and with
+/// it the wear rate, by the measured exact-to-statistical ratio (1 / area_ratio)
+/// and nothing else moves (the separation is the load's); every report says so.
+#[test]
+fn bem_corrected_scales_the_real_area_by_the_measured_ratio() {
+    let plain = eval_json(&scan_problem("contact_model = \"statistical\"", "plain"));
+    let path = scan_problem("contact_model = \"bem_corrected\"", "corrected");
+    let fixed = eval_json(&path);
+    assert_eq!(plain["contact_model"], "statistical");
+    assert_eq!(plain["real_area_scale"].as_f64(), Some(1.0));
+    assert_eq!(fixed["contact_model"], "bem_corrected");
+    let scale = fixed["real_area_scale"].as_f64().unwrap();
+    let ratio = fixed["area_ratio"].as_f64().unwrap();
+    assert_eq!(scale, 1.0 / ratio);
+    assert_eq!(plain["area_ratio"].as_f64(), Some(ratio));
+    assert_eq!(plain["separation"], fixed["separation"]);
+    for key in ["real_area", "wear_rate"] {
+        let (a, b) = (plain[key].as_f64().unwrap(), fixed[key].as_f64().unwrap());
+        assert!((b / (a * scale) - 1.0).abs() < 1e-14, "{key}: {a} {b}");
+    }
+    let text = |cmd: &str| {
+        String::from_utf8(stdout(wearopt().args([cmd, path.to_str().unwrap()]), 0)).unwrap()
+    };
+    assert!(text("eval").contains("contact model: bem_corrected"));
+    assert!(text("optimize").contains("contact model: bem_corrected"));
+}
+
+#[test]
+fn contact_model_is_refused_where_it_cannot_apply() {
+    let bad = scan_problem("contact_model = \"exact\"", "unknown");
+    let err =
+        String::from_utf8(stderr(wearopt().args(["eval", bad.to_str().unwrap()]), 2)).unwrap();
+    assert!(
+        err.contains("roughness.contact_model") && err.contains("statistical, bem_corrected"),
+        "{err}"
+    );
+    let dir = tmp("no-scan");
+    let text = std::fs::read_to_string(root().join("problems/micro-gear.toml")).unwrap();
+    let text = text.replacen(
+        "[roughness]\n",
+        "[roughness]\ncontact_model = \"bem_corrected\"\n",
+        1,
+    );
+    let path = dir.join("p.toml");
+    std::fs::write(&path, text).unwrap();
+    let err =
+        String::from_utf8(stderr(wearopt().args(["eval", path.to_str().unwrap()]), 2)).unwrap();
+    assert!(
+        err.contains("roughness.contact_model") && err.contains("topography"),
+        "{err}"
+    );
+}

@@ -515,6 +515,7 @@ fn scene() -> impl Strategy<Value = Scene> {
                 } else {
                     WearArea::Total
                 },
+                real_area_scale: 1.0,
                 requirements: Default::default(),
                 adhesion_model: match law {
                     0 => AdhesionModel::Jkr,
