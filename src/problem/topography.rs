@@ -171,21 +171,22 @@ impl Reader<'_> {
         let settings = Settings { level, cutoff };
         let roughness = analyse(&map, &settings)
             .map_err(|e| scan_error(self, format!("{}: {e}", path.display())))?;
-        let contact_model =
-            match &g.contact_model {
-                None => ContactModel::Statistical,
-                Some(m) => match m.get_ref().as_str() {
-                    "statistical" => ContactModel::Statistical,
-                    "bem_corrected" => ContactModel::BemCorrected,
-                    other => return Err(self.invalid(
+        let contact_model = match &g.contact_model {
+            None => ContactModel::Statistical,
+            Some(m) => match m.get_ref().as_str() {
+                "statistical" => ContactModel::Statistical,
+                "bem_corrected" => ContactModel::BemCorrected,
+                other => {
+                    return Err(self.invalid(
                         "roughness.contact_model",
                         &m.span(),
                         format!(
                             "unknown contact model {other:?} (one of: statistical, bem_corrected)"
                         ),
-                    )),
-                },
-            };
+                    ))
+                }
+            },
+        };
         let p = roughness.parameters;
         let source = ScanSource {
             contact_model,
