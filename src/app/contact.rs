@@ -149,9 +149,11 @@ pub struct ContactPoint {
 
 impl ContactPoint {
     /// The statistical model's real area over the boundary-element one.
+    /// None where either side has no usable answer (the statistical model out of
+    /// its range, say, where its "area" may exceed the nominal one).
     pub fn area_ratio(&self) -> Option<f64> {
         let gw = self.statistical?;
-        (self.solution.real_area_fraction > 0.0)
+        (self.solution.real_area_fraction > 0.0 && gw.status == crate::model::Status::Ok)
             .then(|| gw.real_area_fraction / self.solution.real_area_fraction)
     }
 }

@@ -398,7 +398,7 @@ impl Solver {
         settings: &Settings,
     ) -> (usize, f64, Outcome) {
         let n = p.len();
-        shift_mean(p, pressure, cap);
+        restore_capped_mean(p, pressure, cap);
         let mut t = vec![0.0; n];
         let mut r = vec![0.0; n];
         let mut conjugate = false;
@@ -457,7 +457,7 @@ impl Solver {
                 }
             }
             conjugate = !overlap;
-            shift_mean(p, pressure, cap);
+            restore_capped_mean(p, pressure, cap);
         }
     }
 
@@ -633,6 +633,18 @@ fn scale_mean(p: &mut [f64], target: f64) {
     } else {
         let s = target * n / sum;
         p.iter_mut().for_each(|x| *x *= s);
+    }
+}
+
+/// Restores the mean to `target` under the cap: by a shift of the free pixels,
+/// and where those cannot carry it (too few loaded pixels, even at the cap), by
+/// the projection onto {0 ≤ p ≤ cap, mean = target} over every pixel, which
+/// loads new ones.
+fn restore_capped_mean(p: &mut [f64], target: f64, cap: f64) {
+    shift_mean(p, target, cap);
+    let mean = p.iter().sum::<f64>() / p.len() as f64;
+    if (mean - target).abs() > 1e-12 * target {
+        project(p, target, cap);
     }
 }
 
@@ -958,6 +970,29 @@ mod tests {
         assert!(plastic > 10, "{plastic} saturated pixels");
         for (a, b) in results[0].iter().zip(&results[1]) {
             assert!((a - b).abs() < 1e-6 * settings.hardness, "{a} vs {b}");
+        }
+    }
+
+    /// A cap barely above the mean pressure: nearly every pixel must carry
+    /// nearly H, and the mean is held whatever the active set (a stalled shift of
+    /// the few loaded pixels once returned one pixel at H, "converged").
+    #[test]
+    fn a_cap_just_above_the_mean_loads_the_whole_map() {
+        let (nx, ny, lambda, g, e) = (64, 8, 1e-6, 1e-9, 1e11);
+        let dx = lambda / nx as f64;
+        let heights = sinusoid(nx, ny, g);
+        let mut solver = Solver::new(nx, ny, dx, dx, &heights, e).unwrap();
+        let pressure = 1e6;
+        for factor in [1.0000001, 1.01, 1.5] {
+            let settings = Settings {
+                hardness: factor * pressure,
+                ..Settings::default()
+            };
+            let s = solver.solve(pressure, &settings, None).unwrap();
+            assert_eq!(s.outcome, Outcome::Converged, "{factor}");
+            let mean = s.pressures.iter().sum::<f64>() / (nx * ny) as f64;
+            assert!((mean / pressure - 1.0).abs() < 1e-12, "{factor}: {mean}");
+            assert!(s.real_area_fraction >= 1.0 / factor - 1e-12, "{factor}");
         }
     }
 }

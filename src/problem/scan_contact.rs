@@ -101,8 +101,9 @@ pub struct ScanContact {
 
 impl ScanContact {
     /// The statistical model's real area over the exact one (both without adhesion).
+    /// None where the statistical model has no usable answer (out of its range).
     pub fn area_ratio(&self) -> Option<f64> {
-        (self.solution.real_area_fraction > 0.0)
+        (self.solution.real_area_fraction > 0.0 && self.statistical.status == Status::Ok)
             .then(|| self.statistical.real_area_fraction / self.solution.real_area_fraction)
     }
 }
