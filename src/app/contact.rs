@@ -205,18 +205,14 @@ pub fn contact_of_heights(
     options: &ContactOptions,
 ) -> Result<ContactDocument, AppError> {
     check(options)?;
-    let Some(pixel) = options.pixel_size else {
-        return Err(AppError::Invalid {
-            options: vec![(OptionName("pixel_size"), "None".to_string())],
-            rule: format!("{origin} carries no pixel size: give one, e.g. \"10 nm\""),
-        });
-    };
-    let unit = options.height_unit.unwrap_or(1.0);
-    let heights = heights.into_iter().map(|h| h * unit).collect();
-    let map = HeightMap::new(nx, ny, pixel, pixel, heights).map_err(|error| AppError::Surface {
-        origin: origin.to_string(),
-        error,
-    })?;
+    let map = super::roughness::map_of_heights(
+        origin,
+        nx,
+        ny,
+        heights,
+        options.pixel_size,
+        options.height_unit,
+    )?;
     solved(origin.to_string(), Format::Npy, &map, options)
 }
 

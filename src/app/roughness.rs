@@ -111,20 +111,40 @@ pub fn roughness_of_heights(
     heights: Vec<f64>,
     options: &RoughnessOptions,
 ) -> Result<RoughnessDocument, AppError> {
-    let Some(pixel) = options.pixel_size else {
+    let map = map_of_heights(
+        origin,
+        nx,
+        ny,
+        heights,
+        options.pixel_size,
+        options.height_unit,
+    )?;
+    analysed(origin.to_string(), Format::Npy, &map, options)
+}
+
+/// Heights in memory (row by row along y, `ny` rows of `nx`, in units of
+/// `height_unit` metres, metres when `None`) as a map of square pixels of
+/// `pixel_size` (required: heights carry none). `origin` names them in messages.
+pub(crate) fn map_of_heights(
+    origin: &str,
+    nx: usize,
+    ny: usize,
+    heights: Vec<f64>,
+    pixel_size: Option<f64>,
+    height_unit: Option<f64>,
+) -> Result<HeightMap, AppError> {
+    let Some(pixel) = pixel_size else {
         return Err(AppError::Invalid {
             options: vec![(OptionName("pixel_size"), "None".to_string())],
             rule: format!("{origin} carries no pixel size: give one, e.g. \"10 nm\""),
         });
     };
-    let unit = options.height_unit.unwrap_or(1.0);
+    let unit = height_unit.unwrap_or(1.0);
     let heights = heights.into_iter().map(|h| h * unit).collect();
-    let surface_error = |error| AppError::Surface {
+    HeightMap::new(nx, ny, pixel, pixel, heights).map_err(|error| AppError::Surface {
         origin: origin.to_string(),
         error,
-    };
-    let map = HeightMap::new(nx, ny, pixel, pixel, heights).map_err(surface_error)?;
-    analysed(origin.to_string(), Format::Npy, &map, options)
+    })
 }
 
 fn analysed(

@@ -227,6 +227,26 @@ fn header(doc: &ContactDocument) -> Vec<String> {
     lines
 }
 
+/// One point's cells in the tables of the text and the HTML page; `solve`, the
+/// seventh, says how the solve went (iterations, or status and iterations).
+fn row(pt: &ContactPoint, solve: String) -> Vec<String> {
+    let s = &pt.solution;
+    let gw = pt.statistical;
+    vec![
+        pressure(s.pressure),
+        percent(s.real_area_fraction),
+        percent(s.plastic_area_fraction),
+        s.contact_patches.to_string(),
+        length(s.mean_gap),
+        pressure(s.max_pressure),
+        solve,
+        sig_exp(s.residual, 2),
+        gw.map_or("-".into(), |g| percent(g.real_area_fraction)),
+        gw.map_or("-".into(), |g| sig(g.contact_count, 3)),
+        pt.area_ratio().map_or("-".into(), |r| sig(r, 3)),
+    ]
+}
+
 /// The text report.
 pub fn text(doc: &ContactDocument) -> String {
     let mut out = header(doc).join("\n");
@@ -247,23 +267,7 @@ pub fn text(doc: &ContactDocument) -> String {
     let rows: Vec<Vec<String>> = doc
         .points
         .iter()
-        .map(|pt| {
-            let s = &pt.solution;
-            let gw = pt.statistical;
-            vec![
-                pressure(s.pressure),
-                percent(s.real_area_fraction),
-                percent(s.plastic_area_fraction),
-                s.contact_patches.to_string(),
-                length(s.mean_gap),
-                pressure(s.max_pressure),
-                s.iterations.to_string(),
-                sig_exp(s.residual, 2),
-                gw.map_or("-".into(), |g| percent(g.real_area_fraction)),
-                gw.map_or("-".into(), |g| sig(g.contact_count, 3)),
-                pt.area_ratio().map_or("-".into(), |r| sig(r, 3)),
-            ]
-        })
+        .map(|pt| row(pt, pt.solution.iterations.to_string()))
         .collect();
     out.push_str(&aligned(&head, &rows));
     let mut notes = Vec::new();
@@ -493,20 +497,10 @@ pub fn html(doc: &ContactDocument) -> String {
         .iter()
         .map(|pt| {
             let s = &pt.solution;
-            let gw = pt.statistical;
-            vec![
-                pressure(s.pressure),
-                percent(s.real_area_fraction),
-                percent(s.plastic_area_fraction),
-                s.contact_patches.to_string(),
-                length(s.mean_gap),
-                pressure(s.max_pressure),
+            row(
+                pt,
                 format!("{} ({} it.)", status_word(s.outcome), s.iterations),
-                sig_exp(s.residual, 2),
-                gw.map_or("-".into(), |g| percent(g.real_area_fraction)),
-                gw.map_or("-".into(), |g| sig(g.contact_count, 3)),
-                pt.area_ratio().map_or("-".into(), |r| sig(r, 3)),
-            ]
+            )
         })
         .collect();
     p.table(
