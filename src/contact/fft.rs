@@ -30,6 +30,9 @@ pub struct Compliance {
     inverse_columns: Arc<dyn Fft<f64>>,
     /// 2 / (E* |q|) / (nx ny), transposed (index `kx * ny + ky`); 0 at q = 0.
     kernel: Vec<f64>,
+    /// E* |q| / 2 / (nx ny), the stiffness (the kernel's inverse off q = 0),
+    /// transposed like it; made on first use.
+    stiffness: Vec<f64>,
     /// Column spectra, `mx` columns of `ny` (the transposed layout).
     columns: Vec<Complex<f64>>,
 }
@@ -74,6 +77,7 @@ impl Compliance {
             forward_columns: complex.plan_fft_forward(ny),
             inverse_columns: complex.plan_fft_inverse(ny),
             kernel,
+            stiffness: Vec::new(),
             columns: vec![Complex::default(); mx * ny],
         }
     }
@@ -102,6 +106,25 @@ impl Compliance {
     /// gathered back on the way out), so the map's spectrum crosses memory
     /// twice an application instead of six times.
     pub fn apply(&mut self, field: &[f64], output: &mut [f64]) {
+        self.convolve(field, output, false);
+    }
+
+    /// `output = K⁻¹ * field`, the pressures of displacements `field` (Westergaard's
+    /// stiffness `E* |q| / 2`; the mean of `output` is zero, and so is the mean
+    /// of `field` taken to be).
+    pub fn apply_inverse(&mut self, field: &[f64], output: &mut [f64]) {
+        if self.stiffness.is_empty() {
+            let scale = 1.0 / (self.nx as f64 * self.ny as f64);
+            self.stiffness = self
+                .kernel
+                .iter()
+                .map(|&k| if k > 0.0 { scale * scale / k } else { 0.0 })
+                .collect();
+        }
+        self.convolve(field, output, true);
+    }
+
+    fn convolve(&mut self, field: &[f64], output: &mut [f64], inverse: bool) {
         let (nx, ny, mx) = (self.nx, self.ny, self.mx);
         assert_eq!(field.len(), nx * ny);
         assert_eq!(output.len(), nx * ny);
@@ -141,9 +164,14 @@ impl Compliance {
         let scratch_len = fwd
             .get_outofplace_scratch_len()
             .max(inv.get_outofplace_scratch_len());
+        let kernel = if inverse {
+            &self.stiffness
+        } else {
+            &self.kernel
+        };
         self.columns
             .par_chunks_mut(ny)
-            .zip(self.kernel.par_chunks(ny))
+            .zip(kernel.par_chunks(ny))
             .for_each_init(
                 || {
                     (
@@ -247,6 +275,23 @@ mod tests {
             for (f, o) in field.iter().zip(&out) {
                 assert!((o - factor * (f - 5.0)).abs() < 1e-13 * factor, "{nx}×{ny}");
             }
+        }
+    }
+
+    /// The stiffness undoes the compliance on any zero-mean field.
+    #[test]
+    fn the_stiffness_inverts_the_compliance() {
+        let (nx, ny) = (24, 10);
+        let mut k = Compliance::new(nx, ny, 1e-9, 2e-9, 3e9);
+        let field: Vec<f64> = (0..nx * ny)
+            .map(|i| ((i * 7919) % 101) as f64 - 50.0)
+            .collect();
+        let mean = field.iter().sum::<f64>() / field.len() as f64;
+        let (mut u, mut back) = (vec![0.0; nx * ny], vec![0.0; nx * ny]);
+        k.apply(&field, &mut u);
+        k.apply_inverse(&u, &mut back);
+        for (f, b) in field.iter().zip(&back) {
+            assert!((f - mean - b).abs() < 1e-12 * 50.0);
         }
     }
 }

@@ -10,6 +10,7 @@
 //! interpenetrate, as in Almqvist et al. 2007 and Tamaas's saturated solver).
 //! No I/O, no printing: the outcome is a [`Solution`].
 
+pub mod adhesion;
 pub mod fft;
 pub mod patches;
 
@@ -86,6 +87,25 @@ pub enum ContactError {
         /// The hardness.
         hardness: f64,
     },
+    /// A non-positive or non-finite adhesion parameter.
+    #[error("the {what} is {value} {unit}; it must be positive and finite")]
+    Adhesion {
+        /// Which parameter.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+        /// Its unit.
+        unit: &'static str,
+    },
+    /// A non-positive or non-finite mean gap.
+    #[error("the mean gap is {0} m; it must be positive and finite")]
+    MeanGap(f64),
+    /// The approach never reached a mean pressure.
+    #[error("the approach did not reach the mean pressure {pressure} Pa")]
+    Unreached {
+        /// The mean pressure asked for (Pa).
+        pressure: f64,
+    },
     /// Pixel sizes that are not positive and finite.
     #[error("the pixel size is {dx} × {dy} m; both must be positive and finite")]
     PixelSize {
@@ -144,6 +164,13 @@ pub struct Solver {
     heights: Vec<f64>,
     /// Their rms about the mean (m).
     rms: f64,
+    /// The rms of their slope (forward differences across the periodic edges).
+    slope_rms: f64,
+    /// Pixel sides (m).
+    dx: f64,
+    dy: f64,
+    /// E* (Pa).
+    modulus: f64,
     compliance: Compliance,
 }
 
@@ -180,11 +207,24 @@ impl Solver {
         let mean = heights.iter().sum::<f64>() / n;
         let heights: Vec<f64> = heights.iter().map(|h| h - mean).collect();
         let rms = (heights.iter().map(|h| h * h).sum::<f64>() / n).sqrt();
+        let mut slope = 0.0;
+        for j in 0..ny {
+            for i in 0..nx {
+                let here = heights[j * nx + i];
+                let sx = (heights[j * nx + (i + 1) % nx] - here) / dx;
+                let sy = (heights[((j + 1) % ny) * nx + i] - here) / dy;
+                slope += sx * sx + sy * sy;
+            }
+        }
         Ok(Solver {
             nx,
             ny,
             heights,
             rms,
+            slope_rms: (slope / n).sqrt(),
+            dx,
+            dy,
+            modulus,
             compliance: Compliance::new(nx, ny, dx, dy, modulus),
         })
     }
