@@ -531,7 +531,6 @@ impl Solver {
     ) -> Result<PullOff, ContactError> {
         let step = (0.5 * adhesion.range).max(self.rms / 64.0);
         let mut state = from.clone();
-        let mut previous = from.clone();
         let mut best = from.clone();
         let mut before_best = from.clone();
         let (mut steps, mut iterations) = (0, 0);
@@ -545,10 +544,10 @@ impl Solver {
                 self.adhesive_at_gap(state.mean_gap + step, adhesion, settings, Some(&state.gaps))?;
             iterations += next.iterations;
             converged &= next.outcome == Outcome::Converged;
-            previous = std::mem::replace(&mut state, next);
+            let previous = std::mem::replace(&mut state, next);
             if state.pressure < best.pressure {
                 best = state.clone();
-                before_best = previous.clone();
+                before_best = previous;
             }
             if state.real_area_fraction == 0.0
                 && best.pressure < 0.0
