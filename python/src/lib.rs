@@ -379,6 +379,7 @@ fn contact_options(
     height_unit: Option<&str>,
     tolerance: f64,
     fields: bool,
+    adhesion: (Option<&str>, Option<&str>, bool),
 ) -> Result<app::contact::ContactOptions, AppError> {
     use app::contact::positive;
     use app::roughness::{height_unit as unit, length, levelling};
@@ -402,6 +403,23 @@ fn contact_options(
     let hardness = hardness
         .map(|t| positive(OptionName("hardness"), t, Dimension::Pressure))
         .transpose()?;
+    let adhesion = match adhesion {
+        (Some(w), Some(r), coarse_grain) => Some(app::contact::AdhesionOptions {
+            work: positive(OptionName("work_of_adhesion"), w, Dimension::SurfaceEnergy)?,
+            range: positive(OptionName("adhesion_range"), r, Dimension::Length)?,
+            coarse_grain,
+        }),
+        (None, None, false) => None,
+        (w, r, _) => {
+            return Err(AppError::Invalid {
+                options: vec![
+                    (OptionName("work_of_adhesion"), format!("{w:?}")),
+                    (OptionName("adhesion_range"), format!("{r:?}")),
+                ],
+                rule: "adhesion needs both work_of_adhesion and adhesion_range (coarse_grain only with them)".to_string(),
+            })
+        }
+    };
     Ok(app::contact::ContactOptions {
         modulus,
         pressures,
@@ -411,16 +429,16 @@ fn contact_options(
         height_unit,
         tolerance,
         fields,
+        adhesion,
     })
 }
 
+/// (ny, nx) arrays, one per point.
+type Fields<'py> = Vec<Bound<'py, numpy::PyArray2<f64>>>;
+
 /// The JSON of a contact document and, when asked, each point's pressure and gap
-/// fields as (ny, nx) arrays.
-type ContactOut<'py> = (
-    String,
-    Vec<Bound<'py, numpy::PyArray2<f64>>>,
-    Vec<Bound<'py, numpy::PyArray2<f64>>>,
-);
+/// fields as (ny, nx) arrays, then those of the adhesive solves.
+type ContactOut<'py> = (String, Fields<'py>, Fields<'py>, Fields<'py>, Fields<'py>);
 
 fn contact_out<'py>(
     py: Python<'py>,
@@ -428,26 +446,30 @@ fn contact_out<'py>(
 ) -> PyResult<ContactOut<'py>> {
     let json = report::contact::json_document(&doc).to_string();
     let [nx, ny] = doc.pixels;
-    let mut pressures = Vec::new();
-    let mut gaps = Vec::new();
+    let (mut pressures, mut gaps) = (Vec::new(), Vec::new());
+    let (mut adhesive_pressures, mut adhesive_gaps) = (Vec::new(), Vec::new());
+    let shape = |v: Vec<f64>| -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
+        v.into_pyarray(py)
+            .reshape([ny, nx])
+            .map_err(|e| value_error(e.to_string()))
+    };
     for pt in doc.points {
+        if let Some(a) = pt.adhesive.filter(|a| !a.pressures.is_empty()) {
+            adhesive_pressures.push(shape(a.pressures)?);
+            adhesive_gaps.push(shape(a.gaps)?);
+        }
         if pt.solution.pressures.is_empty() {
             continue;
         }
-        let shape = |v: Vec<f64>| -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
-            v.into_pyarray(py)
-                .reshape([ny, nx])
-                .map_err(|e| value_error(e.to_string()))
-        };
         pressures.push(shape(pt.solution.pressures)?);
         gaps.push(shape(pt.solution.gaps)?);
     }
-    Ok((json, pressures, gaps))
+    Ok((json, pressures, gaps, adhesive_pressures, adhesive_gaps))
 }
 
 /// `wearopt contact FILE --modulus E --pressure P1,… [--hardness H] … --format json`.
 #[pyfunction]
-#[pyo3(signature = (path, modulus, pressures, hardness=None, level="plane".to_string(), pixel_size=None, height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false))]
+#[pyo3(signature = (path, modulus, pressures, hardness=None, level="plane".to_string(), pixel_size=None, height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false, work_of_adhesion=None, adhesion_range=None, coarse_grain=false))]
 #[allow(clippy::too_many_arguments)]
 fn contact_json<'py>(
     py: Python<'py>,
@@ -460,6 +482,9 @@ fn contact_json<'py>(
     height_unit: Option<String>,
     tolerance: f64,
     fields: bool,
+    work_of_adhesion: Option<String>,
+    adhesion_range: Option<String>,
+    coarse_grain: bool,
 ) -> PyResult<ContactOut<'py>> {
     let doc = detached(py, || {
         let options = contact_options(
@@ -471,6 +496,11 @@ fn contact_json<'py>(
             height_unit.as_deref(),
             tolerance,
             fields,
+            (
+                work_of_adhesion.as_deref(),
+                adhesion_range.as_deref(),
+                coarse_grain,
+            ),
         )
         .map_err(words)?;
         app::contact::contact(std::path::Path::new(&path), &options).map_err(words)
@@ -480,7 +510,7 @@ fn contact_json<'py>(
 
 /// The contact of heights in memory (a 2-D array, rows along y).
 #[pyfunction]
-#[pyo3(signature = (heights, pixel_size, modulus, pressures, hardness=None, level="plane".to_string(), height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false))]
+#[pyo3(signature = (heights, pixel_size, modulus, pressures, hardness=None, level="plane".to_string(), height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false, work_of_adhesion=None, adhesion_range=None, coarse_grain=false))]
 #[allow(clippy::too_many_arguments)]
 fn contact_array<'py>(
     py: Python<'py>,
@@ -493,6 +523,9 @@ fn contact_array<'py>(
     height_unit: Option<String>,
     tolerance: f64,
     fields: bool,
+    work_of_adhesion: Option<String>,
+    adhesion_range: Option<String>,
+    coarse_grain: bool,
 ) -> PyResult<ContactOut<'py>> {
     let array = heights.as_array();
     let (ny, nx) = array.dim();
@@ -507,6 +540,11 @@ fn contact_array<'py>(
             height_unit.as_deref(),
             tolerance,
             fields,
+            (
+                work_of_adhesion.as_deref(),
+                adhesion_range.as_deref(),
+                coarse_grain,
+            ),
         )
         .map_err(words)?;
         app::contact::contact_of_heights("<height array>", nx, ny, values, &options).map_err(words)

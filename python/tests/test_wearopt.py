@@ -540,3 +540,52 @@ def test_contact_matches_tamaas(seed, fraction):
     assert abs(point["mean_gap"] / mean_gap - 1) < 1e-6
     assert np.abs(point["pressure_field"] - traction).max() < 1e-6 * traction.max()
     assert abs(point["pressure_field"].mean() / pressure - 1) < 1e-12
+
+
+def test_adhesive_contact_matches_tamaas():
+    """Tamaas 2.9's Rey–Anciaux–Molinari solver (PolonskyKeerRey, gap primal and
+    constraint, ExponentialAdhesionFunctional) at a mean gap; wearopt at the
+    mean pressure Tamaas found, with the same law, along its approach: the same
+    state — the mean gap within 1e-9, the same contacting pixels (within two),
+    the net tractions within 1e-9 of the largest (measured: 5e-12)."""
+    import tamaas as tm
+
+    n, length, e_star = 128, 1e-6, 100e9
+    gamma, rho = 0.05, 0.5e-9  # process zone 50 pixels
+    h = _self_affine(n, 3)
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [length, length], [n, n])
+    model.E, model.nu = e_star, 0.0
+    solver = tm.PolonskyKeerRey(model, h, 1e-12, tm.PolonskyKeerRey.gap, tm.PolonskyKeerRey.gap)
+    law = tm.ExponentialAdhesionFunctional(h)
+    law.parameters = {"rho": rho, "surface_energy": gamma}
+    solver.addFunctionalTerm(law)
+    solver.solve(1.5e-9)
+    traction = np.array(model.traction)
+    gap = np.array(model.displacement) - h
+    c = wearopt.contact(h, pixel_size=length / n, modulus=e_star, pressures=traction.mean(),
+                        level="none", tolerance=1e-12, fields=True,
+                        work_of_adhesion=gamma, adhesion_range=rho)
+    point = c["points"][0]
+    a = point["adhesive"]
+    assert a["status"] == "converged"
+    assert abs(a["mean_gap"] / 1.5e-9 - 1) < 1e-9
+    touching = point["adhesive_gap_field"] <= 0
+    assert abs(int(touching.sum()) - int((gap <= 1e-20).sum())) <= 2
+    assert np.abs(point["adhesive_pressure_field"] - traction).max() < 1e-9 * np.abs(traction).max()
+    # Adhesion pulls the surfaces into more contact than the same load without it.
+    assert a["real_area_fraction"] > point["real_area_fraction"]
+    assert c["adhesion"]["pull_off_pressure"] < 0
+
+
+def test_adhesion_needs_both_parameters_and_a_resolved_range():
+    z = _self_affine(32, 5)
+    with pytest.raises(ValueError, match="adhesion_range"):
+        wearopt.contact(z, pixel_size="20 nm", modulus="100 GPa", pressures=1e7,
+                        work_of_adhesion="50 mJ/m^2")
+    with pytest.raises(ValueError, match="coarse-grain"):
+        wearopt.contact(z, pixel_size="20 nm", modulus="100 GPa", pressures=1e7,
+                        work_of_adhesion="50 mJ/m^2", adhesion_range="0.01 nm")
+    c = wearopt.contact(z, pixel_size="20 nm", modulus="100 GPa", pressures=1e7,
+                        work_of_adhesion="50 mJ/m^2", adhesion_range="0.01 nm",
+                        coarse_grain=True)
+    assert c["adhesion"]["coarse_grained"] > 1

@@ -7,10 +7,13 @@ use std::path::Path;
 use crate::contact::{Settings as SolveSettings, Solution, Solver};
 use crate::surface::read::{self, Format, Overrides};
 use crate::surface::{analyse, level, HeightMap, Levelling, Roughness, Settings};
-use crate::units::{parse_quantity, Dimension};
+use crate::units::{format_quantity, parse_quantity, Dimension};
 
 use super::{AppError, OptionName};
 
+pub use crate::contact::adhesion::{
+    Adhesion, AdhesiveSolution, PullOff, Resolution, RESOLVED_PIXELS, WELL_RESOLVED_PIXELS,
+};
 pub use crate::contact::{Outcome, DEFAULT_TOLERANCE};
 pub use crate::problem::scan_contact::{scan_contact, statistical, ScanContact, Statistical};
 
@@ -34,6 +37,55 @@ pub struct ContactOptions {
     /// Keep the pressure and gap fields of every solution (for `--fields` and the
     /// HTML page).
     pub fields: bool,
+    /// An attraction between the surfaces, solved beside the adhesion-free contact.
+    pub adhesion: Option<AdhesionOptions>,
+}
+
+/// The attraction of `wearopt contact --work-of-adhesion γ --adhesion-range ρ`:
+/// the exponential law, energy `−γ e^{−g/ρ}` per unit area.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AdhesionOptions {
+    /// γ, the work of adhesion (J/m²).
+    pub work: f64,
+    /// ρ, the range (m).
+    pub range: f64,
+    /// Where the map cannot resolve ρ, raise it to a well-resolved range (a
+    /// process zone of [`WELL_RESOLVED_PIXELS`] pixels) instead of refusing it.
+    pub coarse_grain: bool,
+}
+
+/// The adhesive side of a contact document.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AdhesionResult {
+    /// γ (J/m²).
+    pub work: f64,
+    /// ρ as asked (m).
+    pub range_asked: f64,
+    /// ρ as solved (m): as asked, or coarse-grained up to the resolved range.
+    pub range: f64,
+    /// How the pixels resolve ρ as asked.
+    pub resolution_asked: Resolution,
+    /// How they resolve ρ as solved.
+    pub resolution: Resolution,
+    /// The pull-off from the contact at the largest pressure.
+    pub pull_off: PullOff,
+    /// Its force over the map's area (N, ≥ 0): −pull-off pressure × area.
+    pub pull_off_force: f64,
+    /// The map's (nominal) area (m²).
+    pub area: f64,
+}
+
+impl AdhesionResult {
+    /// ρ solved over ρ asked when coarse-grained, else None.
+    pub fn coarse_grained(&self) -> Option<f64> {
+        (self.range > self.range_asked).then(|| self.range / self.range_asked)
+    }
+
+    /// Whether the process zone, though resolved, spans fewer than
+    /// [`WELL_RESOLVED_PIXELS`] pixels.
+    pub fn marginal(&self) -> bool {
+        self.resolution.process_zone_pixels < WELL_RESOLVED_PIXELS
+    }
 }
 
 impl Default for ContactOptions {
@@ -47,6 +99,7 @@ impl Default for ContactOptions {
             height_unit: None,
             tolerance: DEFAULT_TOLERANCE,
             fields: false,
+            adhesion: None,
         }
     }
 }
@@ -129,6 +182,19 @@ fn check(options: &ContactOptions) -> Result<(), AppError> {
             });
         }
     }
+    if let Some(a) = options.adhesion {
+        for (name, value, example) in [
+            ("work_of_adhesion", a.work, "\"50 mJ/m^2\""),
+            ("adhesion_range", a.range, "\"0.5 nm\""),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(AppError::Invalid {
+                    options: vec![(OptionName(name), value.to_string())],
+                    rule: format!("must be positive and finite, e.g. {example}"),
+                });
+            }
+        }
+    }
     if !(options.tolerance > 0.0 && options.tolerance < 1.0) {
         return Err(AppError::Invalid {
             options: vec![(OptionName("tolerance"), options.tolerance.to_string())],
@@ -145,6 +211,9 @@ pub struct ContactPoint {
     pub solution: Solution,
     /// The statistical model's answer, when the map has McCool parameters.
     pub statistical: Option<Statistical>,
+    /// The contact with adhesion at the same mean pressure, when asked for
+    /// (its fields empty unless asked for).
+    pub adhesive: Option<AdhesiveSolution>,
 }
 
 impl ContactPoint {
@@ -180,6 +249,8 @@ pub struct ContactDocument {
     pub roughness: Result<Roughness, String>,
     /// One point per pressure, in the order given.
     pub points: Vec<ContactPoint>,
+    /// The resolution, the range solved and the pull-off, with adhesion.
+    pub adhesion: Option<AdhesionResult>,
 }
 
 /// Reads the map at `path` and solves its contact, as `wearopt contact` does.
@@ -265,6 +336,14 @@ fn solved(
         }
         points_solved.push(s);
     }
+    let area = nx as f64 * dx * ny as f64 * dy;
+    let (mut adhesive, adhesion) = match options.adhesion {
+        Some(a) => {
+            let (states, result) = adhesive(&mut solver, &a, options, area, &origin)?;
+            (states.into_iter().map(Some).collect(), Some(result))
+        }
+        None => (vec![None; options.pressures.len()], None),
+    };
     let roughness = analyse(
         map,
         &Settings {
@@ -273,10 +352,10 @@ fn solved(
         },
     )
     .map_err(|e| e.to_string());
-    let area = nx as f64 * dx * ny as f64 * dy;
     let points = points_solved
         .into_iter()
-        .map(|solution| {
+        .zip(adhesive.iter_mut())
+        .map(|(solution, adhesive)| {
             let statistical = roughness.as_ref().ok().map(|r| {
                 let p = r.parameters;
                 statistical(
@@ -290,6 +369,7 @@ fn solved(
             ContactPoint {
                 solution,
                 statistical,
+                adhesive: adhesive.take(),
             }
         })
         .collect();
@@ -312,5 +392,93 @@ fn solved(
         heights: levelled.heights().iter().map(|h| h - mean).collect(),
         roughness,
         points,
+        adhesion,
     })
+}
+
+/// The adhesive contact at every pressure (along one approach) and the pull-off
+/// from the largest; ρ checked against the pixels first, and coarse-grained
+/// when allowed.
+fn adhesive(
+    solver: &mut Solver,
+    a: &AdhesionOptions,
+    options: &ContactOptions,
+    area: f64,
+    origin: &str,
+) -> Result<(Vec<AdhesiveSolution>, AdhesionResult), AppError> {
+    let contact_error = |error| AppError::Contact {
+        origin: origin.to_string(),
+        error,
+    };
+    let asked = Adhesion::new(a.work, a.range).map_err(contact_error)?;
+    let resolution_asked = solver.resolution(&asked);
+    let law = if resolution_asked.resolved() {
+        asked
+    } else {
+        let least = Adhesion::range_for_process_zone(
+            a.work,
+            solver.modulus(),
+            RESOLVED_PIXELS * solver.pixel(),
+        );
+        // Coarse-grained, the range is made well resolved, not just barely.
+        let range = Adhesion::range_for_process_zone(
+            a.work,
+            solver.modulus(),
+            WELL_RESOLVED_PIXELS * solver.pixel(),
+        );
+        if !a.coarse_grain {
+            let len = |x: f64| format_quantity(x, Dimension::Length);
+            return Err(AppError::Invalid {
+                options: vec![
+                    (OptionName("adhesion_range"), len(a.range)),
+                    (
+                        OptionName("work_of_adhesion"),
+                        format_quantity(a.work, Dimension::SurfaceEnergy),
+                    ),
+                ],
+                rule: format!(
+                    "the map cannot resolve this range: the process zone π E* ρ²/(4γ) = {} spans {:.3} pixels of {}, and the solve needs at least {RESOLVED_PIXELS}; give ρ ≥ {}, a finer map, or --coarse-grain to solve at ρ = {} (×{:.3}, a process zone of {WELL_RESOLVED_PIXELS} pixels)",
+                    len(resolution_asked.process_zone),
+                    resolution_asked.process_zone_pixels,
+                    len(solver.pixel()),
+                    len(least),
+                    len(range),
+                    range / a.range
+                ),
+            });
+        }
+        Adhesion::new(a.work, range).map_err(contact_error)?
+    };
+    let settings = SolveSettings {
+        tolerance: options.tolerance,
+        ..SolveSettings::default()
+    };
+    let mut states = solver
+        .adhesive_loading(&options.pressures, &law, &settings)
+        .map_err(contact_error)?;
+    let top = states
+        .iter()
+        .max_by(|x, y| x.pressure.total_cmp(&y.pressure))
+        .cloned()
+        .ok_or_else(|| contact_error(crate::contact::ContactError::Pressure(f64::NAN)))?;
+    let pull_off = solver
+        .pull_off(&top, &law, &settings)
+        .map_err(contact_error)?;
+    if !options.fields {
+        for s in &mut states {
+            s.pressures = Vec::new();
+            s.gaps = Vec::new();
+        }
+    }
+    let result = AdhesionResult {
+        work: a.work,
+        range_asked: a.range,
+        range: law.range,
+        resolution_asked,
+        resolution: solver.resolution(&law),
+        pull_off_force: 0.0 - pull_off.pressure * area,
+        pull_off,
+        area,
+    };
+    Ok((states, result))
 }

@@ -45,6 +45,29 @@ pub(crate) struct ContactArgs {
     /// The residual at which each solve stops (see docs/contact.md).
     #[arg(long, value_name = "TOL", default_value_t = ct::DEFAULT_TOLERANCE, allow_hyphen_values = true)]
     tolerance: f64,
+    /// Add an attraction between the surfaces, the exponential law −γ e^{−g/ρ}: its work of
+    /// adhesion γ, e.g. "50 mJ/m^2" (with --adhesion-range). Solved beside the adhesion-free
+    /// contact, elastic, along the approach; the pull-off of the map is reported.
+    #[arg(
+        long,
+        value_name = "GAMMA",
+        allow_hyphen_values = true,
+        requires = "adhesion_range"
+    )]
+    work_of_adhesion: Option<String>,
+    /// The range ρ of the attraction, e.g. "1 nm" (with --work-of-adhesion). The map must
+    /// resolve it: the process zone π E* ρ²/(4γ) must span 3 pixels or more.
+    #[arg(
+        long,
+        value_name = "RHO",
+        allow_hyphen_values = true,
+        requires = "work_of_adhesion"
+    )]
+    adhesion_range: Option<String>,
+    /// Where the map cannot resolve ρ, raise it to a well-resolved range (a process zone of
+    /// 6 pixels; the report says by how much) instead of refusing.
+    #[arg(long, requires = "work_of_adhesion")]
+    coarse_grain: bool,
     /// Output format.
     #[arg(long, value_parser = formats("contact", report::contact::FORMATS), default_value = "text")]
     format: Format,
@@ -52,7 +75,8 @@ pub(crate) struct ContactArgs {
     #[arg(long, value_name = "AREA.svg")]
     plot: Option<PathBuf>,
     /// Write each pressure's pressure and gap fields as .npy into this folder
-    /// (pressure_1.npy, gap_1.npy, … in the order of --pressure; Pa and m, shape (ny, nx)).
+    /// (pressure_1.npy, gap_1.npy, … in the order of --pressure; Pa and m, shape (ny, nx));
+    /// with adhesion also adhesive_pressure_1.npy, adhesive_gap_1.npy, ….
     #[arg(long, value_name = "DIR")]
     fields: Option<PathBuf>,
 }
@@ -75,6 +99,14 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         .as_deref()
         .map(|t| ct::positive(OptionName("hardness"), t, Dimension::Pressure))
         .transpose()?;
+    let adhesion = match (&args.work_of_adhesion, &args.adhesion_range) {
+        (Some(w), Some(r)) => Some(ct::AdhesionOptions {
+            work: ct::positive(OptionName("work_of_adhesion"), w, Dimension::SurfaceEnergy)?,
+            range: ct::positive(OptionName("adhesion_range"), r, Dimension::Length)?,
+            coarse_grain: args.coarse_grain,
+        }),
+        _ => None,
+    };
     if let Some(dir) = &args.fields {
         if !dir.is_dir() {
             return Err(super::usage(format!(
@@ -92,6 +124,7 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         height_unit,
         tolerance: args.tolerance,
         fields: args.fields.is_some() || args.format == Format::Html,
+        adhesion,
     };
     let doc = ct::contact(&args.scan, &options)?;
     if let Some(path) = &args.plot {
@@ -100,10 +133,15 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
     if let Some(dir) = &args.fields {
         let [nx, ny] = doc.pixels;
         for (i, pt) in doc.points.iter().enumerate() {
-            for (name, field) in [
+            let mut fields = vec![
                 ("pressure", &pt.solution.pressures),
                 ("gap", &pt.solution.gaps),
-            ] {
+            ];
+            if let Some(a) = &pt.adhesive {
+                fields.push(("adhesive_pressure", &a.pressures));
+                fields.push(("adhesive_gap", &a.gaps));
+            }
+            for (name, field) in fields {
                 let path = dir.join(format!("{name}_{}.npy", i + 1));
                 std::fs::write(&path, report::contact::npy(nx, ny, field))
                     .map_err(|e| super::unwritable(&path, "a field", &e))?;

@@ -178,7 +178,8 @@ impl Solver {
     }
 
     /// The adhesive contact at mean gap `mean_gap` (m, > 0). `start`, a previous
-    /// solution's gaps, seeds the iteration (rescaled to the new mean); without
+    /// solution's gaps, seeds the iteration (its open gaps shifted to the new
+    /// mean, its contact kept); without
     /// it the iteration starts from the undeformed gaps (the map's shape, its
     /// negative part cut to contact). `settings.hardness` is not used: the
     /// adhesive contact is elastic.
@@ -196,7 +197,14 @@ impl Solver {
         let top = self.heights.iter().copied().fold(f64::MIN, f64::max);
         let mut g: Vec<f64> = match start {
             Some(s) if s.len() == n && s.iter().any(|&x| x > 0.0) => {
-                s.iter().map(|&x| x.max(0.0)).collect()
+                // The open pixels moved together to the new mean, the contact
+                // kept (a rigid step of the body, the nearest guess to the
+                // new equilibrium); any overshoot is taken back by scaling.
+                let open = s.iter().filter(|&&x| x > 0.0).count() as f64;
+                let shift = (mean_gap - s.iter().sum::<f64>() / n as f64) * n as f64 / open;
+                s.iter()
+                    .map(|&x| if x > 0.0 { (x + shift).max(0.0) } else { 0.0 })
+                    .collect()
             }
             _ => self
                 .heights
@@ -223,22 +231,32 @@ impl Solver {
         let n = g.len();
         let scale = (0.5 * self.modulus * self.slope_rms).max(adhesion.peak_stress());
         scale_gap(g, mean_gap);
+        // `elastic` holds K⁻¹(g + h); after a step that neither clamps nor opens
+        // a pixel it is updated by linearity (K⁻¹(g − τt + h) = K⁻¹(g + h) − τK⁻¹t,
+        // the mean untouched since t sums to zero), which saves one of the two
+        // convolutions; convergence is only ever declared on a fresh one.
+        let mut elastic = vec![0.0; n];
         let mut w = vec![0.0; n];
         let mut t = vec![0.0; n];
         let mut r = vec![0.0; n];
-        let mut shifted = vec![0.0; n];
+        // `recompute`: K⁻¹(g + h) to be convolved afresh at the top of the loop;
+        // `exact`: it was, this iteration.
+        let (mut recompute, mut exact) = (true, false);
         let mut conjugate = false;
         let mut norm_old = 1.0;
         let mut iterations = 0;
         loop {
+            if recompute {
+                for ((s, &gi), &hi) in w.iter_mut().zip(g.iter()).zip(&self.heights) {
+                    *s = gi + hi;
+                }
+                self.compliance.apply_inverse(&w, &mut elastic);
+                exact = true;
+            }
             // The gradient of the energy, centred on the open pixels: there its
             // mean is minus the mean pressure.
-            for ((s, &gi), &hi) in shifted.iter_mut().zip(g.iter()).zip(&self.heights) {
-                *s = gi + hi;
-            }
-            self.compliance.apply_inverse(&shifted, &mut w);
             let [sum, count] = lane_sum(n, |i| {
-                w[i] += adhesion.traction(g[i]);
+                w[i] = elastic[i] + adhesion.traction(g[i]);
                 let open = open(g[i]);
                 [open * w[i], open]
             });
@@ -252,6 +270,10 @@ impl Solver {
             });
             let residual = (imbalance / n as f64).sqrt() / scale;
             if residual <= settings.tolerance || iterations >= settings.max_iterations {
+                if !exact {
+                    recompute = true;
+                    continue;
+                }
                 let outcome = if residual <= settings.tolerance {
                     Outcome::Converged
                 } else {
@@ -276,17 +298,31 @@ impl Solver {
             // The step; pixels it closes are clamped to contact, contacting
             // pixels the attraction or the elastic field would open are opened
             // by the gradient step (and the conjugate sequence restarts).
-            let mut opened = false;
+            let (mut opened, mut clamped) = (false, false);
             for (gi, (&ti, &wi)) in g.iter_mut().zip(t.iter().zip(&w)) {
                 if *gi > 0.0 {
-                    *gi = (*gi - tau * ti).max(0.0);
+                    let next = *gi - tau * ti;
+                    if next <= 0.0 {
+                        clamped = true;
+                        *gi = 0.0;
+                    } else {
+                        *gi = next;
+                    }
                 } else if wi < 0.0 {
                     *gi = -tau * wi;
                     opened = true;
                 }
             }
             conjugate = !opened;
-            scale_gap(g, mean_gap);
+            if opened || clamped {
+                scale_gap(g, mean_gap);
+                recompute = true;
+            } else {
+                for (e, &ri) in elastic.iter_mut().zip(&r) {
+                    *e -= tau * ri;
+                }
+                (recompute, exact) = (iterations % 64 == 0, false);
+            }
         }
     }
 
@@ -531,6 +567,7 @@ impl Solver {
     ) -> Result<PullOff, ContactError> {
         let step = (0.5 * adhesion.range).max(self.rms / 64.0);
         let mut state = from.clone();
+        let mut previous = from.clone();
         let mut best = from.clone();
         let mut before_best = from.clone();
         let (mut steps, mut iterations) = (0, 0);
@@ -540,14 +577,21 @@ impl Solver {
             if steps > MAX_STEPS {
                 break;
             }
+            // The next gaps foreseen by extrapolating the last two states'.
+            let guess: Vec<f64> = state
+                .gaps
+                .iter()
+                .zip(&previous.gaps)
+                .map(|(&g, &h)| if g > 0.0 && h > 0.0 { 2.0 * g - h } else { g })
+                .collect();
             let next =
-                self.adhesive_at_gap(state.mean_gap + step, adhesion, settings, Some(&state.gaps))?;
+                self.adhesive_at_gap(state.mean_gap + step, adhesion, settings, Some(&guess))?;
             iterations += next.iterations;
             converged &= next.outcome == Outcome::Converged;
-            let previous = std::mem::replace(&mut state, next);
+            previous = std::mem::replace(&mut state, next);
             if state.pressure < best.pressure {
                 best = state.clone();
-                before_best = previous;
+                before_best = previous.clone();
             }
             if state.real_area_fraction == 0.0
                 && best.pressure < 0.0

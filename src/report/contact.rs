@@ -7,14 +7,17 @@ use serde_json::{json, Value};
 use super::format::FormatError;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, sig, sig_exp, Format};
-use crate::app::contact::{ContactDocument, ContactPoint, Outcome};
+use crate::app::contact::{
+    AdhesionResult, ContactDocument, ContactPoint, Outcome, RESOLVED_PIXELS,
+};
 use crate::units::{format_quantity, Dimension};
 
 /// The formats `wearopt contact` writes (the first is the default).
 pub const FORMATS: &[Format] = &[Format::Text, Format::Csv, Format::Json, Format::Html];
 
 /// The CSV columns, in order.
-pub const COLUMNS: [&str; 14] = [
+/// The `adhesive_*` columns are empty without `--work-of-adhesion`.
+pub const COLUMNS: [&str; 22] = [
     "pressure",
     "real_area_fraction",
     "plastic_area_fraction",
@@ -29,6 +32,14 @@ pub const COLUMNS: [&str; 14] = [
     "gw_contact_count",
     "gw_status",
     "area_ratio",
+    "adhesive_real_area_fraction",
+    "adhesive_contact_patches",
+    "adhesive_mean_gap",
+    "adhesive_pressure",
+    "adhesive_max_tension",
+    "adhesive_residual",
+    "adhesive_iterations",
+    "adhesive_status",
 ];
 
 /// The status word of a solve.
@@ -79,7 +90,21 @@ pub fn csv(doc: &ContactDocument) -> String {
                 .unwrap_or_default(),
             cell(pt.area_ratio()),
         ];
+        let a = pt.adhesive.as_ref();
+        let adhesive = [
+            cell(a.map(|a| a.real_area_fraction)),
+            a.map(|a| a.contact_patches.to_string()).unwrap_or_default(),
+            cell(a.map(|a| a.mean_gap)),
+            cell(a.map(|a| a.adhesive_pressure)),
+            cell(a.map(|a| a.max_tension)),
+            cell(a.map(|a| a.residual)),
+            a.map(|a| a.iterations.to_string()).unwrap_or_default(),
+            a.map(|a| status_word(a.outcome).to_string())
+                .unwrap_or_default(),
+        ];
         out.push_str(&cells.join(","));
+        out.push(',');
+        out.push_str(&adhesive.join(","));
         out.push('\n');
     }
     out
@@ -118,9 +143,46 @@ pub fn json_document(doc: &ContactDocument) -> Value {
                 "gw_contact_count": gw.map(|g| g.contact_count),
                 "gw_status": gw.map(|g| g.status.as_str()),
                 "area_ratio": pt.area_ratio(),
+                "adhesive": pt.adhesive.as_ref().map(|a| json!({
+                    "pressure": a.pressure,
+                    "real_area_fraction": a.real_area_fraction,
+                    "contact_patches": a.contact_patches,
+                    "mean_gap": a.mean_gap,
+                    "adhesive_pressure": a.adhesive_pressure,
+                    "max_pressure": a.max_pressure,
+                    "max_tension": a.max_tension,
+                    "residual": a.residual,
+                    "iterations": a.iterations,
+                    "status": status_word(a.outcome),
+                })),
             })
         })
         .collect();
+    let adhesion = doc.adhesion.as_ref().map(|a| {
+        let r = &a.resolution;
+        json!({
+            "law": "exponential",
+            "work_of_adhesion": a.work,
+            "range": a.range,
+            "range_asked": a.range_asked,
+            "coarse_grained": a.coarse_grained(),
+            "process_zone": r.process_zone,
+            "process_zone_pixels": r.process_zone_pixels,
+            "process_zone_pixels_asked": a.resolution_asked.process_zone_pixels,
+            "pixel_over_range": r.pixel_over_range,
+            "rise_over_range": r.rise_over_range,
+            "marginal": a.marginal(),
+            "pull_off_pressure": a.pull_off.pressure,
+            "pull_off_force": a.pull_off_force,
+            "pull_off_mean_gap": a.pull_off.mean_gap,
+            "pull_off_real_area_fraction": a.pull_off.real_area_fraction,
+            "pull_off_steps": a.pull_off.steps,
+            "pull_off_step": a.pull_off.step,
+            "pull_off_iterations": a.pull_off.iterations,
+            "pull_off_status": status_word(a.pull_off.outcome),
+            "area": a.area,
+        })
+    });
     json!({
         "file": doc.file,
         "format": doc.format.name(),
@@ -134,6 +196,7 @@ pub fn json_document(doc: &ContactDocument) -> Value {
         "statistical_inputs": statistical_inputs,
         "statistical_error": doc.roughness.as_ref().err(),
         "points": points,
+        "adhesion": adhesion,
     })
 }
 
@@ -224,7 +287,125 @@ fn header(doc: &ContactDocument) -> Vec<String> {
             "Statistical: no McCool parameters for this map ({e}); only the exact answer."
         )),
     }
+    if let Some(a) = &doc.adhesion {
+        lines.push(adhesion_line(doc, a));
+    }
     lines
+}
+
+/// The adhesion's law, range and resolution in words.
+fn adhesion_line(doc: &ContactDocument, a: &AdhesionResult) -> String {
+    let r = &a.resolution;
+    let range = match a.coarse_grained() {
+        Some(k) => format!(
+            "ρ = {} (coarse-grained ×{} from the {} asked, whose process zone spans {} pixels)",
+            length(a.range),
+            sig(k, 3),
+            length(a.range_asked),
+            sig(a.resolution_asked.process_zone_pixels, 2)
+        ),
+        None => format!("ρ = {}", length(a.range)),
+    };
+    format!(
+        "With adhesion: exponential law −γ e^(−g/ρ), γ = {}, {range}; process zone π E* ρ²/(4γ) = {} = {} pixels (≥ {} needed), pixel/ρ = {}, rms rise per pixel/ρ = {}. Rey–Anciaux–Molinari conjugate gradient on the gap, elastic{}, each pressure met along one approach from out of range.",
+        format_quantity(a.work, Dimension::SurfaceEnergy),
+        length(r.process_zone),
+        sig(r.process_zone_pixels, 3),
+        RESOLVED_PIXELS,
+        sig(r.pixel_over_range, 3),
+        sig(r.rise_over_range, 3),
+        if doc.options.hardness.is_some() {
+            " (the cap H applies to the adhesion-free solve only)"
+        } else {
+            ""
+        }
+    )
+}
+
+/// One point's adhesive cells, or None without adhesion.
+fn adhesive_row(pt: &ContactPoint, solve: String) -> Option<Vec<String>> {
+    let a = pt.adhesive.as_ref()?;
+    Some(vec![
+        pressure(a.pressure),
+        percent(a.real_area_fraction),
+        a.contact_patches.to_string(),
+        length(a.mean_gap),
+        pressure(a.adhesive_pressure),
+        pressure(a.max_tension),
+        solve,
+        sig_exp(a.residual, 2),
+        sig(
+            a.real_area_fraction / pt.solution.real_area_fraction.max(f64::MIN_POSITIVE),
+            3,
+        ),
+    ])
+}
+
+/// The headings of the adhesive table.
+const ADHESIVE_HEAD: [&str; 9] = [
+    "mean pressure",
+    "real area",
+    "patches",
+    "mean gap",
+    "attraction",
+    "max tension",
+    "iterations",
+    "residual",
+    "area / dry",
+];
+
+/// The pull-off in words.
+fn pull_off_words(a: &AdhesionResult) -> String {
+    let p = &a.pull_off;
+    format!(
+        "Pull-off of the map (the most tensile mean pressure on the way out from the largest load, mean gap raised in steps of {} and an eighth of that about the minimum): {} mean, {} over its {}; at mean gap {}, {} still in contact; {} steps, {}.",
+        length(p.step),
+        pressure(p.pressure),
+        format_quantity(a.pull_off_force, Dimension::Force),
+        format_quantity(a.area, Dimension::Area),
+        length(p.mean_gap),
+        percent(p.real_area_fraction),
+        p.steps,
+        status_word(p.outcome)
+    )
+}
+
+/// Warnings and notes on the adhesive solve.
+fn adhesion_notes(doc: &ContactDocument, a: &AdhesionResult) -> Vec<String> {
+    let mut notes = Vec::new();
+    if let Some(k) = a.coarse_grained() {
+        notes.push(format!(
+            "note: ρ was coarse-grained ×{} (from {} to {}) so that the map resolves it well; the pull-off and the adhesive areas are those of the wider, weaker-peaked law (peak traction γ/ρ {} instead of {})",
+            sig(k, 3),
+            length(a.range_asked),
+            length(a.range),
+            pressure(a.work / a.range),
+            pressure(a.work / a.range_asked)
+        ));
+    }
+    if a.marginal() {
+        notes.push(format!(
+            "WARNING: the process zone spans only {} pixels (fewer than {}): the adhesive solution is marginally resolved; a finer map or a longer range would make it sure",
+            sig(a.resolution.process_zone_pixels, 2),
+            super::super::app::contact::WELL_RESOLVED_PIXELS
+        ));
+    }
+    for pt in &doc.points {
+        if let Some(s) = &pt.adhesive {
+            if s.outcome == Outcome::IterationLimit {
+                notes.push(format!(
+                    "WARNING: with adhesion at {} the solve stopped at its iteration limit ({} iterations) with residual {}: that row is the last iterate, not a solution",
+                    pressure(s.pressure),
+                    s.iterations,
+                    sig_exp(s.residual, 2)
+                ));
+            }
+        }
+    }
+    if a.pull_off.outcome == Outcome::IterationLimit {
+        notes.push("WARNING: some steps of the pull-off stopped at their iteration limit: the pull-off is approximate".to_string());
+    }
+    notes
 }
 
 /// One point's cells in the tables of the text and the HTML page; `solve`, the
@@ -270,6 +451,18 @@ pub fn text(doc: &ContactDocument) -> String {
         .map(|pt| row(pt, pt.solution.iterations.to_string()))
         .collect();
     out.push_str(&aligned(&head, &rows));
+    if let Some(a) = &doc.adhesion {
+        let rows: Vec<Vec<String>> = doc
+            .points
+            .iter()
+            .filter_map(|pt| adhesive_row(pt, pt.adhesive.as_ref()?.iterations.to_string()))
+            .collect();
+        out.push_str("\nWith adhesion (attraction: the mean adhesive traction; area / dry: over the adhesion-free real area):\n");
+        out.push_str(&aligned(&ADHESIVE_HEAD, &rows));
+        out.push('\n');
+        out.push_str(&pull_off_words(a));
+        out.push('\n');
+    }
     let mut notes = Vec::new();
     for pt in &doc.points {
         let s = &pt.solution;
@@ -306,6 +499,9 @@ pub fn text(doc: &ContactDocument) -> String {
             "note: at {} the contact patches average fewer than 20 pixels: the real area there is resolution-limited (a finer scan of the same region gives a smaller, truer area)",
             small.join(", ")
         ));
+    }
+    if let Some(a) = &doc.adhesion {
+        notes.extend(adhesion_notes(doc, a));
     }
     if let Some(w) = comparison_words(doc) {
         out.push('\n');
@@ -375,6 +571,24 @@ pub fn area_plot(doc: &ContactDocument) -> String {
         Axis::log("real area / nominal area"),
     )
     .with_series(Series::new("exact (FFT boundary elements)", exact).with_marker(Marker::Circle));
+    let adhesive: Vec<(f64, f64)> = sorted(
+        doc.points
+            .iter()
+            .filter_map(|pt| {
+                pt.adhesive
+                    .as_ref()
+                    .map(|a| (a.pressure, a.real_area_fraction))
+            })
+            .filter(|p| p.1 > 0.0)
+            .collect(),
+    );
+    if !adhesive.is_empty() {
+        plot = plot.with_series(
+            Series::new("exact with adhesion", adhesive)
+                .with_marker(Marker::Triangle)
+                .with_color("#009e73"),
+        );
+    }
     if !gw.is_empty() {
         plot = plot.with_series(
             Series::new("statistical (Greenwood–Williamson, McCool)", gw)
@@ -417,25 +631,17 @@ fn map_image(doc: &ContactDocument) -> Vec<u8> {
 }
 
 /// The contact at one pressure: the map in pale grey, the contacting share of
-/// each block in blue (red where saturated at H).
-fn contact_image(doc: &ContactDocument, pressures: &[f64]) -> Vec<u8> {
+/// each block in blue (red where saturated at H); `touching` and `saturated`
+/// are 1 or 0 per pixel.
+fn contact_image(doc: &ContactDocument, touching: &[f64], saturated: &[f64]) -> Vec<u8> {
     let [nx, ny] = doc.pixels;
     let (b, w, h) = blocks(nx, ny);
     let heights = block_mean(&doc.heights, nx, ny, b);
     let lo = heights.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let span = if hi > lo { hi - lo } else { 1.0 };
-    let cap = doc.options.hardness.unwrap_or(f64::INFINITY);
-    let touching: Vec<f64> = pressures
-        .iter()
-        .map(|&p| if p > 0.0 { 1.0 } else { 0.0 })
-        .collect();
-    let saturated: Vec<f64> = pressures
-        .iter()
-        .map(|&p| if p >= cap { 1.0 } else { 0.0 })
-        .collect();
-    let contact = block_mean(&touching, nx, ny, b);
-    let plastic = block_mean(&saturated, nx, ny, b);
+    let contact = block_mean(touching, nx, ny, b);
+    let plastic = block_mean(saturated, nx, ny, b);
     let mut rgb = Vec::with_capacity(3 * w * h);
     for i in 0..w * h {
         let grey = 200.0 + 55.0 * (heights[i] - lo) / span;
@@ -520,10 +726,36 @@ pub fn html(doc: &ContactDocument) -> String {
         &rows,
         &[6],
     );
+    if let Some(a) = &doc.adhesion {
+        p.heading("With adhesion");
+        let rows: Vec<Vec<String>> = doc
+            .points
+            .iter()
+            .filter_map(|pt| {
+                let s = pt.adhesive.as_ref()?;
+                adhesive_row(
+                    pt,
+                    format!("{} ({} it.)", status_word(s.outcome), s.iterations),
+                )
+            })
+            .collect();
+        let mut head = ADHESIVE_HEAD;
+        head[6] = "status";
+        p.table(&head, &rows, &[6]);
+        p.paragraph(&pull_off_words(a), Some("status"));
+        let notes = adhesion_notes(doc, a);
+        if !notes.is_empty() {
+            p.list(&notes, "warn");
+        }
+    }
     p.figure(
         "area",
         &area_plot(doc),
-        "Real-area fraction against mean pressure: the exact boundary-element solution (circles) and the statistical model with McCool's parameters of the same map (squares).",
+        if doc.adhesion.is_some() {
+            "Real-area fraction against mean pressure: the exact boundary-element solution without adhesion (circles) and with it (triangles), and the statistical model with McCool's parameters of the same map, without adhesion (squares)."
+        } else {
+            "Real-area fraction against mean pressure: the exact boundary-element solution (circles) and the statistical model with McCool's parameters of the same map (squares)."
+        },
     );
     p.heading("The map and its contact");
     let [nx, ny] = doc.pixels;
@@ -545,14 +777,28 @@ pub fn html(doc: &ContactDocument) -> String {
         if s.pressures.is_empty() {
             continue;
         }
+        let cap = doc.options.hardness.unwrap_or(f64::INFINITY);
+        let touching: Vec<f64> = s.pressures.iter().map(|&p| f64::from(p > 0.0)).collect();
+        let saturated: Vec<f64> = s.pressures.iter().map(|&p| f64::from(p >= cap)).collect();
         images.push(format!(
             "<figure style=\"width:{side}px;margin:0\">{}<figcaption>at {}: {} in contact (blue{}), {} patches</figcaption></figure>",
-            image_tag(&contact_image(doc, &s.pressures), "contact", side),
+            image_tag(&contact_image(doc, &touching, &saturated), "contact", side),
             pressure(s.pressure),
             percent(s.real_area_fraction),
             if s.plastic_area_fraction > 0.0 { "; red at H" } else { "" },
             s.contact_patches
         ));
+        if let Some(a) = pt.adhesive.as_ref().filter(|a| !a.gaps.is_empty()) {
+            let touching: Vec<f64> = a.gaps.iter().map(|&g| f64::from(g <= 0.0)).collect();
+            let none = vec![0.0; touching.len()];
+            images.push(format!(
+                "<figure style=\"width:{side}px;margin:0\">{}<figcaption>with adhesion at {}: {} in contact, {} patches</figcaption></figure>",
+                image_tag(&contact_image(doc, &touching, &none), "adhesive contact", side),
+                pressure(a.pressure),
+                percent(a.real_area_fraction),
+                a.contact_patches
+            ));
+        }
     }
     p.raw(&format!(
         "<div style=\"display:flex;flex-wrap:wrap;gap:1em\">\n{}\n</div>",

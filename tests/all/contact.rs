@@ -427,3 +427,160 @@ fn contact_model_is_refused_where_it_cannot_apply() {
         "{err}"
     );
 }
+
+/// A 64 × 64 self-affine map (rms 4 nm, 20 nm pixels) as `.npy`, small enough
+/// for the adhesive sweeps of a debug build.
+fn small_map(name: &str) -> PathBuf {
+    use wearopt::surface::synthetic::{random_surface, Spectrum};
+    let n = 64;
+    let pixel = 20e-9;
+    let q = |k: f64| 2.0 * std::f64::consts::PI * k / (n as f64 * pixel);
+    let map = random_surface(
+        n,
+        pixel,
+        Spectrum::SelfAffine {
+            hurst: 0.8,
+            rolloff: q(2.0),
+            cutoff: q(16.0),
+        },
+        4e-9,
+        7,
+    )
+    .unwrap();
+    let path = tmp("adhesion").join(format!("{name}.npy"));
+    let nm: Vec<f64> = map.heights().iter().map(|h| h * 1e9).collect();
+    std::fs::write(&path, wearopt::report::contact::npy(n, n, &nm)).unwrap();
+    path
+}
+
+fn adhesive_json(map: &Path, extra: &[&str]) -> serde_json::Value {
+    let out = stdout(
+        wearopt()
+            .args(["contact", map.to_str().unwrap()])
+            .args(["--pixel-size", "20nm", "--height-unit", "nm"])
+            .args(["--modulus", "150GPa", "--pressure", "200MPa,50MPa"])
+            .args(["--work-of-adhesion", "0.2 J/m^2", "--format", "json"])
+            .args(extra),
+        0,
+    );
+    serde_json::from_slice(&out).unwrap()
+}
+
+/// With adhesion each point carries the adhesive contact at the same mean
+/// pressure (met to 1e-9), which touches more than the adhesion-free one; the
+/// document carries the resolution and the pull-off, whose force is the
+/// pull-off pressure over the map's area; the CSV's adhesive cells are the
+/// JSON's.
+#[test]
+fn adhesion_adds_the_adhesive_contact_and_the_pull_off() {
+    let map = small_map("contract");
+    let v = adhesive_json(&map, &["--adhesion-range", "1nm"]);
+    for p in v["points"].as_array().unwrap() {
+        let a = &p["adhesive"];
+        let asked = p["pressure"].as_f64().unwrap();
+        assert!((a["pressure"].as_f64().unwrap() / asked - 1.0).abs() < 1e-9);
+        assert_eq!(a["status"], "converged");
+        assert!(a["residual"].as_f64().unwrap() <= 1e-10);
+        assert!(a["real_area_fraction"].as_f64() >= p["real_area_fraction"].as_f64());
+        assert!(a["adhesive_pressure"].as_f64().unwrap() > 0.0);
+        // The tension never exceeds the law's peak, γ/ρ = 200 MPa.
+        assert!(a["max_tension"].as_f64().unwrap() <= 200e6 * (1.0 + 1e-12));
+    }
+    let a = &v["adhesion"];
+    assert_eq!(a["law"], "exponential");
+    assert_eq!(a["range"].as_f64(), Some(1e-9));
+    assert!(a["coarse_grained"].is_null());
+    // π E* ρ² / (4γ) over the pixel.
+    let zone = std::f64::consts::PI * 150e9 * 1e-18 / (4.0 * 0.2);
+    assert!((a["process_zone"].as_f64().unwrap() / zone - 1.0).abs() < 1e-12);
+    assert!((a["process_zone_pixels"].as_f64().unwrap() / (zone / 20e-9) - 1.0).abs() < 1e-12);
+    let off = a["pull_off_pressure"].as_f64().unwrap();
+    assert!(off < 0.0);
+    assert_eq!(a["pull_off_status"], "converged");
+    let area = (64.0 * 20e-9) * (64.0 * 20e-9);
+    assert!((a["pull_off_force"].as_f64().unwrap() / (-off * area) - 1.0).abs() < 1e-12);
+    // The CSV: the adhesive columns hold the JSON's numbers.
+    let out = stdout(
+        wearopt()
+            .args(["contact", map.to_str().unwrap()])
+            .args(["--pixel-size", "20nm", "--height-unit", "nm"])
+            .args(["--modulus", "150GPa", "--pressure", "200MPa,50MPa"])
+            .args(["--work-of-adhesion", "0.2 J/m^2", "--adhesion-range", "1nm"])
+            .args(["--format", "csv"]),
+        0,
+    );
+    let text = String::from_utf8(out).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| head.iter().position(|h| *h == name).unwrap();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(row.len(), head.len());
+    assert_eq!(
+        row[col("adhesive_real_area_fraction")]
+            .parse::<f64>()
+            .unwrap(),
+        v["points"][0]["adhesive"]["real_area_fraction"]
+            .as_f64()
+            .unwrap()
+    );
+    assert_eq!(row[col("adhesive_status")], "converged");
+}
+
+/// A range the pixels cannot resolve is refused (exit 2, the process zone in
+/// pixels, the least range and --coarse-grain named); with --coarse-grain it is
+/// raised to a six-pixel process zone and the report says by how much.
+#[test]
+fn an_unresolved_range_is_refused_or_coarse_grained() {
+    let map = small_map("unresolved");
+    let err = String::from_utf8(stderr(
+        wearopt()
+            .args(["contact", map.to_str().unwrap()])
+            .args(["--pixel-size", "20nm", "--height-unit", "nm"])
+            .args(["--modulus", "150GPa", "--pressure", "50MPa"])
+            .args([
+                "--work-of-adhesion",
+                "0.2 J/m^2",
+                "--adhesion-range",
+                "0.1nm",
+            ]),
+        2,
+    ))
+    .unwrap();
+    assert!(err.contains("--adhesion-range 0.1 nm"), "{err}");
+    assert!(err.contains("spans 0.295 pixels"), "{err}");
+    assert!(err.contains("--coarse-grain"), "{err}");
+    let v = adhesive_json(&map, &["--adhesion-range", "0.1nm", "--coarse-grain"]);
+    let a = &v["adhesion"];
+    assert!((a["process_zone_pixels"].as_f64().unwrap() - 6.0).abs() < 1e-9);
+    let factor = a["coarse_grained"].as_f64().unwrap();
+    assert!((a["range"].as_f64().unwrap() / 1e-10 / factor - 1.0).abs() < 1e-12);
+    assert!(factor > 4.0);
+    // Half a flag is a usage error.
+    stderr(
+        wearopt()
+            .args(["contact", map.to_str().unwrap()])
+            .args(["--pixel-size", "20nm", "--height-unit", "nm"])
+            .args(["--modulus", "150GPa", "--pressure", "50MPa"])
+            .args(["--work-of-adhesion", "0.2 J/m^2"]),
+        2,
+    );
+}
+
+/// The adhesive sweeps give the same numbers on one thread and on two.
+#[test]
+fn adhesion_does_not_depend_on_threads() {
+    let map = small_map("threads");
+    let run = |threads: &str| {
+        stdout(
+            wearopt()
+                .env("RAYON_NUM_THREADS", threads)
+                .args(["contact", map.to_str().unwrap()])
+                .args(["--pixel-size", "20nm", "--height-unit", "nm"])
+                .args(["--modulus", "150GPa", "--pressure", "100MPa"])
+                .args(["--work-of-adhesion", "0.2 J/m^2", "--adhesion-range", "1nm"])
+                .args(["--format", "json"]),
+            0,
+        )
+    };
+    assert_eq!(run("1"), run("2"));
+}

@@ -243,6 +243,9 @@ def contact(
     height_unit: Any = None,
     tolerance: float = 1e-10,
     fields: bool = False,
+    work_of_adhesion: Any = None,
+    adhesion_range: Any = None,
+    coarse_grain: bool = False,
 ) -> Dict[str, Any]:
     """The exact contact of a height map against an elastic half-space of
     composite modulus E* at each mean pressure (periodic FFT boundary
@@ -256,6 +259,15 @@ def contact(
     (.gsf, .x3p, .npy, ASCII), whose pixel size and unit it carries. With
     ``fields=True`` each point also holds ``pressure_field`` (Pa) and
     ``gap_field`` (m), arrays shaped like the map.
+
+    With ``work_of_adhesion`` (γ, "50 mJ/m^2" or J/m²) and ``adhesion_range``
+    (ρ, "1 nm" or metres) each point also holds ``adhesive``, the contact
+    under the attraction −γ e^(−g/ρ) at the same mean pressure (with
+    ``fields=True`` also ``adhesive_pressure_field`` and
+    ``adhesive_gap_field``), and the document ``adhesion``: the resolution,
+    the range solved (``coarse_grain=True`` raises an unresolved ρ instead of
+    refusing it) and the map's pull-off (``pull_off_pressure``,
+    ``pull_off_force``).
 
     >>> import numpy as np
     >>> z = np.load("problems/scans/self-affine-nm.npy")
@@ -275,10 +287,16 @@ def contact(
     pressure_list = [_quantity("a pressure", p, "pascals") for p in pressures]
     e_star = _quantity("modulus", modulus, "pascals")
     cap = _quantity("hardness", hardness, "pascals")
+    adhesion = dict(
+        work_of_adhesion=_quantity("work_of_adhesion", work_of_adhesion, "J/m²"),
+        adhesion_range=_length(adhesion_range),
+        coarse_grain=bool(coarse_grain),
+    )
     if isinstance(heights, (str, os.PathLike)):
-        text, p_fields, g_fields = _wearopt.contact_json(
+        text, p_fields, g_fields, ap_fields, ag_fields = _wearopt.contact_json(
             os.fspath(heights), e_star, pressure_list, cap, level,
             _length(pixel_size), height_unit, float(tolerance), bool(fields),
+            **adhesion,
         )
     else:
         z = _float_array("heights", heights)
@@ -286,14 +304,18 @@ def contact(
             raise ValueError(f"heights: a 2-D array (rows along y) is needed, not {z.ndim}-D")
         if pixel_size is None:
             raise ValueError('pixel_size=None: heights in an array carry no pixel size; give one, e.g. "10 nm"')
-        text, p_fields, g_fields = _wearopt.contact_array(
+        text, p_fields, g_fields, ap_fields, ag_fields = _wearopt.contact_array(
             np.ascontiguousarray(z, dtype=np.float64), _length(pixel_size), e_star,
             pressure_list, cap, level, height_unit, float(tolerance), bool(fields),
+            **adhesion,
         )
     doc = json.loads(text)
     for point, p, g in zip(doc["points"], p_fields, g_fields):
         point["pressure_field"] = p
         point["gap_field"] = g
+    for point, p, g in zip(doc["points"], ap_fields, ag_fields):
+        point["adhesive_pressure_field"] = p
+        point["adhesive_gap_field"] = g
     return doc
 
 

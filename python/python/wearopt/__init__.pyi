@@ -51,9 +51,13 @@ def contact(
     height_unit: Union[str, float, None] = None,
     tolerance: float = 1e-10,
     fields: bool = False,
+    work_of_adhesion: Union[str, float, None] = None,
+    adhesion_range: Union[str, float, None] = None,
+    coarse_grain: bool = False,
 ) -> Dict[str, Any]:
     """The JSON of `wearopt contact SCAN … --format json` as a dict (fields as
-    arrays with `fields=True`).
+    arrays with `fields=True`; with `work_of_adhesion` and `adhesion_range`,
+    the adhesive contact and the map's pull-off too).
 
     >>> wearopt.contact("problems/scans/self-affine.gsf", modulus="150 GPa",
     ...                 pressures="100 MPa")["points"][0]["status"]

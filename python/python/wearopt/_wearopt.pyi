@@ -52,7 +52,10 @@ def contact_json(
     height_unit: Optional[str] = None,
     tolerance: float = 1e-10,
     fields: bool = False,
-) -> Tuple[str, List[np.ndarray], List[np.ndarray]]: ...
+    work_of_adhesion: Optional[str] = None,
+    adhesion_range: Optional[str] = None,
+    coarse_grain: bool = False,
+) -> Tuple[str, List[np.ndarray], List[np.ndarray], List[np.ndarray], List[np.ndarray]]: ...
 def contact_array(
     heights: np.ndarray,
     pixel_size: str,
@@ -63,7 +66,10 @@ def contact_array(
     height_unit: Optional[str] = None,
     tolerance: float = 1e-10,
     fields: bool = False,
-) -> Tuple[str, List[np.ndarray], List[np.ndarray]]: ...
+    work_of_adhesion: Optional[str] = None,
+    adhesion_range: Optional[str] = None,
+    coarse_grain: bool = False,
+) -> Tuple[str, List[np.ndarray], List[np.ndarray], List[np.ndarray], List[np.ndarray]]: ...
 def fit_adhesion_json(
     path: str,
     radius: str,
