@@ -1,7 +1,7 @@
 //! Speed of the contact solver (issue 24): one application of the half-space
 //! compliance (a forward and an inverse 2-D real FFT with the Westergaard kernel)
 //! on 512² and 1024² maps, and a whole elastic solve of the shipped 256² scan at
-//! ~6 % contact, on one thread. The comparison with Tamaas runs side by side in
+//! ~6 % contact, and adhesive solves on it, on one thread. The comparison with Tamaas runs side by side in
 //! `scripts/bench_contact.py`.
 //!
 //! Run: `cargo bench --bench contact`
@@ -10,6 +10,7 @@ use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use wearopt::contact::adhesion::Adhesion;
 use wearopt::contact::fft::Compliance;
 use wearopt::contact::{Settings, Solver};
 use wearopt::surface::read::{load, Overrides};
@@ -50,6 +51,26 @@ fn contact(c: &mut Criterion) {
         "elastic solve, shipped 256² scan, 200 MPa (6.3 % contact)",
         |b| b.iter(|| one.install(|| solver.solve(black_box(200e6), &Settings::default(), None))),
     );
+    // Adhesion: one solve at a mean gap from the undeformed gaps, and one warm
+    // step of a pull-off sweep (the unit of `wearopt contact --work-of-adhesion`).
+    let law = Adhesion::new(0.1, 0.5e-9).unwrap();
+    let settings = Settings::default();
+    g.bench_function(
+        "adhesive solve at mean gap 5 nm, shipped 256² scan, γ = 0.1 J/m², ρ = 0.5 nm",
+        |b| {
+            b.iter(|| {
+                one.install(|| solver.adhesive_at_gap(black_box(5e-9), &law, &settings, None))
+            })
+        },
+    );
+    let state = solver.adhesive_at_gap(5e-9, &law, &settings, None).unwrap();
+    g.bench_function("adhesive warm step (+0.25 nm), same", |b| {
+        b.iter(|| {
+            one.install(|| {
+                solver.adhesive_at_gap(black_box(5.25e-9), &law, &settings, Some(&state.gaps))
+            })
+        })
+    });
     g.finish();
 }
 
