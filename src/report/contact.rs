@@ -221,8 +221,10 @@ pub fn comparison_words(doc: &ContactDocument) -> Option<String> {
         "the statistical model under-predicts the real area, and so Archard wear (proportional to it), by that factor; a problem file built on this scan can take the correction with [roughness] contact_model = \"bem_corrected\""
     } else if lo > 1.05 {
         "the statistical model over-predicts the real area, and so Archard wear, by that factor"
-    } else {
+    } else if lo >= 0.95 && hi <= 1.05 {
         "the two agree within 5 %"
+    } else {
+        "how far the statistical model is depends on the load — it is off by more than 5 % at some of these pressures (the table gives each), and so is its Archard wear; bem_corrected takes the ratio at a problem file's own operating point"
     };
     Some(format!(
         "On this map the statistical (Greenwood–Williamson) real area is {range} the exact one: {verdict}."
@@ -822,4 +824,69 @@ pub fn npy(nx: usize, ny: usize, field: &[f64]) -> Vec<u8> {
         out.extend_from_slice(&x.to_le_bytes());
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::contact::{ContactOptions, Statistical};
+    use crate::contact::Solution;
+    use crate::surface::read::Format as MapFormat;
+
+    fn point(exact: f64, gw: f64) -> ContactPoint {
+        ContactPoint {
+            solution: Solution {
+                pressure: 1e6,
+                real_area_fraction: exact,
+                plastic_area_fraction: 0.0,
+                contact_patches: 3,
+                mean_gap: 1e-9,
+                max_pressure: 1e9,
+                residual: 1e-11,
+                iterations: 10,
+                outcome: Outcome::Converged,
+                pressures: Vec::new(),
+                gaps: Vec::new(),
+            },
+            statistical: Some(Statistical {
+                real_area_fraction: gw,
+                plastic_area_fraction: 0.0,
+                contact_count: 5.0,
+                separation: Some(2.0),
+                status: crate::model::Status::Ok,
+            }),
+            adhesive: None,
+        }
+    }
+
+    fn doc(points: Vec<ContactPoint>) -> ContactDocument {
+        ContactDocument {
+            file: "map".into(),
+            format: MapFormat::Npy,
+            pixels: [8, 8],
+            pixel_size: [1e-8, 1e-8],
+            options: ContactOptions::default(),
+            rms_height: 1e-9,
+            heights: vec![0.0; 64],
+            roughness: Err("none".into()),
+            points,
+            adhesion: None,
+        }
+    }
+
+    /// The verdict follows the whole range of ratios: under, over, within 5 %,
+    /// and load-dependent when the range straddles the band (0.64–0.99 was once
+    /// called agreement).
+    #[test]
+    fn the_verdict_covers_the_whole_range_of_ratios() {
+        let words = |pairs: &[(f64, f64)]| {
+            comparison_words(&doc(pairs.iter().map(|&(e, g)| point(e, g)).collect())).unwrap()
+        };
+        assert!(words(&[(0.1, 0.05), (0.2, 0.12)]).contains("under-predicts"));
+        assert!(words(&[(0.1, 0.12), (0.2, 0.25)]).contains("over-predicts"));
+        assert!(words(&[(0.1, 0.099), (0.2, 0.202)]).contains("agree within 5 %"));
+        let mixed = words(&[(0.1, 0.099), (0.2, 0.128)]);
+        assert!(mixed.contains("depends on the load"), "{mixed}");
+        assert!(!mixed.contains("agree"), "{mixed}");
+    }
 }
