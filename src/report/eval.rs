@@ -492,8 +492,16 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
             "elastic contacts / plastic junctions".into(),
             format!(
                 "{} / {}",
-                q(ev.elastic_real_area, "m²"),
-                q(ev.plastic_real_area, "m²")
+                part(
+                    ev.elastic_real_area,
+                    ev.real_area,
+                    q(ev.elastic_real_area, "m²")
+                ),
+                part(
+                    ev.plastic_real_area,
+                    ev.real_area,
+                    q(ev.plastic_real_area, "m²")
+                )
             ),
         ],
         vec!["contacts".into(), sig_exp(ev.contact_count, 4)],
@@ -765,11 +773,27 @@ pub fn text(r: &EvalReport) -> String {
             String::new()
         }
     ));
+    let plastic_share = ev.plastic_real_area <= NEGLIGIBLE * ev.real_area;
     line(format!(
-        "    elastic contacts {}   plastic junctions {}  (plastic fraction {})",
-        si(ev.elastic_real_area, "m²", 4),
-        si(ev.plastic_real_area, "m²", 4),
-        sig_exp(ev.plastic_area_fraction, 3)
+        "    elastic contacts {}   plastic junctions {}{}",
+        part(
+            ev.elastic_real_area,
+            ev.real_area,
+            si(ev.elastic_real_area, "m²", 4)
+        ),
+        part(
+            ev.plastic_real_area,
+            ev.real_area,
+            si(ev.plastic_real_area, "m²", 4)
+        ),
+        if plastic_share {
+            String::new()
+        } else {
+            format!(
+                "  (plastic fraction {})",
+                sig_exp(ev.plastic_area_fraction, 3)
+            )
+        }
     ));
     if let Some(c) = r.scan_contact {
         for l in scan_contact_lines(c, r.scene.real_area_scale != 1.0) {
@@ -777,25 +801,27 @@ pub fn text(r: &EvalReport) -> String {
         }
     }
     line(format!(
-        "  contacts: {} in all, {} plastic",
+        "  contacts: {} in all; plastic: {}",
         sig_exp(ev.contact_count, 4),
-        sig_exp(ev.plastic_contact_count, 4)
+        part(
+            ev.plastic_contact_count,
+            ev.contact_count,
+            sig_exp(ev.plastic_contact_count, 4)
+        )
     ));
     if let Some(p) = ev.mean_real_pressure {
         line(format!("  mean real pressure W/A_r = {}", si(p, "Pa", 4)));
     }
+    let carried =
+        ev.elastic_load.abs() + ev.plastic_load.abs() + ev.noncontact_load.map_or(0.0, f64::abs);
+    let elastic = part(ev.elastic_load, carried, si(ev.elastic_load, "N", 4));
+    let plastic = part(ev.plastic_load, carried, si(ev.plastic_load, "N", 4));
     match ev.noncontact_load {
         Some(nc) if ev.adhesion_model != AdhesionModel::Jkr => line(format!(
-            "  load carried: elastic {}, plastic {}, attracted asperities not in contact {}",
-            si(ev.elastic_load, "N", 4),
-            si(ev.plastic_load, "N", 4),
+            "  load carried: elastic {elastic}, plastic {plastic}, attracted asperities not in contact {}",
             si(nc, "N", 4)
         )),
-        _ => line(format!(
-            "  load carried: elastic {}, plastic {}",
-            si(ev.elastic_load, "N", 4),
-            si(ev.plastic_load, "N", 4)
-        )),
+        _ => line(format!("  load carried: elastic {elastic}, plastic {plastic}")),
     }
     match (ev.pull_off_force, ev.log10_pull_off_force) {
         (Some(f), Some(l)) => line(format!(
@@ -1097,5 +1123,21 @@ mod load_curve_tests {
             "{svg}"
         );
         assert!(load_curve_caption("W", &c).contains("the most tensile load"));
+    }
+}
+
+/// Parts below this share of their whole are called negligible in words.
+const NEGLIGIBLE: f64 = 1e-12;
+
+/// `shown` (a part of `whole`, in its unit), or in words where it is a
+/// negligible share of it: "none" at zero, else "negligible (share of the
+/// total)" — a number like 3.6e-197 m² beside µm² values stands for none.
+fn part(value: f64, whole: f64, shown: String) -> String {
+    if value == 0.0 && whole > 0.0 {
+        "none".to_string()
+    } else if whole > 0.0 && value.abs() <= NEGLIGIBLE * whole {
+        format!("negligible ({} of the total)", sig_exp(value / whole, 1))
+    } else {
+        shown
     }
 }

@@ -74,7 +74,7 @@ pub fn warning(w: &Warning) -> String {
                 )
             } else {
                 format!(
-                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3), where JKR is not exact: the Lennard-Jones law, valid there, is under other_model; set [interface] adhesion_model = \"lennard_jones\"",
+                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3), where JKR is not exact: the Lennard-Jones law, valid there, is evaluated alongside (the line \"under the Lennard-Jones law\"); set [interface] adhesion_model = \"lennard_jones\"",
                     sig_exp(*tabor_parameter, 3)
                 )
             }
@@ -87,7 +87,7 @@ pub fn warning(w: &Warning) -> String {
                 )
             } else {
                 format!(
-                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3), where DMT is not exact: the Lennard-Jones law, valid there, is under other_model; set [interface] adhesion_model = \"lennard_jones\"",
+                    "Tabor parameter φ0 = {} lies in the JKR–DMT transition (0.3–3), where DMT is not exact: the Lennard-Jones law, valid there, is evaluated alongside (the line \"under the Lennard-Jones law\"); set [interface] adhesion_model = \"lennard_jones\"",
                     sig_exp(*tabor_parameter, 3)
                 )
             }

@@ -367,3 +367,38 @@ fn zero_wear_is_said_in_words() {
     assert_eq!(v["wear_rate"].as_f64(), Some(0.0), "{v}");
     assert!(v["log10_wear_rate"].is_null(), "{v}");
 }
+
+/// The hub under JKR: its plastic share is 6e-185 of the real area. The text
+/// says "negligible" (with the share) instead of printing 3.578e-197 m² beside
+/// µm², and the transition warning names the line a designer reads, not a JSON
+/// key.
+#[test]
+fn negligible_parts_and_the_other_law_are_said_in_words() {
+    let path = crate::common::under_law("micro-gear", "jkr");
+    let t = stdout_of(&["eval", path.to_str().unwrap()]);
+    assert!(
+        t.contains("plastic junctions negligible (6e-185 of the total)"),
+        "{t}"
+    );
+    assert!(
+        t.contains("contacts: 168.3 in all; plastic: negligible"),
+        "{t}"
+    );
+    assert!(
+        t.contains("load carried: elastic 800.0 µN, plastic negligible"),
+        "{t}"
+    );
+    assert!(
+        !t.contains("e-197") && !t.contains("plastic fraction"),
+        "{t}"
+    );
+    assert!(!t.contains("other_model"), "{t}");
+    assert!(
+        t.contains("evaluated alongside (the line \"under the Lennard-Jones law\")"),
+        "{t}"
+    );
+    assert!(
+        t.contains("under the Lennard-Jones law, valid in this transition"),
+        "{t}"
+    );
+}
