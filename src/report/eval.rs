@@ -1083,6 +1083,22 @@ pub(crate) fn scan_contact_lines(
     out
 }
 
+/// Parts below this share of their whole are called negligible in words.
+const NEGLIGIBLE: f64 = 1e-12;
+
+/// `shown` (a part of `whole`, in its unit), or in words where it is a
+/// negligible share of it: "none" at zero, else "negligible (share of the
+/// total)" — a number like 3.6e-197 m² beside µm² values stands for none.
+fn part(value: f64, whole: f64, shown: String) -> String {
+    if value == 0.0 && whole > 0.0 {
+        "none".to_string()
+    } else if whole > 0.0 && value.abs() <= NEGLIGIBLE * whole {
+        format!("negligible ({} of the total)", sig_exp(value / whole, 1))
+    } else {
+        shown
+    }
+}
+
 #[cfg(test)]
 mod load_curve_tests {
     use super::*;
@@ -1123,21 +1139,5 @@ mod load_curve_tests {
             "{svg}"
         );
         assert!(load_curve_caption("W", &c).contains("the most tensile load"));
-    }
-}
-
-/// Parts below this share of their whole are called negligible in words.
-const NEGLIGIBLE: f64 = 1e-12;
-
-/// `shown` (a part of `whole`, in its unit), or in words where it is a
-/// negligible share of it: "none" at zero, else "negligible (share of the
-/// total)" — a number like 3.6e-197 m² beside µm² values stands for none.
-fn part(value: f64, whole: f64, shown: String) -> String {
-    if value == 0.0 && whole > 0.0 {
-        "none".to_string()
-    } else if whole > 0.0 && value.abs() <= NEGLIGIBLE * whole {
-        format!("negligible ({} of the total)", sig_exp(value / whole, 1))
-    } else {
-        shown
     }
 }
