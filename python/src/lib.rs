@@ -89,20 +89,32 @@ fn optimize_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<Stri
     })
 }
 
-/// `wearopt pareto FILE [--points N] --format json`.
+/// `wearopt pareto FILE [--points N] [--adhesion M] [--direction D] --format json`.
 #[pyfunction]
-#[pyo3(signature = (source, is_path, points=None))]
+#[pyo3(signature = (source, is_path, points=None, adhesion=None, direction=None))]
 fn pareto_json(
     py: Python<'_>,
     source: String,
     is_path: bool,
     points: Option<usize>,
+    adhesion: Option<String>,
+    direction: Option<String>,
 ) -> PyResult<String> {
     detached(py, || {
         let (problem, origin) = load(&source, is_path)?;
         let options = ParetoOptions {
             points,
             constraint_values: false,
+            adhesion: adhesion
+                .as_deref()
+                .map(|t| app::pareto::measure(OptionName("adhesion"), t))
+                .transpose()
+                .map_err(words)?,
+            direction: direction
+                .as_deref()
+                .map(|t| app::pareto::direction(OptionName("direction"), t))
+                .transpose()
+                .map_err(words)?,
         };
         let doc = app::pareto::pareto(&problem, &origin, &options, &Silent).map_err(words)?;
         Ok(report::pareto::json_document(&doc).to_string())

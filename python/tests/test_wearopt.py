@@ -589,3 +589,17 @@ def test_adhesion_needs_both_parameters_and_a_resolved_range():
                         work_of_adhesion="50 mJ/m^2", adhesion_range="0.01 nm",
                         coarse_grain=True)
     assert c["adhesion"]["coarse_grained"] > 1
+
+
+def test_pareto_without_a_section_takes_the_command_line():
+    """A study with no [pareto] section: the front from the keyword arguments,
+    the defaults for the rest; without any, the error says how."""
+    front = wearopt.pareto("problems/micro-gear-study.toml", points=3,
+                           adhesion="elastic_adhesion_index", direction="high")
+    assert front["adhesion_measure"] == "elastic_adhesion_index"
+    assert front["direction"] == "high"
+    assert len(front["points"]) == 3
+    with pytest.raises(ValueError, match="--adhesion, --points, --direction"):
+        wearopt.pareto("problems/micro-gear-study.toml")
+    with pytest.raises(ValueError, match="elastic_adhesion_index"):
+        wearopt.pareto("problems/micro-gear-study.toml", adhesion="theta")

@@ -190,7 +190,7 @@ impl AppError {
             }
             AppError::Optimize { origin, error } => format!("{origin}: {error}"),
             AppError::NoPareto { origin } => format!(
-                "{origin}: no [pareto] section: add one to trade wear against adhesion, e.g.\n\n[pareto]\nadhesion = \"pull_off_force\"   # or \"work_of_adhesion\", \"elastic_adhesion_index\"\npoints = {}\ndirection = \"low\"             # \"high\" when more adhesion is wanted (a latch, a switch)",
+                "{origin}: no [pareto] section: give the front on the command line (--adhesion, --points, --direction: any one, the rest defaulting to pull_off_force, {0} points, low) or add a section to trade wear against adhesion, e.g.\n\n[pareto]\nadhesion = \"pull_off_force\"   # or \"work_of_adhesion\", \"elastic_adhesion_index\"\npoints = {0}\ndirection = \"low\"             # \"high\" when more adhesion is wanted (a latch, a switch)",
                 ParetoSpec::DEFAULT_POINTS
             ),
             AppError::NoObjective { origin } => format!(

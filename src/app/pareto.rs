@@ -5,7 +5,7 @@ use crate::model::{self, EvaluationOptions};
 use crate::optimize::functions::quantity_value;
 use crate::optimize::pareto as front;
 use crate::optimize::{DesignSpace, Study};
-use crate::problem::Problem;
+use crate::problem::{DesignKeys, Problem};
 
 use super::{study, valid_scene, AppError, OptionName};
 
@@ -25,6 +25,36 @@ pub struct ParetoOptions {
     /// Also evaluate the study's constraint quantities at every design of the front
     /// (what the HTML page tabulates): one model evaluation per design.
     pub constraint_values: bool,
+    /// The adhesion measure, in place of the `[pareto]` section's.
+    pub adhesion: Option<AdhesionMeasure>,
+    /// Which end of it is preferred, in place of the `[pareto]` section's.
+    pub direction: Option<ParetoDirection>,
+}
+
+/// The adhesion measure named `text` (`pull_off_force`, …) for the option `option`.
+pub fn measure(option: OptionName, text: &str) -> Result<AdhesionMeasure, AppError> {
+    use crate::optimize::Named;
+    AdhesionMeasure::from_name(text.trim()).ok_or_else(|| AppError::Invalid {
+        options: vec![(option, format!("{text:?}"))],
+        rule: format!("must be one of: {}", AdhesionMeasure::names().join(", ")),
+    })
+}
+
+/// The direction named `text` (`low` or `high`) for the option `option`.
+pub fn direction(option: OptionName, text: &str) -> Result<ParetoDirection, AppError> {
+    use crate::optimize::Named;
+    ParetoDirection::from_name(text.trim()).ok_or_else(|| AppError::Invalid {
+        options: vec![(option, format!("{text:?}"))],
+        rule: format!("must be one of: {}", ParetoDirection::names().join(", ")),
+    })
+}
+
+impl ParetoOptions {
+    /// Whether any part of the front is asked for on the command line (then a
+    /// problem without `[pareto]` takes the defaults for the rest).
+    pub fn any_front(&self) -> bool {
+        self.points.is_some() || self.adhesion.is_some() || self.direction.is_some()
+    }
 }
 
 /// What is known of a front before it is computed: what a streamed output's head
@@ -66,19 +96,60 @@ pub struct ParetoDocument {
     pub constraint_values: Option<ConstraintValues>,
 }
 
-/// The front the problem asks for: its `[pareto]` section with `options.points`
-/// (when given) in place of its own; an error when the problem has no `[pareto]`
-/// or `[objective]`, or when the points are out of range.
+/// The front the problem asks for: its `[pareto]` section with `options.points`,
+/// `adhesion` and `direction` (when given) in place of its own — without a
+/// section, those and the defaults (`pull_off_force`, 15 points, `low`); an
+/// error when the problem has neither a `[pareto]` section nor any of those
+/// options, no `[objective]`, or the points are out of range.
 pub fn plan(
     problem: &Problem,
     origin: &str,
     options: &ParetoOptions,
 ) -> Result<ParetoPlan, AppError> {
-    let Some(mut spec) = problem.study.pareto else {
-        return Err(AppError::NoPareto {
-            origin: origin.to_string(),
-        });
+    let mut spec = match problem.study.pareto {
+        Some(spec) => spec,
+        // No section: what the command line gives, the defaults for the rest
+        // (pull_off_force, the file's-default point count, direction low).
+        None if options.any_front() => ParetoSpec {
+            adhesion: AdhesionMeasure::PullOffForce,
+            points: ParetoSpec::DEFAULT_POINTS,
+            direction: ParetoDirection::Low,
+        },
+        None => {
+            return Err(AppError::NoPareto {
+                origin: origin.to_string(),
+            })
+        }
     };
+    if let Some(a) = options.adhesion {
+        spec.adhesion = a;
+    }
+    if let Some(d) = options.direction {
+        spec.direction = d;
+    }
+    if problem.study.design.is_empty() {
+        return Err(AppError::Invalid {
+            options: vec![(OptionName("adhesion"), spec.adhesion.as_str().to_string())],
+            rule: format!(
+                "{origin}: a front needs something to vary: add a [design] table with at least one variable"
+            ),
+        });
+    }
+    if spec.adhesion == AdhesionMeasure::WorkOfAdhesion
+        && !problem
+            .study
+            .design
+            .iter()
+            .any(|v| v.name == SceneParameter::WorkOfAdhesion)
+    {
+        return Err(AppError::Invalid {
+            options: vec![(OptionName("adhesion"), spec.adhesion.as_str().to_string())],
+            rule: format!(
+                "{origin}: trading against work_of_adhesion needs it among the design variables: add work_of_adhesion = {} to [design]",
+                SceneParameter::WorkOfAdhesion.example_bounds()
+            ),
+        });
+    }
     let Some(objective) = problem.study.objective else {
         return Err(AppError::NoObjective {
             origin: origin.to_string(),

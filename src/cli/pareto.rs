@@ -11,6 +11,7 @@ use std::sync::Mutex;
 use anyhow::{Context, Result};
 
 use wearopt::app::pareto::{self as front, FrontPoint, FrontStatus, Observer, ParetoPlan};
+use wearopt::app::OptionName;
 use wearopt::report::pareto as out;
 use wearopt::report::Format;
 
@@ -19,11 +20,21 @@ use super::usage;
 /// Arguments of `wearopt pareto`.
 #[derive(Debug, clap::Args)]
 pub struct ParetoArgs {
-    /// The problem file (TOML) with [design], [objective] and [pareto] sections.
+    /// The problem file (TOML) with [design] and [objective] sections, and a [pareto]
+    /// section unless --adhesion, --points or --direction says what front to draw.
     pub file: PathBuf,
-    /// Points on the curve (2 to 200; default: [pareto] points).
+    /// Points on the curve (2 to 200; default: [pareto] points, else 15).
     #[arg(long)]
     pub points: Option<usize>,
+    /// The adhesion measure on the front's second axis: pull_off_force,
+    /// work_of_adhesion (needs it among the [design] variables) or
+    /// elastic_adhesion_index (default: [pareto] adhesion, else pull_off_force).
+    #[arg(long, value_name = "MEASURE")]
+    pub adhesion: Option<String>,
+    /// Which end of the adhesion measure is preferred: low (no stiction) or high (a
+    /// latch, a switch that must hold) (default: [pareto] direction, else low).
+    #[arg(long, value_name = "low|high")]
+    pub direction: Option<String>,
     /// Output format: CSV has one row per point (header row), the design flattened into
     /// columns; JSON one object (status, adhesion_measure, points, knee, …).
     #[arg(long, value_parser = super::format::formats("pareto", out::FORMATS), default_value = "text")]
@@ -116,7 +127,17 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     }
     let problem = wearopt::app::load(&args.file)?;
     let origin = args.file.display().to_string();
-    let options = out::options(args.format, args.points);
+    let mut options = out::options(args.format, args.points);
+    options.adhesion = args
+        .adhesion
+        .as_deref()
+        .map(|t| front::measure(OptionName("adhesion"), t))
+        .transpose()?;
+    options.direction = args
+        .direction
+        .as_deref()
+        .map(|t| front::direction(OptionName("direction"), t))
+        .transpose()?;
     let plan = front::plan(&problem, &origin, &options)?;
     let bar = progress_wanted().then(|| {
         let b = indicatif::ProgressBar::new(plan.spec.points as u64);

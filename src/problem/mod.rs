@@ -63,6 +63,7 @@ use toml::Spanned;
 pub(crate) use error::suggest;
 pub use error::{Location, ProblemError};
 pub use notes::{BodyKey, CatalogueProperty, InputNote};
+pub(crate) use study::DesignKeys;
 pub use study::{Dimensioned, Study};
 pub use topography::{ContactModel, ScanSource};
 
@@ -77,7 +78,6 @@ use crate::units::{format_number, format_quantity, parse_quantity, Dimension};
 use catalogue::Material;
 use error::line_of;
 use raw::{RawBody, RawBound, RawInteger, RawProblem, RawQuantity};
-use study::DesignKeys;
 
 /// Z0 when the file does not give `interface.interatomic_distance`: 0.3 nm.
 pub const DEFAULT_INTERATOMIC_DISTANCE: f64 = 0.3e-9;

@@ -67,6 +67,7 @@ pub fn options(format: super::Format, points: Option<usize>) -> ParetoOptions {
     ParetoOptions {
         points,
         constraint_values: format == super::Format::Html,
+        ..ParetoOptions::default()
     }
 }
 

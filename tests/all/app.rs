@@ -34,6 +34,7 @@ fn pareto_json(
     let options = app::pareto::ParetoOptions {
         points,
         constraint_values: false,
+        ..Default::default()
     };
     let doc = app::pareto::pareto(problem, origin, &options, &app::pareto::Silent)?;
     Ok(report::pareto::json_document(&doc))

@@ -467,3 +467,71 @@ fn cli_refuses_a_file_without_pareto_and_bad_points() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// A study without a `[pareto]` section draws its front from the command line:
+/// any of --points, --adhesion, --direction, the rest defaulting to
+/// pull_off_force, 15 points and low; the same front as the section would give.
+/// Without any of them the error says how; a bad name exits 2 naming the choices.
+#[test]
+fn the_front_can_be_asked_for_on_the_command_line() {
+    let file = problem_path("micro-gear-study.toml");
+    let file = file.to_str().unwrap();
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = wearopt()
+            .args(["pareto", file, "--format", "json"])
+            .args(args)
+            .assert()
+            .code(0)
+            .get_output()
+            .stdout
+            .clone();
+        serde_json::from_slice(&out).unwrap()
+    };
+    let v = json(&["--points", "3"]);
+    assert_eq!(v["adhesion_measure"], "pull_off_force");
+    assert_eq!(v["direction"], "low");
+    assert_eq!(v["points"].as_array().unwrap().len(), 3);
+    let v = json(&[
+        "--adhesion",
+        "elastic_adhesion_index",
+        "--direction",
+        "high",
+        "--points",
+        "3",
+    ]);
+    assert_eq!(v["adhesion_measure"], "elastic_adhesion_index");
+    assert_eq!(v["direction"], "high");
+    // The same front as a [pareto] section with those values.
+    let text = std::fs::read_to_string(file).unwrap()
+        + "\n[pareto]\nadhesion = \"elastic_adhesion_index\"\ndirection = \"high\"\npoints = 3\n";
+    let with_section = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("study-with-pareto.toml");
+    std::fs::write(&with_section, text).unwrap();
+    let out = wearopt()
+        .args(["pareto", with_section.to_str().unwrap(), "--format", "json"])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let w: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(w["points"], v["points"]);
+    let err = |args: &[&str]| {
+        let out = wearopt()
+            .args(["pareto", file])
+            .args(args)
+            .assert()
+            .code(2)
+            .get_output()
+            .stderr
+            .clone();
+        String::from_utf8(out).unwrap()
+    };
+    assert!(err(&[]).contains("--adhesion, --points, --direction"));
+    let e = err(&["--adhesion", "pulloff"]);
+    assert!(
+        e.contains("--adhesion \"pulloff\"")
+            && e.contains("pull_off_force, work_of_adhesion, elastic_adhesion_index"),
+        "{e}"
+    );
+    assert!(err(&["--direction", "up"]).contains("low, high"));
+}

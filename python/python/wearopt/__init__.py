@@ -100,9 +100,16 @@ def optimize(problem: Problem) -> Dict[str, Any]:
     return json.loads(_wearopt.optimize_json(*_source(problem)))
 
 
-def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
-    """The wear–adhesion trade-off of a study with a ``[pareto]`` section
-    (the JSON of ``wearopt pareto FILE [--points N] --format json``).
+def pareto(
+    problem: Problem,
+    points: Optional[int] = None,
+    adhesion: Optional[str] = None,
+    direction: Optional[str] = None,
+) -> Dict[str, Any]:
+    """The wear–adhesion trade-off of a study (the JSON of ``wearopt pareto
+    FILE [--points N] [--adhesion M] [--direction D] --format json``): the
+    ``[pareto]`` section's front with these in place of its own, or without a
+    section, these and the defaults (``pull_off_force``, 15 points, ``low``).
 
     >>> front = wearopt.pareto("problems/micro-gear.toml", points=5)
     >>> len(front["points"])
@@ -112,7 +119,10 @@ def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
         raise TypeError(f"points must be an int or None, not {type(points).__name__}")
     if points is not None and points < 0:
         raise ValueError(f"points={points}: must lie in 2..=200")
-    return json.loads(_wearopt.pareto_json(*_source(problem), points))
+    for name, value in (("adhesion", adhesion), ("direction", direction)):
+        if value is not None and not isinstance(value, str):
+            raise TypeError(f"{name} must be a str or None, not {type(value).__name__}")
+    return json.loads(_wearopt.pareto_json(*_source(problem), points, adhesion, direction))
 
 
 def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:

@@ -34,8 +34,15 @@ def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str
     """The JSON of `wearopt humidity FILE --from RH0 --to RH1 --points N --format json` as a dict."""
     ...
 
-def pareto(problem: Problem, points: Optional[int] = None) -> Dict[str, Any]:
-    """The JSON of `wearopt pareto FILE [--points N] --format json` as a dict.
+def pareto(
+    problem: Problem,
+    points: Optional[int] = None,
+    adhesion: Optional[str] = None,
+    direction: Optional[str] = None,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt pareto FILE [--points N] [--adhesion M] [--direction D]
+    --format json` as a dict (without a `[pareto]` section: pull_off_force, 15
+    points, low, unless given).
 
     >>> len(wearopt.pareto("problems/micro-gear.toml", points=5)["points"])
     5
