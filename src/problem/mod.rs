@@ -29,7 +29,7 @@
 //! b = { youngs_modulus = "160 GPa", poisson_ratio = 0.22 }    # or "inf": rigid
 //!
 //! [interface]
-//! hardness = "10 GPa"             # H > 0 or "inf"; default: body a's catalogue value
+//! hardness = "10 GPa"             # H > 0 or "inf"; default: the softer body's catalogue value (a's, or b's when b is a softer catalogue material)
 //! work_of_adhesion = "0.1 J/m^2"  # γ >= 0
 //! interatomic_distance = "0.3 nm" # Z0 > 0 (default 0.3 nm); under DMT and Lennard-Jones also the attraction's range
 //! adhesion_model = "jkr"          # or "dmt", "lennard_jones" (default "jkr"): the asperity law
@@ -731,22 +731,28 @@ impl Problem {
         let interface = r.required(&raw.interface, "table [interface]", None, INTERFACE_HINT)?;
         let ispan = interface.span();
         let i = interface.get_ref();
-        let hardness = match (&i.hardness, body_a.material) {
-            (Some(h), _) => r.quantity(
+        // The model's H is the hardness of the softer body.
+        let hardness = match (&i.hardness, body_a.material, body_b.material) {
+            (Some(h), _, _) => r.quantity(
                 "interface.hardness",
                 h,
                 Accept::positive(Dimension::Pressure)
                     .or_inf("no plasticity")
                     .why("hardness of the softer body"),
             )?,
-            (None, Some(m)) => {
+            (None, Some(ma), mb) => {
+                let (body, m) = match mb {
+                    Some(mb) if mb.hardness < ma.hardness => (BodyKey::B, mb),
+                    _ => (BodyKey::A, ma),
+                };
                 r.notes.push(InputNote::HardnessFromCatalogue {
                     material: m.name,
                     hardness: m.hardness,
+                    body,
                 });
                 m.hardness
             }
-            (None, None) => {
+            (None, None, _) => {
                 return Err(r.missing(
                     "interface.hardness",
                     Some(&ispan),
@@ -785,7 +791,7 @@ impl Problem {
                 });
             }
         }
-        if let (Some(ma), Some(mb)) = (body_a.material, body_b.material) {
+        if let (Some(ma), Some(mb), Some(_)) = (body_a.material, body_b.material, &i.hardness) {
             if mb.hardness < ma.hardness {
                 r.notes.push(InputNote::SofterCounterface {
                     material_a: ma.name,
@@ -1663,7 +1669,8 @@ asperity_density = "10 um^-2"
         assert_eq!(p.scene.interatomic_distance, DEFAULT_INTERATOMIC_DISTANCE);
         assert!(p.notes.contains(&InputNote::HardnessFromCatalogue {
             material: "polysilicon",
-            hardness: 10e9
+            hardness: 10e9,
+            body: BodyKey::A,
         }));
         assert_eq!(p.study, Study::default());
     }

@@ -61,12 +61,15 @@ pub enum InputNote {
         /// The catalogue material.
         material: &'static str,
     },
-    /// `[interface] hardness` is absent: body a's catalogue hardness is used.
+    /// `[interface] hardness` is absent: the softer body's catalogue hardness is
+    /// used (body a's unless body b is a catalogue material and softer).
     HardnessFromCatalogue {
-        /// The catalogue material of body a.
+        /// The catalogue material it came from.
         material: &'static str,
         /// Its hardness (Pa).
         hardness: f64,
+        /// The body it came from.
+        body: BodyKey,
     },
     /// γ lies more than a factor of 10 outside the catalogue's typical range for body
     /// a's material (accepted: a treated or contaminated surface may be so).
@@ -80,7 +83,9 @@ pub enum InputNote {
         /// The catalogue material of body a.
         material: &'static str,
     },
-    /// Body b is softer than body a, while the model takes a as the rough, softer body.
+    /// `[interface] hardness` is given and body b's catalogue material is softer
+    /// than body a's: the model's H is the softer body's, so the given value
+    /// should be b's.
     SofterCounterface {
         /// Body a's catalogue material.
         material_a: &'static str,

@@ -5,7 +5,7 @@
 use serde_json::{json, Value};
 
 use crate::model::{Evaluation, Note, SceneParameter, SensitivityGap, Warning};
-use crate::problem::{CatalogueProperty, InputNote};
+use crate::problem::{BodyKey, CatalogueProperty, InputNote};
 use crate::units::Dimension;
 use crate::units::{format_number, format_quantity, sig_exp};
 
@@ -216,10 +216,20 @@ pub fn input_note(n: &InputNote) -> String {
                 q(*catalogue_value)
             )
         }
-        InputNote::HardnessFromCatalogue { material, hardness } => format!(
-            "hardness taken from catalogue: {material}, {}",
-            format_quantity(*hardness, Dimension::Pressure)
-        ),
+        InputNote::HardnessFromCatalogue {
+            material,
+            hardness,
+            body,
+        } => match body {
+            BodyKey::A => format!(
+                "hardness taken from catalogue: {material}, {}",
+                format_quantity(*hardness, Dimension::Pressure)
+            ),
+            BodyKey::B => format!(
+                "hardness taken from catalogue: {material}, {} — the counterface's (bodies.b): the model's H is the softer body's",
+                format_quantity(*hardness, Dimension::Pressure)
+            ),
+        },
         InputNote::AtypicalWorkOfAdhesion {
             value,
             typical_min,
@@ -237,7 +247,7 @@ pub fn input_note(n: &InputNote) -> String {
             material_b,
             hardness_b,
         } => format!(
-            "body b ({material_b}, H = {}) is softer than body a ({material_a}, H = {}); the model takes a as the rough, softer body",
+            "body b ({material_b}, H = {}) is softer than body a ({material_a}, H = {}): the model's H is the softer body's, so the interface.hardness given should be b's",
             format_quantity(*hardness_b, Dimension::Pressure),
             format_quantity(*hardness_a, Dimension::Pressure)
         ),
@@ -342,7 +352,7 @@ mod tests {
         };
         assert_eq!(
             input_note(&n),
-            "body b (gold, H = 1 GPa) is softer than body a (silicon carbide, H = 28 GPa); the model takes a as the rough, softer body"
+            "body b (gold, H = 1 GPa) is softer than body a (silicon carbide, H = 28 GPa): the model's H is the softer body's, so the interface.hardness given should be b's"
         );
         // The structured value serialises with its kind, for JSON readers.
         let v = serde_json::to_value(&n).unwrap();

@@ -81,7 +81,8 @@ fn micro_gear_in_si() {
         .notes
         .contains(&problem::InputNote::HardnessFromCatalogue {
             material: "polysilicon",
-            hardness: 10e9
+            hardness: 10e9,
+            body: problem::BodyKey::A,
         }));
     assert!(wearopt::report::words::input_notes(&p.notes)
         .iter()

@@ -402,3 +402,37 @@ fn negligible_parts_and_the_other_law_are_said_in_words() {
         "{t}"
     );
 }
+
+/// A nitride bump on a silicon substrate: without [interface] hardness the
+/// model's H is the softer body's, the counterface's silicon (11 GPa), not the
+/// nitride's 18 GPa (which understated ψ 1.6×), and the note says which body it
+/// came from; with a hardness given, the note says it should be b's.
+#[test]
+fn the_hardness_is_the_softer_bodys() {
+    let text = "name = \"nitride bump on silicon\"\n\
+        [contact]\nload = \"5 uN\"\nnominal_area = \"25 um^2\"\nsliding_distance = \"10 mm\"\nwear_coefficient = 1e-5\n\
+        [bodies]\na = { material = \"silicon nitride\" }\nb = { material = \"silicon\" }\n\
+        [interface]\nwork_of_adhesion = \"50 mJ/m^2\"\nadhesion_model = \"dmt\"\n\
+        [roughness]\nsigma = \"2 nm\"\nasperity_radius = \"500 nm\"\nasperity_density = \"20 um^-2\"\n";
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let path = dir.join("reports-softer-b.toml");
+    std::fs::write(&path, text).unwrap();
+    let t = stdout_of(&["eval", path.to_str().unwrap()]);
+    assert!(t.contains("hardness H = 11.0 GPa"), "{t}");
+    assert!(
+        t.contains("note: hardness taken from catalogue: single-crystal silicon, 11 GPa — the counterface's (bodies.b): the model's H is the softer body's"),
+        "{t}"
+    );
+    assert!(!t.contains("takes a as the rough, softer body"), "{t}");
+    let given = text.replace("[interface]\n", "[interface]\nhardness = \"18 GPa\"\n");
+    let path = dir.join("reports-softer-b-given.toml");
+    std::fs::write(&path, given).unwrap();
+    let t = stdout_of(&["eval", path.to_str().unwrap()]);
+    assert!(t.contains("hardness H = 18.0 GPa"), "{t}");
+    assert!(
+        t.contains(
+            "the model's H is the softer body's, so the interface.hardness given should be b's"
+        ),
+        "{t}"
+    );
+}
