@@ -331,7 +331,7 @@ pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
     let mut plot = LinePlot::new(
         title,
         Axis::linear("mean-plane separation d").with_unit(du),
-        Axis::linear("load W (positive presses)").with_unit(wu),
+        Axis::linear("load W, positive presses").with_unit(wu),
     )
     .with_series(
         Series::new("W(d), the model", points.iter().map(scaled).collect())
@@ -352,6 +352,67 @@ pub fn load_curve_svg(title: &str, c: &crate::model::LoadCurve) -> String {
         );
     }
     plot.to_svg()
+}
+
+/// Where the pull-off is under a twentieth of the largest load on the curve (on
+/// [`load_curve_svg`]'s axis a dot on a flat line): a second plot of the tensile
+/// part alone — from where W falls to three times the pull-off force on — with
+/// the pull-off marked and labelled with its force and separation; else None.
+pub fn load_curve_tension_svg(title: &str, c: &crate::model::LoadCurve) -> Option<String> {
+    use super::svg::{Axis, LinePlot, Marker, Series};
+    if !pull_off_drawn(c) {
+        return None;
+    }
+    let pull = c.pull_off_point?;
+    let tension = -pull.1;
+    let max_w = c.points.iter().map(|p| p.1.abs()).fold(0.0, f64::max);
+    if !(tension > 0.0 && tension < max_w / 20.0) {
+        return None;
+    }
+    let start = c.points.iter().position(|p| p.1 <= 3.0 * tension)?;
+    let points: Vec<(f64, f64)> = c.points[start..].to_vec();
+    let (d_lo, d_hi) = (points.first()?.0, points.last()?.0);
+    let (wf, wu) = crate::units::axis_unit(3.0 * tension, "N");
+    let (df, du) = crate::units::axis_unit(d_hi.abs(), "m");
+    let scaled = |p: &(f64, f64)| (p.0 / df, p.1 / wf);
+    let mut plot = LinePlot::new(
+        title,
+        Axis::linear("mean-plane separation d")
+            .with_unit(du)
+            .with_range(d_lo / df, d_hi / df),
+        Axis::linear("load W, negative pulls")
+            .with_unit(wu)
+            .with_range(-1.25 * tension / wf, 3.0 * tension / wf),
+    )
+    .with_series(
+        Series::new("W(d), the model", points.iter().map(scaled).collect())
+            .with_marker(Marker::None),
+    );
+    if let Some(op) = c
+        .operating_point
+        .filter(|p| p.0 >= d_lo && p.1 <= 3.0 * tension)
+    {
+        plot = plot.with_series(
+            Series::new("operating point", vec![scaled(&op)])
+                .without_line()
+                .with_marker(Marker::Circle)
+                .with_color(super::svg::PALETTE[1]),
+        );
+    }
+    plot = plot.with_series(
+        Series::new(
+            format!(
+                "pull-off {} at d = {}",
+                crate::units::format_quantity(tension, crate::units::Dimension::Force),
+                crate::units::format_quantity(pull.0, crate::units::Dimension::Length)
+            ),
+            vec![scaled(&pull)],
+        )
+        .without_line()
+        .with_marker(Marker::Triangle)
+        .with_color(super::svg::PALETTE[2]),
+    );
+    Some(plot.to_svg())
 }
 
 /// Whether [`load_curve_svg`] marks the pull-off (it lies on the sampled curve).
@@ -611,6 +672,15 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
             &load_curve_svg(&format!("Load against separation — {}", r.name), curve),
             &load_curve_caption("The model's load W", curve),
         );
+        if let Some(svg) =
+            load_curve_tension_svg(&format!("The tensile part, enlarged — {}", r.name), curve)
+        {
+            p.figure(
+                "load-separation-tension",
+                &svg,
+                "The same curve where the surfaces pull: the pull-off is the most tensile load the contact holds.",
+            );
+        }
     }
     if !r.sensitivities.is_empty() {
         p.heading("Sensitivity of the wear rate");
@@ -1139,5 +1209,14 @@ mod load_curve_tests {
             "{svg}"
         );
         assert!(load_curve_caption("W", &c).contains("the most tensile load"));
+        // A pull-off of 1 µN against 1 mN at the start gets its own, enlarged
+        // plot, labelled; one of a third of the largest load does not need it.
+        let svg = load_curve_tension_svg("t", &c).unwrap();
+        assert!(svg.contains("pull-off 1 µN at d = 30 nm"), "{svg}");
+        let big = LoadCurve {
+            pull_off_point: Some((30e-9, -3e-4)),
+            ..c
+        };
+        assert!(load_curve_tension_svg("t", &big).is_none());
     }
 }

@@ -579,6 +579,16 @@ pub fn html(
             ),
             &super::eval::load_curve_caption("The optimum design's load W", curve),
         );
+        if let Some(svg) = super::eval::load_curve_tension_svg(
+            &format!("The tensile part, enlarged — {name}"),
+            curve,
+        ) {
+            p.figure(
+                "load-separation-tension",
+                &svg,
+                "The same curve where the surfaces pull: the pull-off is the most tensile load the contact holds.",
+            );
+        }
     }
     p.finish()
 }

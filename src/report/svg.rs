@@ -241,14 +241,39 @@ fn tick_label(v: f64) -> String {
 }
 
 /// Nice linear ticks covering [lo, hi]: the widened range and the ticks.
-fn linear_ticks(lo: f64, hi: f64) -> ((f64, f64), Vec<Tick>) {
+fn linear_ticks(lo: f64, hi: f64, fixed: bool) -> ((f64, f64), Vec<Tick>) {
     let raw = (hi - lo) / 5.0;
-    let exp = raw.log10().floor() as i32;
-    let mag = 10f64.powi(exp);
-    let m = [1.0, 2.0, 5.0, 10.0]
+    let mut exp = raw.log10().floor() as i32;
+    let mut m = [1.0, 2.0, 5.0, 10.0]
         .into_iter()
-        .find(|m| m * mag >= raw * (1.0 - 1e-9))
+        .find(|m| m * 10f64.powi(exp) >= raw * (1.0 - 1e-9))
         .unwrap_or(10.0);
+    // At least four labelled ticks: inside [lo, hi] on a fixed range (which keeps
+    // only those), on the covering range otherwise; the next smaller step of the
+    // 1–2–5 series until there are.
+    let inside = |step: f64| {
+        let (a, b) = if fixed {
+            ((lo / step - 1e-9).ceil(), (hi / step + 1e-9).floor())
+        } else {
+            ((lo / step + 1e-9).floor(), (hi / step - 1e-9).ceil())
+        };
+        (b - a) as i64 + 1
+    };
+    for _ in 0..6 {
+        if inside(m * 10f64.powi(exp)) >= 4 {
+            break;
+        }
+        (m, exp) = match m as i64 {
+            10 => (5.0, exp),
+            5 => (2.0, exp),
+            2 => (1.0, exp),
+            _ => (5.0, exp - 1),
+        };
+    }
+    if m == 10.0 {
+        (m, exp) = (1.0, exp + 1);
+    }
+    let mag = 10f64.powi(exp);
     // step = m · 10^exp; tick k is the double nearest k·m·10^exp, read from its
     // decimal form so that 0.1 steps print as 0.3, not 0.30000000000000004, and
     // 5e-146 steps as 1.5e-145, not 1.4999999999999994e-145 (10^146 is not exact).
@@ -334,7 +359,7 @@ fn axis_layout(axis: &Axis, values: impl Iterator<Item = f64>) -> ((f64, f64), V
         hi += pad;
     }
     let ((nlo, nhi), ticks) = match axis.scale {
-        Scale::Linear => linear_ticks(lo, hi),
+        Scale::Linear => linear_ticks(lo, hi, axis.range.is_some()),
         Scale::Log => log_ticks(lo, hi),
     };
     if axis.range.is_some() {
@@ -889,24 +914,32 @@ mod tests {
 
     #[test]
     fn linear_ticks_are_round() {
-        let ((lo, hi), ticks) = linear_ticks(0.05, 5.0);
+        let ((lo, hi), ticks) = linear_ticks(0.05, 5.0, false);
         assert_eq!((lo, hi), (0.0, 5.0));
         let labels: Vec<&str> = ticks.iter().map(|t| t.label.as_str()).collect();
         assert_eq!(labels, ["0", "1", "2", "3", "4", "5"]);
         // Steps of 0.1 print as 0.3, not 0.30000000000000004; no "-0".
-        let ((lo, hi), ticks) = linear_ticks(-0.23, 0.27);
+        let ((lo, hi), ticks) = linear_ticks(-0.23, 0.27, false);
         assert_eq!((lo, hi), (-0.3, 0.3));
         let labels: Vec<&str> = ticks.iter().map(|t| t.label.as_str()).collect();
         assert_eq!(labels, ["-0.3", "-0.2", "-0.1", "0", "0.1", "0.2", "0.3"]);
-        let ((lo, hi), _) = linear_ticks(2.0e-9, 7.5e-9);
+        let ((lo, hi), _) = linear_ticks(2.0e-9, 7.5e-9, false);
         assert_eq!((lo, hi), (2e-9, 8e-9));
         // Far from 1 the ticks are the decimal values themselves (10^146 is not a
         // double: dividing by it printed 1.4999999999999994e-145).
-        let ((lo, hi), ticks) = linear_ticks(0.0, 1.309e-145);
+        let ((lo, hi), ticks) = linear_ticks(0.0, 1.309e-145, false);
         assert_eq!((lo, hi), (0.0, 1.5e-145));
         let labels: Vec<&str> = ticks.iter().map(|t| t.label.as_str()).collect();
         assert_eq!(labels, ["0", "5e-146", "1e-145", "1.5e-145"]);
-        let ((_, hi), ticks) = linear_ticks(0.0, 2.7e200);
+        // A fixed range keeps at least four labelled ticks inside it (−7.5 … 18
+        // had only 0 and 10 at a step of 10).
+        let (_, ticks) = linear_ticks(-7.5, 18.0, true);
+        let inside = ticks
+            .iter()
+            .filter(|t| (-7.5..=18.0).contains(&t.at))
+            .count();
+        assert!(inside >= 4, "{inside}");
+        let ((_, hi), ticks) = linear_ticks(0.0, 2.7e200, false);
         assert_eq!(hi, 3e200);
         assert_eq!(ticks[1].label, "1e200");
     }

@@ -101,7 +101,17 @@ fn renders_in_chromium(html: &str, name: &str) {
 #[test]
 fn eval_page() {
     let html = page(&["eval", "problems/micro-gear.toml", "--format", "html"]);
-    check_page(&html, &["load-separation", "sensitivities"]);
+    // The hub's pull-off (6 µN) is a dot on the 10 mN curve: the tensile part is
+    // drawn again, enlarged, the pull-off labelled.
+    check_page(
+        &html,
+        &[
+            "load-separation",
+            "load-separation-tension",
+            "sensitivities",
+        ],
+    );
+    assert!(html.contains("pull-off 5.993 µN at d = 11.55 nm"));
     assert!(html.contains("0.6403 µm²"));
     renders_in_chromium(&html, "eval");
 }
@@ -311,6 +321,10 @@ fn out_writes_the_page_to_a_file() {
     assert!(out.status.success() && out.stdout.is_empty());
     check_page(
         &std::fs::read_to_string(&file).unwrap(),
-        &["load-separation", "sensitivities"],
+        &[
+            "load-separation",
+            "load-separation-tension",
+            "sensitivities",
+        ],
     );
 }
