@@ -100,6 +100,9 @@ pub(crate) fn warning_text(w: &Warning) -> String {
             "{missing} of {total} points are missing: left out of the moments and summit count, set to 0 in the PSD"
         ),
         Warning::Profile => "a profile (one line): m2 and m4 are along x only and the areal formulas assume an isotropic surface; summits cannot be counted on a line".to_string(),
+        Warning::OneDirection { used, missing } => format!(
+            "no two neighbouring points along {missing} are both valid (missing points interleave): m2 and m4 are taken along {used} alone, which assumes the surface isotropic"
+        ),
     }
 }
 

@@ -126,6 +126,15 @@ pub enum SurfaceError {
         /// Mean square curvature moment.
         m4: f64,
     },
+    /// The levelled heights vary by less than the stored heights can resolve: a
+    /// constant map or a plane, whose "roughness" is the rounding of its levelling.
+    #[error("the levelled map's rms height {rms:.3e} m is below a millionth of its heights (up to {largest:.3e} m): it is flat — a constant map or a plane — to within what its stored heights can resolve, so it has no roughness to analyse")]
+    Unresolved {
+        /// The levelled map's rms height (m).
+        rms: f64,
+        /// The largest |height| of the map as read (m).
+        largest: f64,
+    },
     /// α = m0 m4 / m2² below 1.5: the moments are not those of an isotropic Gaussian
     /// surface (SURFACES.md §5), so the McCool formulas do not apply.
     #[error("bandwidth α = m0 m4 / m2² = {alpha} is below 1.5, the least an isotropic Gaussian surface can have: these moments are not those of a random rough surface (a periodic or a single-wavelength pattern?), so σ, R and N cannot be derived from them")]
@@ -345,6 +354,14 @@ pub enum Warning {
     /// A profile: the moments are along x only and the areal formulas assume isotropy;
     /// summits cannot be counted on a line.
     Profile,
+    /// One direction of the map has no valid neighbouring pair (or triple): its
+    /// moments are missing, and the other direction's stand for both.
+    OneDirection {
+        /// The direction whose moments were used, "x" or "y".
+        used: &'static str,
+        /// The direction without any, "y" or "x".
+        missing: &'static str,
+    },
 }
 
 /// Everything [`analyse`] finds. Lengths in metres.
@@ -418,11 +435,27 @@ fn analysed_map_with_band(
     })
 }
 
+/// The share of its heights' magnitude below which a levelled map's rms height is
+/// taken for the rounding of its form removal ([`SurfaceError::Unresolved`]).
+pub const HEIGHT_RESOLUTION: f64 = 1e-6;
+
 /// Levels the map, applies the optional cut-off (and levels again on the kept points),
 /// takes the moments, the McCool parameters and the summit count.
 pub fn analyse(map: &HeightMap, settings: &Settings) -> Result<Roughness, SurfaceError> {
     let (work, band) = analysed_map_with_band(map, settings)?;
     let moments = Moments::of(&work);
+    // Heights stored in single precision resolve 6e-8 of their magnitude: a
+    // levelled rms within a millionth of it is the rounding of a constant or a
+    // plane (a constant map read as R = 1.8e9 m), not a surface.
+    let largest = map
+        .heights
+        .iter()
+        .filter(|h| !h.is_nan())
+        .fold(0.0f64, |m, h| m.max(h.abs()));
+    let rms = moments.m0.sqrt();
+    if largest > 0.0 && rms <= HEIGHT_RESOLUTION * largest {
+        return Err(SurfaceError::Unresolved { rms, largest });
+    }
     let parameters = Parameters::from_moments(&moments)?;
     let summits = (!work.is_profile()).then(|| SummitCount::of(&work));
 
@@ -437,6 +470,9 @@ pub fn analyse(map: &HeightMap, settings: &Settings) -> Result<Roughness, Surfac
     }
     if work.is_profile() {
         warnings.push(Warning::Profile);
+    } else if let Some(used) = moments.only_along {
+        let missing = if used == "x" { "y" } else { "x" };
+        warnings.push(Warning::OneDirection { used, missing });
     } else {
         let ratio = moments.anisotropy_ratio();
         if ratio > ANISOTROPY_LIMIT {

@@ -23,6 +23,10 @@ pub struct Moments {
     pub m4_x: f64,
     /// Mean of h_yy² over the valid triples along y (None for a profile).
     pub m4_y: Option<f64>,
+    /// On a map with no valid pair (or triple) along one direction, the other
+    /// direction, whose moments alone make m2 and m4 (`"x"` or `"y"`); None when
+    /// both directions count.
+    pub only_along: Option<&'static str>,
 }
 
 /// Sums and counts of one row's contributions.
@@ -132,24 +136,40 @@ impl Moments {
                 m2_y: None,
                 m4_x,
                 m4_y: None,
+                only_along: None,
             }
         } else {
             let m2_y = mean(t.hy2, t.ny2);
             let m4_y = mean(t.hyy2, t.nyy);
+            // A direction without a single valid pair or triple has no moments:
+            // averaging its 0 in would halve m2 and m4 (R off by √2); the other
+            // direction stands for both (isotropy assumed, and said).
+            let x_counts = t.nx2 > 0 && t.nxx > 0;
+            let y_counts = t.ny2 > 0 && t.nyy > 0;
+            let (m2, m4, only_along) = match (x_counts, y_counts) {
+                (true, false) => (m2_x, m4_x, Some("x")),
+                (false, true) => (m2_y, m4_y, Some("y")),
+                _ => (0.5 * (m2_x + m2_y), 0.5 * (m4_x + m4_y), None),
+            };
             Moments {
                 m0,
-                m2: 0.5 * (m2_x + m2_y),
-                m4: 0.5 * (m4_x + m4_y),
+                m2,
+                m4,
                 m2_x,
                 m2_y: Some(m2_y),
                 m4_x,
                 m4_y: Some(m4_y),
+                only_along,
             }
         }
     }
 
-    /// Larger / smaller of m2_x and m2_y (1 for a profile; infinite when one is 0).
+    /// Larger / smaller of m2_x and m2_y (1 for a profile or when one direction has
+    /// no moments; infinite when one is 0).
     pub fn anisotropy_ratio(&self) -> f64 {
+        if self.only_along.is_some() {
+            return 1.0;
+        }
         match self.m2_y {
             None => 1.0,
             Some(y) => {

@@ -187,8 +187,89 @@ fn a_single_wavelength_is_refused_as_inconsistent() {
     let flat = HeightMap::new(4, 4, 1e-8, 1e-8, vec![1e-9; 16]).unwrap();
     assert!(matches!(
         analyse(&flat, &Settings::default()),
-        Err(SurfaceError::Flat { .. })
+        Err(SurfaceError::Unresolved { .. })
     ));
+}
+
+/// Maps that are not surfaces are refused: a constant map (it was read as
+/// R = 1.8e9 m) and a tilted plane stored in single precision (its levelled
+/// "roughness" is the float32 rounding, 6e-8 of the heights). A random surface
+/// on the same offset is analysed.
+#[test]
+fn a_constant_map_or_a_plane_is_refused() {
+    let n = 64;
+    let constant = HeightMap::new(n, n, 1e-8, 1e-8, vec![3.7e-6; n * n]).unwrap();
+    let plane: Vec<f64> = (0..n * n)
+        .map(|k| (2e-6 + 1e-9 * (k % n) as f64 + 3e-10 * (k / n) as f64) as f32 as f64)
+        .collect();
+    let plane = HeightMap::new(n, n, 1e-8, 1e-8, plane).unwrap();
+    for map in [&constant, &plane] {
+        match analyse(map, &Settings::default()) {
+            Err(e @ SurfaceError::Unresolved { .. }) => {
+                assert!(e.to_string().contains("a constant map or a plane"), "{e}")
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    let rough = random_surface(
+        n,
+        1e-8,
+        Spectrum::Gaussian {
+            correlation_length: 5e-8,
+        },
+        1e-9,
+        3,
+    )
+    .unwrap();
+    let offset: Vec<f64> = rough.heights().iter().map(|h| h + 2e-6).collect();
+    let rough = HeightMap::new(n, n, 1e-8, 1e-8, offset).unwrap();
+    assert!(analyse(&rough, &Settings::default()).is_ok());
+}
+
+/// Every other row missing: no valid pair along y. Its moments were counted as
+/// zero slope (m2 halved, R off by √2, the warning blaming anisotropy); now x
+/// stands for both, and the warning says so. On a random surface the result
+/// equals the x-only moments of the full map's rows kept.
+#[test]
+fn a_direction_without_pairs_is_left_out_and_said() {
+    let n = 64;
+    let rough = random_surface(
+        n,
+        1e-8,
+        Spectrum::Gaussian {
+            correlation_length: 5e-8,
+        },
+        1e-9,
+        4,
+    )
+    .unwrap();
+    let holes: Vec<f64> = rough
+        .heights()
+        .iter()
+        .enumerate()
+        .map(|(k, &h)| if (k / n) % 2 == 1 { f64::NAN } else { h })
+        .collect();
+    let map = HeightMap::new(n, n, 1e-8, 1e-8, holes).unwrap();
+    let settings = Settings {
+        level: Levelling::None,
+        cutoff: None,
+    };
+    let r = analyse(&map, &settings).unwrap();
+    let m = Moments::of(&map);
+    assert_eq!(m.only_along, Some("x"));
+    assert_eq!(m.m2, m.m2_x);
+    assert_eq!(m.m4, m.m4_x);
+    assert!(r.warnings.iter().any(|w| matches!(
+        w,
+        Warning::OneDirection {
+            used: "x",
+            missing: "y"
+        }
+    )));
+    assert!(!r
+        .warnings
+        .iter()
+        .any(|w| matches!(w, Warning::Anisotropy { .. })));
 }
 
 #[test]
@@ -201,6 +282,7 @@ fn mccool_formulas_as_written() {
         m2_y: Some(1e-3),
         m4_x: 2e12,
         m4_y: Some(2e12),
+        only_along: None,
     };
     let p = Parameters::from_moments(&m).unwrap();
     let alpha = 4e-18 * 2e12 / 1e-6;
