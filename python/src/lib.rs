@@ -323,12 +323,13 @@ fn roughness_options(
         level: levelling(OptionName("level"), level)?,
         pixel_size,
         height_unit,
+        decimal_comma: false,
     })
 }
 
 /// `wearopt roughness FILE [--cutoff L] [--level K] [--pixel-size L] [--height-unit U] --format json`.
 #[pyfunction]
-#[pyo3(signature = (path, cutoff=None, level="plane".to_string(), pixel_size=None, height_unit=None))]
+#[pyo3(signature = (path, cutoff=None, level="plane".to_string(), pixel_size=None, height_unit=None, decimal_comma=false))]
 fn roughness_json(
     py: Python<'_>,
     path: String,
@@ -336,15 +337,17 @@ fn roughness_json(
     level: String,
     pixel_size: Option<String>,
     height_unit: Option<String>,
+    decimal_comma: bool,
 ) -> PyResult<String> {
     detached(py, || {
-        let options = roughness_options(
+        let mut options = roughness_options(
             cutoff.as_deref(),
             &level,
             pixel_size.as_deref(),
             height_unit.as_deref(),
         )
         .map_err(words)?;
+        options.decimal_comma = decimal_comma;
         let doc =
             app::roughness::roughness(std::path::Path::new(&path), &options).map_err(words)?;
         Ok(report::roughness::json_document(&doc).to_string())
@@ -442,6 +445,7 @@ fn contact_options(
         tolerance,
         fields,
         adhesion,
+        decimal_comma: false,
     })
 }
 
@@ -481,7 +485,7 @@ fn contact_out<'py>(
 
 /// `wearopt contact FILE --modulus E --pressure P1,… [--hardness H] … --format json`.
 #[pyfunction]
-#[pyo3(signature = (path, modulus, pressures, hardness=None, level="plane".to_string(), pixel_size=None, height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false, work_of_adhesion=None, adhesion_range=None, coarse_grain=false))]
+#[pyo3(signature = (path, modulus, pressures, hardness=None, level="plane".to_string(), pixel_size=None, height_unit=None, tolerance=app::contact::DEFAULT_TOLERANCE, fields=false, work_of_adhesion=None, adhesion_range=None, coarse_grain=false, decimal_comma=false))]
 #[allow(clippy::too_many_arguments)]
 fn contact_json<'py>(
     py: Python<'py>,
@@ -497,6 +501,7 @@ fn contact_json<'py>(
     work_of_adhesion: Option<String>,
     adhesion_range: Option<String>,
     coarse_grain: bool,
+    decimal_comma: bool,
 ) -> PyResult<ContactOut<'py>> {
     let doc = detached(py, || {
         let options = contact_options(
@@ -515,7 +520,14 @@ fn contact_json<'py>(
             ),
         )
         .map_err(words)?;
-        app::contact::contact(std::path::Path::new(&path), &options).map_err(words)
+        app::contact::contact(
+            std::path::Path::new(&path),
+            &app::contact::ContactOptions {
+                decimal_comma,
+                ..options
+            },
+        )
+        .map_err(words)
     })?;
     contact_out(py, doc)
 }

@@ -32,6 +32,8 @@ pub struct ContactOptions {
     pub pixel_size: Option<f64>,
     /// Metres per stored height unit, overriding the file's.
     pub height_unit: Option<f64>,
+    /// An ASCII matrix writes its decimals with commas.
+    pub decimal_comma: bool,
     /// The residual at which each solve stops.
     pub tolerance: f64,
     /// Keep the pressure and gap fields of every solution (for `--fields` and the
@@ -97,6 +99,7 @@ impl Default for ContactOptions {
             level: Levelling::Plane,
             pixel_size: None,
             height_unit: None,
+            decimal_comma: false,
             tolerance: DEFAULT_TOLERANCE,
             fields: false,
             adhesion: None,
@@ -259,6 +262,7 @@ pub fn contact(path: &Path, options: &ContactOptions) -> Result<ContactDocument,
     let overrides = Overrides {
         pixel_size: options.pixel_size,
         height_unit: options.height_unit,
+        decimal_comma: options.decimal_comma,
     };
     let format = Format::from_path(path).unwrap_or(Format::Ascii);
     let map = read::load(path, &overrides).map_err(AppError::Read)?;

@@ -26,6 +26,8 @@ pub struct RoughnessOptions {
     /// Metres per stored height unit, overriding the file's (required for `.npy`
     /// and a bare ASCII matrix; heights in memory default to metres).
     pub height_unit: Option<f64>,
+    /// An ASCII matrix writes its decimals with commas.
+    pub decimal_comma: bool,
 }
 
 impl Default for RoughnessOptions {
@@ -35,6 +37,7 @@ impl Default for RoughnessOptions {
             level: Levelling::Plane,
             pixel_size: None,
             height_unit: None,
+            decimal_comma: false,
         }
     }
 }
@@ -95,6 +98,7 @@ pub fn roughness(path: &Path, options: &RoughnessOptions) -> Result<RoughnessDoc
     let overrides = Overrides {
         pixel_size: options.pixel_size,
         height_unit: options.height_unit,
+        decimal_comma: options.decimal_comma,
     };
     let format = Format::from_path(path).unwrap_or(Format::Ascii);
     let map = read::load(path, &overrides).map_err(AppError::Read)?;

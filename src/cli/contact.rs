@@ -30,6 +30,10 @@ pub(crate) struct ContactArgs {
     /// ASCII matrix, overrides the file's otherwise.
     #[arg(long, value_name = "UNIT")]
     height_unit: Option<String>,
+    /// The ASCII matrix writes its decimals with commas ("1,25"; columns then separated by
+    /// whitespace or semicolons). Such a file is refused without it.
+    #[arg(long)]
+    decimal_comma: bool,
     /// The composite modulus E* of the pair, 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2, e.g. "150 GPa".
     #[arg(long, value_name = "E_STAR", allow_hyphen_values = true)]
     modulus: String,
@@ -122,6 +126,7 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         level: args.level.into(),
         pixel_size,
         height_unit,
+        decimal_comma: args.decimal_comma,
         tolerance: args.tolerance,
         fields: args.fields.is_some() || args.format == Format::Html,
         adhesion,

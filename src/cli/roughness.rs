@@ -39,6 +39,10 @@ pub(crate) struct RoughnessArgs {
     /// ASCII matrix, overrides the file's otherwise.
     #[arg(long, value_name = "UNIT")]
     height_unit: Option<String>,
+    /// The ASCII matrix writes its decimals with commas ("1,25"; columns then separated by
+    /// whitespace or semicolons). Such a file is refused without it.
+    #[arg(long)]
+    decimal_comma: bool,
     /// Output format.
     #[arg(long, value_parser = formats("roughness", report::roughness::FORMATS), default_value = "text")]
     format: Format,
@@ -80,6 +84,7 @@ pub(crate) fn run(args: RoughnessArgs) -> Result<ExitCode> {
         level,
         pixel_size,
         height_unit,
+        decimal_comma: args.decimal_comma,
     };
     let doc = rough::roughness(&args.file, &options)?;
     if let Some(path) = &args.psd {

@@ -209,6 +209,8 @@ pub struct RawRoughness {
     pub height_unit: Option<Spanned<String>>,
     /// "statistical" (default) or "bem_corrected": see `ContactModel`.
     pub contact_model: Option<Spanned<String>>,
+    /// An ASCII matrix written with decimal commas.
+    pub decimal_comma: Option<Spanned<bool>>,
 }
 
 /// `{ min = …, max = … }` of one design variable.

@@ -47,12 +47,13 @@ pub struct ScanSource {
 }
 
 /// The optional keys that only make sense with `topography`.
-const SCAN_KEYS: [&str; 5] = [
+const SCAN_KEYS: [&str; 6] = [
     "cutoff",
     "level",
     "pixel_size",
     "height_unit",
     "contact_model",
+    "decimal_comma",
 ];
 
 /// How a scan-based scene's real area is taken (`[roughness] contact_model`).
@@ -86,8 +87,9 @@ impl Reader<'_> {
         g: &RawRoughness,
     ) -> Result<Option<(f64, f64, f64, ScanSource)>, ProblemError> {
         let Some(topo) = &g.topography else {
-            let given: [(&str, Option<Range<usize>>); 5] = [
+            let given: [(&str, Option<Range<usize>>); 6] = [
                 ("contact_model", g.contact_model.as_ref().map(|v| v.span())),
+                ("decimal_comma", g.decimal_comma.as_ref().map(|v| v.span())),
                 ("cutoff", g.cutoff.as_ref().map(|v| v.span())),
                 ("level", g.level.as_ref().map(|v| v.span())),
                 ("pixel_size", g.pixel_size.as_ref().map(|v| v.span())),
@@ -165,6 +167,7 @@ impl Reader<'_> {
         let overrides = Overrides {
             pixel_size,
             height_unit,
+            decimal_comma: g.decimal_comma.as_ref().is_some_and(|v| *v.get_ref()),
         };
         let scan_error = |r: &Self, e: String| r.invalid("roughness.topography", &tspan, e);
         let map = read::load(&path, &overrides).map_err(|e| scan_error(self, e.to_string()))?;

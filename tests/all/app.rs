@@ -58,6 +58,7 @@ fn parse_options(
             .map(|t| rough::length(OptionName("cutoff"), t))
             .transpose()?,
         level,
+        decimal_comma: false,
     })
 }
 

@@ -63,6 +63,7 @@ fn every_reader_reads_the_grid_with_its_units() {
     let user = Overrides {
         pixel_size: Some(2e-8),
         height_unit: Some(1e-9),
+        ..Overrides::default()
     };
     for name in [
         "grid.npy",
@@ -78,6 +79,7 @@ fn every_reader_reads_the_grid_with_its_units() {
         Overrides {
             pixel_size: Some(2e-8),
             height_unit: None,
+            ..Overrides::default()
         },
         (2e-8, 2e-8),
     );
@@ -97,6 +99,7 @@ fn files_without_units_need_them_from_the_user() {
     let with_pixel = Overrides {
         pixel_size: Some(1e-8),
         height_unit: None,
+        ..Overrides::default()
     };
     for name in ["grid.npy", "grid-bare.txt", "grid-no-units.gsf"] {
         let e = read::load(&path(name), &with_pixel).unwrap_err();
@@ -268,7 +271,7 @@ proptest! {
         data.truncate(keep);
         if let Ok(scan) = read_bytes(&data, f, "fuzz") {
             prop_assert_eq!(scan.values.len(), scan.nx * scan.ny);
-            let _ = scan.resolve(&Overrides { pixel_size: Some(1e-8), height_unit: Some(1e-9) }, "fuzz");
+            let _ = scan.resolve(&Overrides { pixel_size: Some(1e-8), height_unit: Some(1e-9), ..Overrides::default() }, "fuzz");
         }
     }
 }
@@ -371,4 +374,76 @@ fn cli_refuses_bad_files_with_exit_code_2() {
         assert!(!err.contains("panicked"), "{err}");
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A matrix written with decimal commas (a European locale's export) was read
+/// as twice as many columns of near-zero heights; now it is refused (exit 2,
+/// the flag named) and, with --decimal-comma, reads as the same map written with
+/// points.
+#[test]
+fn decimal_commas_are_refused_or_read_when_said() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    use wearopt::surface::synthetic::{random_surface, Spectrum};
+    let n = 32;
+    let map = random_surface(
+        n,
+        1e-8,
+        Spectrum::Gaussian {
+            correlation_length: 4e-8,
+        },
+        1.0,
+        5,
+    )
+    .unwrap();
+    let rows: Vec<Vec<String>> = map
+        .heights()
+        .chunks(n)
+        .map(|r| r.iter().map(|h| format!("{h:.6}")).collect())
+        .collect();
+    let points = dir.join("points.txt");
+    let commas = dir.join("commas.txt");
+    std::fs::write(
+        &points,
+        rows.iter()
+            .map(|r| r.join(" "))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    )
+    .unwrap();
+    std::fs::write(
+        &commas,
+        rows.iter()
+            .map(|r| r.join("\t").replace('.', ","))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    )
+    .unwrap();
+    let run = |file: &std::path::Path, extra: &[&str]| {
+        wearopt()
+            .args([
+                "roughness",
+                file.to_str().unwrap(),
+                "--pixel-size",
+                "10nm",
+                "--height-unit",
+                "nm",
+                "--format",
+                "json",
+            ])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let refused = run(&commas, &[]);
+    assert_eq!(refused.status.code(), Some(2));
+    let err = String::from_utf8(refused.stderr).unwrap();
+    assert!(
+        err.contains("decimals with commas") && err.contains("--decimal-comma"),
+        "{err}"
+    );
+    let a: serde_json::Value =
+        serde_json::from_slice(&run(&commas, &["--decimal-comma"]).stdout).unwrap();
+    let b: serde_json::Value = serde_json::from_slice(&run(&points, &[]).stdout).unwrap();
+    assert_eq!(a["summit_sigma"], b["summit_sigma"]);
+    assert_eq!(a["nx"], serde_json::json!(n));
 }

@@ -195,13 +195,15 @@ def roughness(
     level: str = "plane",
     pixel_size: Any = None,
     height_unit: Any = None,
+    decimal_comma: bool = False,
 ) -> Dict[str, Any]:
     """σ, R and N of a measured surface (Gwyddion .gsf, ISO 25178-72 .x3p,
     NumPy .npy, ASCII matrix): the JSON of ``wearopt roughness FILE
     [--cutoff L] [--level none|plane|quadratic] [--pixel-size L]
     [--height-unit U] --format json``. Lengths are strings with units
     ("100 nm") or numbers in metres; ``height_unit`` is a unit ("nm") or a
-    scale ("1e-9").
+    scale ("1e-9"). ``decimal_comma=True`` reads an ASCII matrix written with
+    decimal commas ("1,25"), which is refused without it.
 
     ``path`` may also be the heights themselves: a 2-D array (rows along y,
     NaN where a point is missing) in metres, or in ``height_unit``; then
@@ -222,7 +224,8 @@ def roughness(
     if isinstance(path, (str, os.PathLike)):
         return json.loads(
             _wearopt.roughness_json(
-                os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit
+                os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit,
+                bool(decimal_comma),
             )
         )
     heights = _float_array("heights", path)
@@ -256,6 +259,7 @@ def contact(
     work_of_adhesion: Any = None,
     adhesion_range: Any = None,
     coarse_grain: bool = False,
+    decimal_comma: bool = False,
 ) -> Dict[str, Any]:
     """The exact contact of a height map against an elastic half-space of
     composite modulus E* at each mean pressure (periodic FFT boundary
@@ -306,7 +310,7 @@ def contact(
         text, p_fields, g_fields, ap_fields, ag_fields = _wearopt.contact_json(
             os.fspath(heights), e_star, pressure_list, cap, level,
             _length(pixel_size), height_unit, float(tolerance), bool(fields),
-            **adhesion,
+            decimal_comma=bool(decimal_comma), **adhesion,
         )
     else:
         z = _float_array("heights", heights)

@@ -61,6 +61,7 @@ def contact(
     work_of_adhesion: Union[str, float, None] = None,
     adhesion_range: Union[str, float, None] = None,
     coarse_grain: bool = False,
+    decimal_comma: bool = False,
 ) -> Dict[str, Any]:
     """The JSON of `wearopt contact SCAN … --format json` as a dict (fields as
     arrays with `fields=True`; with `work_of_adhesion` and `adhesion_range`,
@@ -77,6 +78,7 @@ def roughness(
     level: str = "plane",
     pixel_size: Union[str, float, None] = None,
     height_unit: Union[str, float, None] = None,
+    decimal_comma: bool = False,
 ) -> Dict[str, Any]:
     """The JSON of `wearopt roughness FILE … --format json` as a dict.
 

@@ -40,6 +40,7 @@ def roughness_json(
     level: str = "plane",
     pixel_size: Optional[str] = None,
     height_unit: Optional[str] = None,
+    decimal_comma: bool = False,
 ) -> str: ...
 def roughness_array_json(
     heights: np.ndarray,
@@ -61,6 +62,7 @@ def contact_json(
     work_of_adhesion: Optional[str] = None,
     adhesion_range: Optional[str] = None,
     coarse_grain: bool = False,
+    decimal_comma: bool = False,
 ) -> Tuple[str, List[np.ndarray], List[np.ndarray], List[np.ndarray], List[np.ndarray]]: ...
 def contact_array(
     heights: np.ndarray,

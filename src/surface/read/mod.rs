@@ -82,6 +82,9 @@ pub struct Overrides {
     pub pixel_size: Option<f64>,
     /// Metres per stored height value.
     pub height_unit: Option<f64>,
+    /// An ASCII matrix writes its decimals with commas ("1,25"); its columns are
+    /// then separated by whitespace or semicolons only.
+    pub decimal_comma: bool,
 }
 
 /// A file that cannot be read as a height map.
@@ -150,6 +153,11 @@ pub enum ReadError {
 
 /// Reads a height-map file, its format chosen by extension.
 pub fn read(path: &Path) -> Result<Scan, ReadError> {
+    read_with(path, false)
+}
+
+/// [`read`], an ASCII matrix with decimal commas when `decimal_comma`.
+pub fn read_with(path: &Path, decimal_comma: bool) -> Result<Scan, ReadError> {
     let origin = path.display().to_string();
     let format = Format::from_path(path).ok_or_else(|| ReadError::UnknownFormat {
         path: origin.clone(),
@@ -162,11 +170,21 @@ pub fn read(path: &Path) -> Result<Scan, ReadError> {
         path: origin.clone(),
         message: e.to_string(),
     })?;
-    read_bytes(&bytes, format, &origin)
+    read_bytes_with(&bytes, format, &origin, decimal_comma)
 }
 
 /// Reads the bytes of a file of a known format; `origin` names it in messages.
 pub fn read_bytes(bytes: &[u8], format: Format, origin: &str) -> Result<Scan, ReadError> {
+    read_bytes_with(bytes, format, origin, false)
+}
+
+/// [`read_bytes`], an ASCII matrix with decimal commas when `decimal_comma`.
+pub fn read_bytes_with(
+    bytes: &[u8],
+    format: Format,
+    origin: &str,
+    decimal_comma: bool,
+) -> Result<Scan, ReadError> {
     let malformed = |reason: String| ReadError::Malformed {
         path: origin.to_string(),
         format: format.name(),
@@ -175,7 +193,7 @@ pub fn read_bytes(bytes: &[u8], format: Format, origin: &str) -> Result<Scan, Re
     match format {
         Format::Gsf => gsf::read(bytes),
         Format::X3p => x3p::read(bytes),
-        Format::Ascii => ascii::read(bytes),
+        Format::Ascii => ascii::read(bytes, decimal_comma),
         Format::Npy => npy::read(bytes),
     }
     .map_err(malformed)
@@ -255,7 +273,7 @@ pub use gsf::write as write_gsf;
 /// Reads a file and resolves it to a height map (see [`read`] and [`Scan::resolve`]).
 pub fn load(path: &Path, overrides: &Overrides) -> Result<HeightMap, ReadError> {
     let origin = path.display().to_string();
-    read(path)?.resolve(overrides, &origin)
+    read_with(path, overrides.decimal_comma)?.resolve(overrides, &origin)
 }
 
 /// Reads a height unit as a user writes it: a unit name ("nm", "um", "µm", "Å", "m") or a
