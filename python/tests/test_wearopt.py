@@ -603,3 +603,30 @@ def test_pareto_without_a_section_takes_the_command_line():
         wearopt.pareto("problems/micro-gear-study.toml")
     with pytest.raises(ValueError, match="elastic_adhesion_index"):
         wearopt.pareto("problems/micro-gear-study.toml", adhesion="theta")
+
+
+def test_decimal_comma_scans(tmp_path):
+    """An ASCII scan written with decimal commas is refused unless said, and then
+    reads as the map written with points — from roughness(), contact() and a
+    problem file's [roughness] decimal_comma = true."""
+    z = np.load("problems/scans/self-affine-nm.npy")[:64, :64]
+    points = tmp_path / "points.txt"
+    commas = tmp_path / "commas.txt"
+    np.savetxt(points, z, fmt="%.6f")
+    commas.write_text(points.read_text().replace(".", ","))
+    with pytest.raises(ValueError, match="--decimal-comma"):
+        wearopt.roughness(str(commas), pixel_size="20 nm", height_unit="nm")
+    a = wearopt.roughness(str(commas), pixel_size="20 nm", height_unit="nm", decimal_comma=True)
+    b = wearopt.roughness(str(points), pixel_size="20 nm", height_unit="nm")
+    assert a["summit_sigma"] == b["summit_sigma"]
+    c = wearopt.contact(str(commas), pixel_size="20 nm", height_unit="nm", modulus="150 GPa",
+                        pressures="100 MPa", decimal_comma=True)
+    assert c["points"][0]["status"] == "converged"
+    scene = open("problems/micro-gear-scan.toml").read()
+    import re
+    scene = re.sub(r'topography = "[^"]*"', f'topography = "{commas}"\ndecimal_comma = true\n'
+                   'pixel_size = "20 nm"\nheight_unit = "nm"', scene)
+    problem = tmp_path / "scan.toml"
+    problem.write_text(scene)
+    r = wearopt.evaluate(str(problem))
+    assert r["status"] == "ok"
