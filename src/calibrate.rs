@@ -137,6 +137,15 @@ pub enum CalibrationError {
         /// What is needed, in words.
         needed: String,
     },
+    /// Fitting γ and μ to friction that falls as the load rises: eq. 14's F grows
+    /// with P for every μ > 0 and γ ≥ 0, so no pair explains the trend.
+    #[error("{origin}: the friction falls as the load rises (least-squares slope dF/dP = {slope:.3}); eq. 14 gives a friction that grows with the load for every μ > 0 and γ ≥ 0, so γ and μ cannot both be fitted: check the columns (load first, then friction) and units, or fix μ with --mu")]
+    FrictionFalls {
+        /// The file.
+        origin: String,
+        /// The least-squares slope of friction against load.
+        slope: f64,
+    },
     /// A friction below μP: no γ ≥ 0 can give it at the stated μ.
     #[error("{origin}:{line}: friction = {friction} at load = {load}: below μP = {floor} (μ = {mu}); eq. 14 gives F ≥ μP for every γ ≥ 0, so no work of adhesion explains this point: check the row, give a smaller --mu, or use --fit-mu")]
     FrictionBelowFloor {
@@ -613,8 +622,10 @@ pub struct Calibration {
     pub friction_coefficient_source: FrictionCoefficient,
     /// Standard error of μ when fitted.
     pub friction_coefficient_standard_error: Option<f64>,
-    /// 95 % interval of μ when fitted.
+    /// 95 % interval of μ when fitted, lower end clipped at 0 (μ ≥ 0).
     pub friction_coefficient_confidence_interval: Option<[f64; 2]>,
+    /// Whether that lower end was clipped at 0.
+    pub friction_coefficient_interval_clipped: bool,
     /// Correlation of the γ and μ estimates when both are fitted.
     pub correlation: Option<f64>,
     /// n − p.
@@ -666,6 +677,9 @@ pub enum CalibrationNote {
     NoAdhesion,
     /// The Gauss–Newton iteration did not meet its tolerance.
     NotConverged,
+    /// The covariance of the estimates is not defined (γ and μ not separately
+    /// determined by the data): no standard errors or intervals are given.
+    UncertaintyUndefined,
 }
 
 /// A small dense row-major matrix: the Jacobian type handed to argmin's Gauss–Newton
@@ -868,6 +882,24 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
             needed: "two distinct loads (at one load only the product of μ and the adhesive term is determined)".into(),
         });
     }
+    if n_params == 2 {
+        let (mp, mf) = data.points.iter().fold((0.0, 0.0), |(a, b), p| {
+            (a + p.load / n as f64, b + p.friction / n as f64)
+        });
+        let (sxy, sxx) = data.points.iter().fold((0.0, 0.0), |(a, b), p| {
+            (
+                a + (p.load - mp) * (p.friction - mf),
+                b + (p.load - mp).powi(2),
+            )
+        });
+        let slope = sxy / sxx;
+        if slope <= 0.0 {
+            return Err(CalibrationError::FrictionFalls {
+                origin: data.origin.clone(),
+                slope,
+            });
+        }
+    }
     if let Some(mu) = fixed_mu {
         for p in &data.points {
             if p.friction < mu * p.load {
@@ -997,6 +1029,13 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
     } else {
         (None, None, None, None, None)
     };
+    // Uncertainties the data cannot define (a singular or ill-conditioned JᵀJ) are
+    // left out and said, never printed as NaN.
+    let finite = |x: Option<f64>| x.filter(|v| v.is_finite());
+    let undefined = [se_gamma, se_mu, correlation]
+        .iter()
+        .any(|x| x.is_some_and(|v| !v.is_finite()));
+    let (se_gamma, se_mu, correlation) = (finite(se_gamma), finite(se_mu), finite(correlation));
     let interval = |est: f64, se: Option<f64>| -> Option<[f64; 2]> {
         Some([est - t_quantile? * se?, est + t_quantile? * se?])
     };
@@ -1064,6 +1103,9 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
     if !converged {
         notes.push(CalibrationNote::NotConverged);
     }
+    if undefined {
+        notes.push(CalibrationNote::UncertaintyUndefined);
+    }
 
     let comparison = settings.quoted.as_ref().map(|q| {
         let work_of_adhesion = q.work_of_adhesion.map(|gq| {
@@ -1128,7 +1170,9 @@ pub fn fit(data: &FrictionData, settings: &FitSettings) -> Result<Calibration, C
         friction_coefficient: mu,
         friction_coefficient_source: settings.friction_coefficient,
         friction_coefficient_standard_error: se_mu,
-        friction_coefficient_confidence_interval: interval(mu, se_mu),
+        friction_coefficient_confidence_interval: interval(mu, se_mu)
+            .map(|ci| [ci[0].max(0.0), ci[1]]),
+        friction_coefficient_interval_clipped: interval(mu, se_mu).is_some_and(|ci| ci[0] < 0.0),
         correlation,
         degrees_of_freedom: dof,
         t_quantile,

@@ -333,6 +333,9 @@ fn calibration_message(e: &CalibrationError, vocabulary: Vocabulary) -> String {
             };
             format!("{}: {expected}", OptionName(name).with(value, vocabulary))
         }
+        CalibrationError::FrictionFalls { .. } if vocabulary == Vocabulary::Keywords => {
+            e.to_string().replace("fix μ with --mu", "fix μ with mu=")
+        }
         CalibrationError::FrictionBelowFloor { .. } if vocabulary == Vocabulary::Keywords => {
             e.to_string().replace(
                 "give a smaller --mu, or use --fit-mu",

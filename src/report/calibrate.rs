@@ -80,6 +80,10 @@ pub fn note(n: &CalibrationNote) -> String {
             "the Gauss–Newton iteration did not meet its tolerance; the estimate is the best point found"
                 .into()
         }
+        CalibrationNote::UncertaintyUndefined => {
+            "the data do not determine γ and μ separately (their covariance is singular): no standard errors or intervals can be given; fix μ with --mu, or add loads further apart"
+                .into()
+        }
     }
 }
 
@@ -157,9 +161,14 @@ pub fn text(c: &Calibration) -> String {
     ));
     if let Some(ci) = c.friction_coefficient_confidence_interval {
         line(format!(
-            "  {pct} interval          {} to {}",
+            "  {pct} interval          {} to {}{}",
             sig(ci[0], 4),
-            sig(ci[1], 4)
+            sig(ci[1], 4),
+            if c.friction_coefficient_interval_clipped {
+                ", clipped at 0"
+            } else {
+                ""
+            }
         ));
     }
     if let Some(r) = c.correlation {

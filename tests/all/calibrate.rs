@@ -449,3 +449,38 @@ fn exact_fit_has_no_interval() {
             parameters: 1
         }));
 }
+
+/// Degenerate data never print NaN: friction falling with the load cannot be
+/// fitted with γ and μ (exit 2, the slope and the way out named; it printed
+/// "± NaN" with exit 0), and where the data leave μ's 95 % interval below 0 it is
+/// clipped there like γ's.
+#[test]
+fn degenerate_fits_say_so_instead_of_nan() {
+    let falling = data_file(
+        "falling.csv",
+        "load,friction\n10 uN,30 uN\n20 uN,6 uN\n40 uN,1 uN\n80 uN,2 uN\n",
+    );
+    fails_with(
+        &["--radius", "1um", "--fit-mu"],
+        &falling,
+        &["the friction falls as the load rises", "fix μ with --mu"],
+    );
+    let noisy = data_file(
+        "noisy.csv",
+        "load,friction\n10 uN,30 uN\n20 uN,6 uN\n40 uN,40 uN\n80 uN,41 uN\n",
+    );
+    let out = wearopt()
+        .args([
+            "fit-adhesion",
+            noisy.to_str().unwrap(),
+            "--radius",
+            "1um",
+            "--fit-mu",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+    assert!(text.contains("0 to 1.207, clipped at 0"), "{text}");
+}
