@@ -267,11 +267,19 @@ fn sweep_text(
         let plan = app::sweep::plan(&problem, &origin, &options).map_err(words)?;
         let shard = app::sweep::shard(shard_index, shard_count).map_err(words)?;
         let plan = plan.part(shard);
+        // The problem's content for the fingerprint, as the command line reads it.
+        let bytes = if is_path {
+            std::fs::read(&source).unwrap_or_default()
+        } else {
+            source.clone().into_bytes()
+        };
         let mut text = report::sweep::head(
             format,
             &report::sweep::Head {
                 name: &plan.name,
                 sweep: &plan.sweep,
+                problem: &bytes,
+                shard,
             },
         );
         let mut first = true;

@@ -329,7 +329,8 @@ def test_dask_example_on_a_local_cluster_gives_the_serial_result():
 
 def test_slurm_example_runs_as_a_job_array(tmp_path):
     """examples/slurm/sweep.sbatch run task by task with Slurm's variables, with a
-    stand-in `sbatch` that runs the merge step it is handed."""
+    stand-in `sbatch` that runs the merge step it is handed; a failed task rerun
+    alone (`--array=1`: Slurm's count 1) computes its own shard's rows."""
     fake = tmp_path / "bin"
     fake.mkdir()
     sbatch = fake / "sbatch"
@@ -339,7 +340,7 @@ def test_slurm_example_runs_as_a_job_array(tmp_path):
     out = tmp_path / "parts"
     env = {k: v for k, v in os.environ.items() if not k.startswith("SLURM_")}
     env.update(PATH=f"{fake}:{env['PATH']}", PROBLEM=str(ROOT / "problems/micro-gear-study.toml"),
-               SAMPLES="50", OUT=str(out), WEAROPT=_binary(),
+               SAMPLES="50", SHARDS="4", OUT=str(out), WEAROPT=_binary(),
                FAKE_SBATCH_CMD=str(tmp_path / "merge.sh"))
     for task in (2, 0, 3, 1, 2):  # any order; task 2 twice (a resubmission skips)
         env.update(SLURM_ARRAY_TASK_ID=str(task), SLURM_ARRAY_TASK_COUNT="4",
@@ -348,6 +349,15 @@ def test_slurm_example_runs_as_a_job_array(tmp_path):
         r = subprocess.run(["bash", str(ROOT / "examples/slurm/sweep.sbatch")], cwd=tmp_path,
                            env=env, capture_output=True, text=True)
         assert r.returncode == 0, r.stderr
+    # Task 1 failed (its part lost); rerun as `sbatch --array=1`.
+    good = (out / "part-1.csv").read_text()
+    (out / "part-1.csv").unlink()
+    env.update(SLURM_ARRAY_TASK_ID="1", SLURM_ARRAY_TASK_COUNT="1",
+               SLURM_ARRAY_TASK_MIN="1", SLURM_ARRAY_TASK_MAX="1")
+    r = subprocess.run(["bash", str(ROOT / "examples/slurm/sweep.sbatch")], cwd=tmp_path,
+                       env=env, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert (out / "part-1.csv").read_text() == good
     merged = subprocess.run(["bash", "-c", (tmp_path / "merge.sh").read_text()], cwd=tmp_path,
                             env=env, capture_output=True, text=True)
     assert merged.returncode == 0, merged.stderr

@@ -155,16 +155,21 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     let plan = plan.part(shard);
     let sweep = &plan.sweep;
     let range = plan.range.clone();
+    // The problem's content for the fingerprint: the file as read.
+    let problem_bytes = std::fs::read(&args.file).unwrap_or_default();
     let head = out::head(
         format,
         &out::Head {
             name: &plan.name,
             sweep,
+            problem: &problem_bytes,
+            shard,
         },
     );
     let direction = plan.direction;
 
-    // Resume: a complete output of this very shard is kept as it is.
+    // Resume: a complete output of this very shard of this very sweep (its head,
+    // fingerprint and shard included, as this run would write it) is kept.
     if let Some(path) = &args.out {
         if let Ok(existing) = std::fs::read_to_string(path) {
             if let Ok(part) = out::parse_part(&existing) {

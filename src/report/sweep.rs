@@ -10,6 +10,15 @@
 //!   shard; a part is complete when its last row is the last of its range.
 //! * JSON: one object; its head names the sweep (`samples`, `method`, `seed`), its
 //!   `rows` array holds one row object per line, and `\n  ]\n}\n` closes it.
+//!
+//! Every output begins with its fingerprint: a hash of the problem's content,
+//! the method, seed, N and wearopt's version, and the shard — in CSV a first line
+//! `# wearopt sweep fingerprint=… shard=I/N samples=N …` (the comment readers
+//! skip: pandas `comment="#"`, NumPy's default), in JSON the keys `fingerprint`
+//! and `shard`. A rerun keeps a part only if its head, fingerprint and shard
+//! included, is the one it would write; `merge` joins only parts of one
+//! fingerprint, checks each part holds exactly its shard's rows of N, and writes
+//! the unsharded head (`shard=0/1`).
 
 use std::fmt::Write as _;
 
@@ -18,7 +27,7 @@ use serde_json::{json, Value};
 use super::number;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use crate::optimize::{Named, ParetoDirection};
-use crate::sweep::{Sweep, SweepRow};
+use crate::sweep::{Shard, Sweep, SweepRow};
 
 /// The formats `wearopt sweep` and `wearopt merge` write (the first is the default).
 pub const FORMATS: &[super::Format] = &[super::Format::Csv, super::Format::Json];
@@ -52,10 +61,37 @@ pub struct Head<'a> {
     pub name: &'a str,
     /// The sweep.
     pub sweep: &'a Sweep,
+    /// The problem's content as read (the file's bytes, or a dict's JSON text).
+    pub problem: &'a [u8],
+    /// Which part of the sweep this output holds.
+    pub shard: Shard,
+}
+
+/// The sweep's fingerprint: FNV-1a (64 bit) of the problem's content, the
+/// method, seed, N and wearopt's version — the same on every machine.
+pub fn fingerprint(problem: &[u8], sweep: &Sweep) -> u64 {
+    let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+    let mut eat = |bytes: &[u8]| {
+        for &b in bytes {
+            hash ^= u64::from(b);
+            hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+        // A separator, so that fields cannot run into each other.
+        hash ^= 0xff;
+        hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+    };
+    eat(problem);
+    eat(sweep.method().as_str().as_bytes());
+    eat(&sweep.seed().to_le_bytes());
+    eat(&sweep.samples().to_le_bytes());
+    eat(env!("CARGO_PKG_VERSION").as_bytes());
+    hash
 }
 
 /// The head: the CSV header line, or the JSON object up to the opening of `rows`.
 pub fn head(format: Encoding, h: &Head) -> String {
+    let print = format!("{:016x}", fingerprint(h.problem, h.sweep));
+    let shard = format!("{}/{}", h.shard.index, h.shard.count);
     let names = h.sweep.design_names();
     let constraints: Vec<&str> = h
         .sweep
@@ -65,7 +101,14 @@ pub fn head(format: Encoding, h: &Head) -> String {
         .collect();
     match format {
         Encoding::Csv => {
-            let mut out = String::from("index");
+            let mut out = format!(
+                "# wearopt sweep fingerprint={print} shard={shard} samples={} method={} seed={} version={}\n",
+                h.sweep.samples(),
+                h.sweep.method().as_str(),
+                h.sweep.seed(),
+                env!("CARGO_PKG_VERSION")
+            );
+            out.push_str("index");
             for n in &names {
                 out.push(',');
                 out.push_str(n);
@@ -81,7 +124,10 @@ pub fn head(format: Encoding, h: &Head) -> String {
         Encoding::Json => {
             let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
             format!(
-                "{{\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},\n  \"rows\": [",
+                "{{\n  \"fingerprint\": {},\n  \"shard\": {},\n  \"version\": {},\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},\n  \"rows\": [",
+                s(json!(print)),
+                s(json!(shard)),
+                s(json!(env!("CARGO_PKG_VERSION"))),
                 s(json!(h.name)),
                 s(json!(h.sweep.method().as_str())),
                 h.sweep.seed(),
@@ -238,8 +284,24 @@ pub enum MergeError {
         previous: u64,
     },
     /// Parts of different sweeps, or of different formats.
-    #[error("its head differs from the first part's: parts of different sweeps (file, method, seed, samples or format) cannot be joined")]
+    #[error("its head differs from the first part's: parts of different sweeps (problem content, method, seed, samples, version or format: see the fingerprint line) cannot be joined")]
     HeadMismatch,
+    /// A part whose rows are not its shard's.
+    #[error("it is shard {index}/{count} of {samples} designs, rows {start}..{end}, but holds {found}: cut short or not this sweep's part (rerun that shard)")]
+    ShardRows {
+        /// The shard's index.
+        index: u64,
+        /// The shard count.
+        count: u64,
+        /// N.
+        samples: u64,
+        /// The shard's first row.
+        start: u64,
+        /// One past its last row.
+        end: u64,
+        /// What the part holds, in words.
+        found: String,
+    },
     /// A gap or overlap between parts.
     #[error("rows {expected}..{found} are missing (no part starts at row {expected})")]
     Gap {
@@ -276,8 +338,13 @@ pub struct Part<'a> {
     pub head: &'a str,
     /// Its rows: index and line (without separator, terminator or trailing comma).
     pub rows: Vec<(u64, &'a str)>,
-    /// For JSON, `samples` from the head.
+    /// `samples` from the head (JSON, and CSV with a fingerprint line).
     pub samples: Option<u64>,
+    /// The shard the head names (None for an output without a fingerprint).
+    pub shard: Option<Shard>,
+    /// The head with its shard written as the whole sweep's (`0/1`): the same for
+    /// every part of one sweep, and the head of the merged output.
+    pub sweep_head: String,
 }
 
 impl Part<'_> {
@@ -309,6 +376,10 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
             .lines()
             .find_map(|l| l.trim().strip_prefix("\"samples\": "))
             .and_then(|v| v.trim_end_matches(',').parse().ok());
+        let shard = head
+            .lines()
+            .find_map(|l| l.trim().strip_prefix("\"shard\": "))
+            .and_then(|v| parse_shard(v.trim_end_matches(',').trim_matches('"')));
         let body = &text[at + open.len()..];
         let body = body
             .strip_suffix(tail(Encoding::Json))
@@ -334,16 +405,39 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
         check_order(&rows, head_lines + 1)?;
         Ok(Part {
             format: Encoding::Json,
+            sweep_head: whole_shard(head, shard, "\"shard\": \""),
             head,
             rows,
             samples,
+            shard,
         })
     } else {
-        let end = text.find('\n').ok_or_else(|| {
-            MergeError::NotASweep("no header line (the file is empty or has no newline)".into())
-        })?;
+        // The fingerprint line, if any, then the header line.
+        let (print, skip) = match text.strip_prefix("# wearopt sweep ") {
+            Some(rest) => {
+                let line = rest.split('\n').next().unwrap_or("");
+                (Some(line), "# wearopt sweep ".len() + line.len() + 1)
+            }
+            None => (None, 0),
+        };
+        let field = |key: &str| {
+            print.and_then(|l| {
+                l.split(' ')
+                    .find_map(|f| f.strip_prefix(key).and_then(|v| v.strip_prefix('=')))
+            })
+        };
+        let samples = field("samples").and_then(|v| v.parse().ok());
+        let shard = field("shard").and_then(parse_shard);
+        let end = text
+            .get(skip..)
+            .and_then(|t| t.find('\n'))
+            .map(|e| e + skip)
+            .ok_or_else(|| {
+                MergeError::NotASweep("no header line (the file is empty or has no newline)".into())
+            })?;
         let head = &text[..=end];
-        if !head.starts_with("index,") || !head.trim_end().ends_with(",feasible") {
+        let header = &text[skip..=end];
+        if !header.starts_with("index,") || !header.trim_end().ends_with(",feasible") {
             return Err(MergeError::NotASweep(
                 "the first line is not a sweep CSV header (index,…,feasible)".into(),
             ));
@@ -352,21 +446,44 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
         if !body.is_empty() && !body.ends_with('\n') {
             return Err(MergeError::Incomplete);
         }
-        let columns = head.split(',').count();
+        let columns = header.split(',').count();
+        let head_lines = head.lines().count();
         let mut rows = Vec::new();
         for (k, line) in body.lines().enumerate() {
             let index = leading_index(line)
                 .filter(|_| line.split(',').count() == columns)
-                .ok_or(MergeError::BadRow { line: k + 2 })?;
+                .ok_or(MergeError::BadRow {
+                    line: k + head_lines + 1,
+                })?;
             rows.push((index, line));
         }
-        check_order(&rows, 2)?;
+        check_order(&rows, head_lines + 1)?;
         Ok(Part {
             format: Encoding::Csv,
+            sweep_head: whole_shard(head, shard, " shard="),
             head,
             rows,
-            samples: None,
+            samples,
+            shard,
         })
+    }
+}
+
+/// `I/N` as a shard.
+fn parse_shard(text: &str) -> Option<Shard> {
+    let (i, n) = text.split_once('/')?;
+    Shard::new(i.parse().ok()?, n.parse().ok()?).ok()
+}
+
+/// `head` with the shard after `key` written as `0/1`.
+fn whole_shard(head: &str, shard: Option<Shard>, key: &str) -> String {
+    match shard {
+        Some(s) => head.replacen(
+            &format!("{key}{}/{}", s.index, s.count),
+            &format!("{key}0/1"),
+            1,
+        ),
+        None => head.to_string(),
     }
 }
 
@@ -402,7 +519,7 @@ pub fn sort_key(part: &Part) -> Option<u64> {
 impl Merger {
     /// A merger for parts like `first`; returns it and the head to write.
     pub fn new(first: &Part) -> (Merger, String) {
-        let head = first.head.to_string();
+        let head = first.sweep_head.clone();
         (
             Merger {
                 format: first.format,
@@ -416,8 +533,25 @@ impl Merger {
 
     /// The text that `part`'s rows add; checks that it continues the rows so far.
     pub fn push(&mut self, part: &Part) -> Result<String, MergeError> {
-        if part.format != self.format || part.head != self.head {
+        if part.format != self.format || part.sweep_head != self.head {
             return Err(MergeError::HeadMismatch);
+        }
+        if let (Some(shard), Some(samples)) = (part.shard, part.samples.or(self.samples)) {
+            let range = shard.range(samples);
+            if !part.covers(range.clone()) {
+                let found = match (part.rows.first(), part.rows.last()) {
+                    (Some(a), Some(b)) => format!("rows {}..{}", a.0, b.0 + 1),
+                    _ => "no rows".to_string(),
+                };
+                return Err(MergeError::ShardRows {
+                    index: shard.index,
+                    count: shard.count,
+                    samples,
+                    start: range.start,
+                    end: range.end,
+                    found,
+                });
+            }
         }
         let Some(&(first, _)) = part.rows.first() else {
             return Ok(String::new());
@@ -480,7 +614,8 @@ pub fn merge(texts: &[&str], samples: Option<u64>) -> Result<String, (Option<usi
 
 /// The (wear rate, log10 of the pull-off force, feasible) of each row of a part, for the map.
 pub fn map_points(part: &Part) -> Result<Vec<(f64, Option<f64>, bool)>, MergeError> {
-    let columns: Vec<&str> = part.head.trim_end().split(',').collect();
+    let header = part.head.lines().last().unwrap_or("");
+    let columns: Vec<&str> = header.trim_end().split(',').collect();
     let col = |name: &str| columns.iter().position(|c| *c == name);
     let head_lines = part.head.lines().count();
     part.rows

@@ -258,11 +258,11 @@ fn csv_completeness_is_read_from_the_rows() {
     let complete = std::fs::read_to_string(&path).unwrap();
     assert_eq!(
         complete.lines().count(),
-        6,
-        "header and rows 0..5, nothing else"
+        7,
+        "fingerprint, header and rows 0..5, nothing else"
     );
     // Drop the last row: the file still parses, but misses row 4.
-    let cut: String = complete.lines().take(5).map(|l| format!("{l}\n")).collect();
+    let cut: String = complete.lines().take(6).map(|l| format!("{l}\n")).collect();
     std::fs::write(&path, cut).unwrap();
     assert!(!String::from_utf8_lossy(&run()).contains("skipped"));
     assert_eq!(std::fs::read_to_string(&path).unwrap(), complete);
@@ -437,4 +437,104 @@ fn merge_refuses_gaps_overlaps_and_strangers() {
     let text = std::fs::read_to_string(&json).unwrap();
     std::fs::write(&json, &text[..text.len() - 3]).unwrap();
     bad(&[&json], &[], "incomplete");
+}
+
+/// Every output begins with its fingerprint. A rerun after editing the problem,
+/// or with another seed, recomputes the part instead of keeping the old rows
+/// ("complete … skipped"); merge refuses parts of different sweeps and, without
+/// --samples, a CSV part cut short on a row boundary (its shard's rows are known
+/// from N and I/N in its head); an explicit --shard wins over Slurm's variables,
+/// so a resubmitted array task computes its own rows.
+#[test]
+fn fingerprints_keep_sweeps_apart() {
+    let dir = scratch("fingerprint");
+    let study = dir.join("study.toml");
+    let text = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(STUDY)).unwrap();
+    std::fs::write(&study, &text).unwrap();
+    let part = |i: u64, seed: &str| {
+        let path = dir.join(format!("part-{i}-{seed}.csv"));
+        let err = wearopt()
+            .args([
+                "sweep",
+                study.to_str().unwrap(),
+                "--samples",
+                "12",
+                "--seed",
+                seed,
+            ])
+            .args(["--shard", &format!("{i}/3"), "--out"])
+            .arg(&path)
+            .assert()
+            .success()
+            .get_output()
+            .stderr
+            .clone();
+        (path, String::from_utf8(err).unwrap())
+    };
+    let (p0, _) = part(0, "1");
+    let first = std::fs::read_to_string(&p0).unwrap();
+    assert!(first.starts_with("# wearopt sweep fingerprint="), "{first}");
+    assert!(first
+        .lines()
+        .next()
+        .unwrap()
+        .contains(" shard=0/3 samples=12 method=sobol seed=1 "));
+    // The same run again: kept.
+    assert!(part(0, "1").1.contains("skipped"));
+    // The problem edited (a comment is content too): recomputed, a new fingerprint.
+    std::fs::write(&study, format!("{text}\n# edited\n")).unwrap();
+    assert!(!part(0, "1").1.contains("skipped"));
+    let edited = std::fs::read_to_string(&p0).unwrap();
+    assert_ne!(edited.lines().next(), first.lines().next());
+    // Parts of two sweeps (another seed) are refused by merge.
+    let (p1, _) = part(1, "1");
+    let (p2_other, _) = part(2, "2");
+    let out = wearopt()
+        .arg("merge")
+        .args([&p0, &p1, &p2_other])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("parts of different sweeps"));
+    // A part cut short on a row boundary is found from N alone.
+    let (p2, _) = part(2, "1");
+    let whole = std::fs::read_to_string(&p1).unwrap();
+    let cut: String = whole
+        .lines()
+        .take(whole.lines().count() - 1)
+        .map(|l| format!("{l}\n"))
+        .collect();
+    std::fs::write(&p1, cut).unwrap();
+    let out = wearopt()
+        .arg("merge")
+        .args([&p0, &p1, &p2])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("shard 1/3 of 12 designs, rows 4..8, but holds rows 4..7"),
+        "{err}"
+    );
+    // --shard over Slurm's variables (a rerun of task 2 in an array of 1).
+    let path = dir.join("slurm.csv");
+    wearopt()
+        .env("SLURM_ARRAY_TASK_ID", "2")
+        .env("SLURM_ARRAY_TASK_COUNT", "1")
+        .env("SLURM_ARRAY_TASK_MIN", "2")
+        .args([
+            "sweep",
+            study.to_str().unwrap(),
+            "--samples",
+            "12",
+            "--seed",
+            "1",
+            "--shard",
+            "2/3",
+            "--out",
+        ])
+        .arg(&path)
+        .assert()
+        .success();
+    assert_eq!(std::fs::read(&path).unwrap(), std::fs::read(&p2).unwrap());
 }

@@ -395,11 +395,16 @@ def sweep(
     """The output of ``wearopt sweep FILE --samples N --method M --seed S
     [--shard I/N] --format F`` as text: the study's scene at ``samples``
     designs of its ``[design]`` box. ``shard=(i, n)`` computes the i-th of n
-    equal parts; :func:`merge` joins parts into the unsharded text.
+    equal parts; :func:`merge` joins parts into the unsharded text. The text
+    begins with the sweep's fingerprint (CSV: a ``# wearopt sweep …`` comment
+    line, read with ``pandas.read_csv(…, comment="#")``; JSON: the keys
+    ``fingerprint`` and ``shard``).
 
     >>> import io, csv
     >>> text = wearopt.sweep("problems/micro-gear-study.toml", 16)
-    >>> rows = list(csv.DictReader(io.StringIO(text)))
+    >>> text.splitlines()[0].split()[:3]    # its fingerprint, which CSV readers skip
+    ['#', 'wearopt', 'sweep']
+    >>> rows = list(csv.DictReader(l for l in io.StringIO(text) if not l.startswith("#")))
     >>> len(rows), rows[0]["status"]
     (16, 'ok')
     """
