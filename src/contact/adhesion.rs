@@ -17,7 +17,7 @@
 
 use std::f64::consts::PI;
 
-use super::{lane_sum, patches, ContactError, Outcome, Settings, Solver};
+use super::{lane_sum, patches, scale_mean, ContactError, Outcome, Settings, Solver};
 
 /// Process-zone pixels (along the coarser axis) at which the range counts as
 /// resolved; below, the solve is refused unless the range is coarse-grained.
@@ -230,7 +230,7 @@ impl Solver {
     ) -> (usize, f64, Outcome, f64) {
         let n = g.len();
         let scale = (0.5 * self.modulus * self.slope_rms).max(adhesion.peak_stress());
-        scale_gap(g, mean_gap);
+        scale_mean(g, mean_gap);
         // `elastic` holds K⁻¹(g + h); after a step that neither clamps nor opens
         // a pixel it is updated by linearity (K⁻¹(g − τt + h) = K⁻¹(g + h) − τK⁻¹t,
         // the mean untouched since t sums to zero), which saves one of the two
@@ -315,7 +315,7 @@ impl Solver {
             }
             conjugate = !opened;
             if opened || clamped {
-                scale_gap(g, mean_gap);
+                scale_mean(g, mean_gap);
                 recompute = true;
             } else {
                 for (e, &ri) in elastic.iter_mut().zip(&r) {
@@ -636,18 +636,6 @@ fn open(g: f64) -> f64 {
         1.0
     } else {
         0.0
-    }
-}
-
-/// Scales the gaps to mean `target` (zeros stay in contact).
-fn scale_gap(g: &mut [f64], target: f64) {
-    let n = g.len() as f64;
-    let sum: f64 = g.iter().sum();
-    if sum <= 0.0 {
-        g.iter_mut().for_each(|x| *x = target);
-    } else {
-        let s = target * n / sum;
-        g.iter_mut().for_each(|x| *x *= s);
     }
 }
 

@@ -664,7 +664,8 @@ fn lane_sum<const K: usize>(n: usize, mut f: impl FnMut(usize) -> [f64; K]) -> [
     out
 }
 
-/// Scales the pressures to mean `target` (Polonsky & Keer's load step).
+/// Scales the field to mean `target` (Polonsky & Keer's load step; the gaps'
+/// mean in the adhesive scheme, its zeros kept in contact).
 fn scale_mean(p: &mut [f64], target: f64) {
     let n = p.len() as f64;
     let sum: f64 = p.iter().sum();
