@@ -322,8 +322,29 @@ fn solved(
         origin: origin.clone(),
         error,
     })?;
+    // A map flat to within what its heights resolve (a constant or a plane: the
+    // levelling leaves only rounding) is flat: in full contact at any load. Given
+    // as it is, the solver chased the rounding to its iteration limit.
+    let largest = map.heights().iter().fold(0.0f64, |m, h| m.max(h.abs()));
+    let n = (nx * ny) as f64;
+    let mean = levelled.heights().iter().sum::<f64>() / n;
+    let spread = (levelled
+        .heights()
+        .iter()
+        .map(|h| (h - mean) * (h - mean))
+        .sum::<f64>()
+        / n)
+        .sqrt();
+    let flat = spread <= crate::surface::HEIGHT_RESOLUTION * largest;
+    let zeros;
+    let heights = if flat {
+        zeros = vec![0.0; nx * ny];
+        &zeros[..]
+    } else {
+        levelled.heights()
+    };
     let mut solver =
-        Solver::new(nx, ny, dx, dy, levelled.heights(), options.modulus).map_err(contact_error)?;
+        Solver::new(nx, ny, dx, dy, heights, options.modulus).map_err(contact_error)?;
     let settings = SolveSettings {
         hardness: options.hardness.unwrap_or(f64::INFINITY),
         tolerance: options.tolerance,
@@ -377,23 +398,17 @@ fn solved(
             }
         })
         .collect();
-    let n = (nx * ny) as f64;
-    let mean = levelled.heights().iter().sum::<f64>() / n;
-    let rms_height = (levelled
-        .heights()
-        .iter()
-        .map(|h| (h - mean) * (h - mean))
-        .sum::<f64>()
-        / n)
-        .sqrt();
     Ok(ContactDocument {
         file: origin,
         format,
         pixels: [nx, ny],
         pixel_size: [dx, dy],
         options: options.clone(),
-        rms_height,
-        heights: levelled.heights().iter().map(|h| h - mean).collect(),
+        rms_height: if flat { 0.0 } else { spread },
+        heights: heights
+            .iter()
+            .map(|h| if flat { 0.0 } else { h - mean })
+            .collect(),
         roughness,
         points,
         adhesion,

@@ -584,3 +584,34 @@ fn adhesion_does_not_depend_on_threads() {
     };
     assert_eq!(run("1"), run("2"));
 }
+
+/// A constant map (after levelling only rounding is left) is flat: full contact,
+/// converged at once, rms height 0 — the solver once chased the rounding to its
+/// iteration limit and called the row not a solution.
+#[test]
+fn a_constant_map_is_in_full_contact() {
+    let path = tmp("constant").join("constant.txt");
+    let row = ["5"; 12].join(" ");
+    std::fs::write(&path, vec![row; 12].join("\n")).unwrap();
+    let out = stdout(
+        wearopt()
+            .args(["contact", path.to_str().unwrap()])
+            .args(["--pixel-size", "10nm", "--height-unit", "nm"])
+            .args([
+                "--modulus",
+                "100GPa",
+                "--pressure",
+                "1MPa",
+                "--format",
+                "json",
+            ]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let p = &v["points"][0];
+    assert_eq!(p["status"], "converged");
+    assert_eq!(p["real_area_fraction"].as_f64(), Some(1.0));
+    assert_eq!(p["residual"].as_f64(), Some(0.0));
+    assert_eq!(v["rms_height"].as_f64(), Some(0.0));
+    assert!(v["statistical_inputs"].is_null());
+}
