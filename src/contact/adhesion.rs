@@ -17,7 +17,7 @@
 
 use std::f64::consts::PI;
 
-use super::{lane_sum, patches, scale_mean, ContactError, Outcome, Settings, Solver};
+use super::{lane_sum, mask, patches, scale_mean, ContactError, Outcome, Settings, Solver};
 
 /// Process-zone pixels (along the coarser axis) at which the range counts as
 /// resolved; below, the solve is refused unless the range is coarse-grained.
@@ -257,14 +257,14 @@ impl Solver {
             // mean is minus the mean pressure.
             let [sum, count] = lane_sum(n, |i| {
                 w[i] = elastic[i] + adhesion.traction(g[i]);
-                let open = open(g[i]);
+                let open = mask(g[i]);
                 [open * w[i], open]
             });
             let centre = if count > 0.0 { sum / count } else { 0.0 };
             let [norm, imbalance] = lane_sum(n, |i| {
                 w[i] -= centre;
                 let wi = w[i];
-                let open = open(g[i]);
+                let open = mask(g[i]);
                 let pull = (1.0 - open) * wi.min(0.0);
                 [open * wi * wi, open * wi * wi + pull * pull]
             });
@@ -290,7 +290,7 @@ impl Solver {
             self.compliance.apply_inverse(&t, &mut r);
             let [r_sum, t_sum, wt, rt] = lane_sum(n, |i| {
                 let (ti, ri) = (t[i], r[i]);
-                [open(g[i]) * ri, ti, w[i] * ti, ri * ti]
+                [mask(g[i]) * ri, ti, w[i] * ti, ri * ti]
             });
             // Σ (r − r̄) t over the open pixels, r̄ their mean (t is zero elsewhere).
             let rt = rt - r_sum / count.max(1.0) * t_sum;
@@ -627,15 +627,6 @@ impl Solver {
                 Outcome::IterationLimit
             },
         })
-    }
-}
-
-/// 1 on an open pixel (positive gap), else 0.
-fn open(g: f64) -> f64 {
-    if g > 0.0 {
-        1.0
-    } else {
-        0.0
     }
 }
 

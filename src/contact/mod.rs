@@ -624,8 +624,8 @@ fn mean_where(x: &[f64], p: &[f64], keep: impl Fn(f64) -> bool) -> Option<f64> {
     (count > 0).then(|| sum / count as f64)
 }
 
-/// 1 where a pixel carries pressure, else 0 (a multiplier, so that the sums
-/// below have no branches).
+/// 1 where a pixel carries pressure (or, in the adhesive scheme, where its gap
+/// is open), else 0: a multiplier, so that the sums have no branches.
 fn mask(p: f64) -> f64 {
     if p > 0.0 {
         1.0
