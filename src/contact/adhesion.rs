@@ -190,6 +190,16 @@ impl Solver {
         settings: &Settings,
         start: Option<&[f64]>,
     ) -> Result<AdhesiveSolution, ContactError> {
+        super::on_pool_worker(|| self.adhesive_at_gap_in_pool(mean_gap, adhesion, settings, start))
+    }
+
+    fn adhesive_at_gap_in_pool(
+        &mut self,
+        mean_gap: f64,
+        adhesion: &Adhesion,
+        settings: &Settings,
+        start: Option<&[f64]>,
+    ) -> Result<AdhesiveSolution, ContactError> {
         if !(mean_gap.is_finite() && mean_gap > 0.0) {
             return Err(ContactError::MeanGap(mean_gap));
         }
