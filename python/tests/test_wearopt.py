@@ -608,7 +608,7 @@ def test_pareto_without_a_section_takes_the_command_line():
                            adhesion="elastic_adhesion_index", direction="high")
     assert front["adhesion_measure"] == "elastic_adhesion_index"
     assert front["direction"] == "high"
-    assert len(front["points"]) == 3
+    assert len(front["front"]) == 3
     with pytest.raises(ValueError, match="--adhesion, --points, --direction"):
         wearopt.pareto("problems/micro-gear-study.toml")
     with pytest.raises(ValueError, match="elastic_adhesion_index"):

@@ -101,10 +101,27 @@ impl Observer for Stream<'_> {
         }
     }
 
-    fn point_done(&self, p: &FrontPoint) {
+    fn point_solved(&self) {
         if let Some(b) = &self.bar {
             b.inc(1);
         }
+    }
+
+    fn refine_started(&self) {
+        if let Some(b) = &self.bar {
+            b.set_message("points, re-solving");
+        }
+    }
+
+    fn turn_started(&self, solves: usize) {
+        if let Some(b) = &self.bar {
+            // At most this many more: the count ends when the work does.
+            b.set_length(b.position() + solves as u64);
+            b.set_message("solves at the turn");
+        }
+    }
+
+    fn point_done(&self, p: &FrontPoint) {
         let first = {
             let mut st = self.state.lock().unwrap_or_else(|e| e.into_inner());
             st.0 += 1;

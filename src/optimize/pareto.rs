@@ -25,6 +25,15 @@
 //!   spans a decade or more, evenly in value otherwise, ordered from the
 //!   preferred end; the target nearest `s_w` is moved onto it, so the front
 //!   ends exactly at the study's least-wear design.
+//! * **Points spent on the front.** Where the ε-curve turns — the least wear
+//!   holds over a stretch of adhesion, so every point past the strongest
+//!   of them is dominated — the turn is located by bisection between the last
+//!   point above the least wear and the first at it (to [`RANGE_RESOLUTION`],
+//!   at most [`MAX_TURN_STEPS`] solves), and `points` targets are spread again
+//!   from the preferred end to the turn (points already solved within a
+//!   quarter spacing of a target stand for it). The dominated points past the
+//!   turn stay in the sweep, after the front's, and do not count against
+//!   `points`.
 //! * **Solves.** Each ε-point is the study's own [`optimize`] with the ε-row
 //!   added, run with the study's multistart, so that no point is worse than a
 //!   standalone run at its ε. Points are solved in waves of [`WAVE`] in
@@ -83,6 +92,9 @@ pub const MAX_REFINE_ROUNDS: usize = 4;
 /// Most feasibility probes per end of the range.
 pub const MAX_PROBES: usize = 12;
 
+/// Most solves locating where the ε-curve turns (see the module docs).
+pub const MAX_TURN_STEPS: usize = 8;
+
 /// The front's tuning, one documented field each (defaults: the constants above).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ParetoSettings {
@@ -105,6 +117,8 @@ pub struct ParetoSettings {
     pub max_refine_rounds: usize,
     /// Most feasibility probes per end of the range (default [`MAX_PROBES`]).
     pub max_probes: usize,
+    /// Most solves locating the turn of the ε-curve (default [`MAX_TURN_STEPS`]).
+    pub max_turn_steps: usize,
 }
 
 impl Default for ParetoSettings {
@@ -117,6 +131,7 @@ impl Default for ParetoSettings {
             range_resolution: RANGE_RESOLUTION,
             max_refine_rounds: MAX_REFINE_ROUNDS,
             max_probes: MAX_PROBES,
+            max_turn_steps: MAX_TURN_STEPS,
         }
     }
 }
@@ -224,6 +239,11 @@ pub struct Front {
     pub points: Vec<FrontPoint>,
     /// Index in `points` of the knee.
     pub knee: Option<usize>,
+    /// Where the ε-curve turns: the index in `points` of the front's far end,
+    /// the first design (from the preferred end) at the least wear; the
+    /// points after it are dominated and do not count against the points
+    /// asked for. None where the curve does not turn.
+    pub turn: Option<usize>,
     /// The reachable range of the measure, (lowest, highest) strength in log10 units.
     pub strength_range: (f64, f64),
     /// The low end is the pull-off floor (one-sided).
@@ -264,6 +284,13 @@ pub trait Observer: Sync {
     fn probe_done(&self) {}
     /// The sweep of `points` targets begins.
     fn sweep_started(&self, _points: usize) {}
+    /// A target of the sweep, or of the turn's search, was solved (any thread).
+    fn point_solved(&self) {}
+    /// The points are being re-solved from their neighbours' designs.
+    fn refine_started(&self) {}
+    /// The ε-curve turns: `solves` more targets, at most, spend the points on
+    /// the front.
+    fn turn_started(&self, _solves: usize) {}
     /// A point is final: called in sweep order from the calling thread.
     fn point_done(&self, _point: &FrontPoint) {}
 }
@@ -950,7 +977,8 @@ fn sweep_waves(
     sweep: &Sweep,
     strengths: &[f64],
     floor_index: Option<usize>,
-    seeds: [&Solved; 3],
+    seeds: &[&Solved],
+    observer: &dyn Observer,
 ) -> Vec<Slot> {
     // Only designs whose measure a double can hold (a pull-off below 1e-300 N
     // leaves its row without a gradient).
@@ -980,6 +1008,7 @@ fn sweep_waves(
                     .min_by(|a, b| (a.0 - s).abs().total_cmp(&(b.0 - s).abs()))
                     .map(|k| &k.1);
                 let (solved, warm_started, evaluations) = sweep.solve_point(target, warm);
+                observer.point_solved();
                 Slot {
                     strength: s,
                     target,
@@ -998,6 +1027,131 @@ fn sweep_waves(
         }
     }
     slots
+}
+
+/// Where the ε-curve turns, spends the points on the front (see the module
+/// docs): returns the new slots (the front's `points` targets, then the
+/// dominated points past the turn), the evaluations of the slots left out,
+/// and the index of the turn (None where the curve does not turn).
+fn spend_on_front(
+    sweep: &Sweep,
+    slots: Vec<Slot>,
+    points: usize,
+    direction: ParetoDirection,
+    observer: &dyn Observer,
+) -> (Vec<Slot>, usize, Option<usize>) {
+    let settings = &sweep.settings;
+    let n = sweep.study.design.len();
+    let preview = points_of(&slots, sweep.measure, n, direction, settings, &Silent);
+    let front: Vec<usize> = preview
+        .iter()
+        .filter(|p| p.on_front)
+        .map(|p| p.index)
+        .collect();
+    let Some(&last) = front.last() else {
+        return (slots, 0, None);
+    };
+    let beyond = preview[last + 1..]
+        .iter()
+        .any(|p| p.feasible && p.dominated);
+    if last == 0 || !beyond {
+        return (slots, 0, None);
+    }
+    if front.len() >= points || points < 3 {
+        return (slots, 0, Some(last));
+    }
+    observer.turn_started(settings.max_turn_steps + points);
+    // The turn: between the last point above the least wear and the first at it.
+    let least = preview[last].objective;
+    let at_least =
+        |r: &Solved| r.feasible && r.objective <= least * (1.0 + settings.wear_tolerance);
+    let (mut above, mut at) = (slots[last - 1].strength, slots[last].strength);
+    let mut warm = slots[last].solved.as_ref().map(|r| r.scene.clone());
+    let mut found: Vec<Slot> = Vec::new();
+    let mut turn: Option<Slot> = None;
+    for _ in 0..settings.max_turn_steps {
+        if (above - at).abs() <= settings.range_resolution {
+            break;
+        }
+        let mid = 0.5 * (above + at);
+        let target = Target::Equal(mid);
+        let (solved, warm_started, evaluations) = sweep.solve_point(target, warm.as_ref());
+        observer.point_solved();
+        let slot = Slot {
+            strength: mid,
+            target,
+            solved,
+            warm_started,
+            evaluations,
+            tried: warm.iter().map(|w| sweep.design_at(w)).collect(),
+        };
+        match slot.solved.as_ref() {
+            Some(r) if at_least(r) => {
+                at = mid;
+                warm = Some(r.scene.clone());
+                found.extend(turn.replace(slot));
+            }
+            _ => {
+                above = mid;
+                found.push(slot);
+            }
+        }
+    }
+    // The front's targets, from the preferred end to the turn.
+    let end = slots[0].strength;
+    let goal = targets(
+        sweep.measure,
+        end.min(at),
+        end.max(at),
+        points,
+        direction,
+        None,
+        settings,
+    );
+    let mut old: Vec<Option<Slot>> = slots.into_iter().map(Some).collect();
+    let tail: Vec<Slot> = old
+        .drain(last + usize::from(turn.is_none())..)
+        .flatten()
+        .collect();
+    let mut pool: Vec<Option<Slot>> = old.into_iter().chain(found.into_iter().map(Some)).collect();
+    // The front's last point: the turn (or, not found, the first point at the
+    // least wear, which is then the pool's last old point).
+    let turn = turn.or_else(|| pool.get_mut(last).and_then(Option::take));
+    let mut chosen: Vec<Option<Slot>> = Vec::with_capacity(points);
+    let mut fresh: Vec<f64> = Vec::new();
+    for (k, &g) in goal.iter().enumerate().take(points - 1) {
+        let spacing = |j: usize| goal.get(j).map_or(f64::INFINITY, |&x: &f64| (x - g).abs());
+        let near = 0.25 * spacing(k + 1).min(k.checked_sub(1).map_or(f64::INFINITY, spacing));
+        let best = pool
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| s.as_ref().map(|s| (i, (s.strength - g).abs())))
+            .filter(|&(_, d)| d <= near)
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        match best {
+            Some((i, _)) => chosen.push(pool[i].take()),
+            None => {
+                chosen.push(None);
+                fresh.push(g);
+            }
+        }
+    }
+    let seeds: Vec<&Solved> = chosen
+        .iter()
+        .flatten()
+        .filter_map(|s| s.solved.as_ref())
+        .collect();
+    let mut solved = sweep_waves(sweep, &fresh, None, &seeds, observer).into_iter();
+    let mut front: Vec<Slot> = chosen
+        .into_iter()
+        .filter_map(|s| s.or_else(|| solved.next()))
+        .chain(turn)
+        .collect();
+    refine(sweep, &mut front);
+    let dropped = pool.iter().flatten().map(|s| s.evaluations).sum();
+    let turn = front.len() - 1;
+    front.extend(tail);
+    (front, dropped, Some(turn))
 }
 
 /// The reported points of the final slots, in sweep order, with dominance
@@ -1119,14 +1273,19 @@ pub fn pareto_with(
         ParetoDirection::Low => 0,
         ParetoDirection::High => strengths.len() - 1,
     });
-    let mut slots = sweep_waves(
+    let slots = sweep_waves(
         &sweep,
         &strengths,
         floor_index,
-        [&range.lo_solved, &range.hi_solved, &start],
+        &[&range.lo_solved, &range.hi_solved, &start],
+        observer,
     );
+    let mut slots = slots;
+    observer.refine_started();
     refine(&sweep, &mut slots);
-    evaluations += slots.iter().map(|s| s.evaluations).sum::<usize>();
+    let (slots, dropped, turn) =
+        spend_on_front(&sweep, slots, spec.points, spec.direction, observer);
+    evaluations += dropped + slots.iter().map(|s| s.evaluations).sum::<usize>();
     let points = points_of(
         &slots,
         measure,
@@ -1148,6 +1307,7 @@ pub fn pareto_with(
         objective_name: objective,
         names,
         knee: knee(&points, (lo, hi), settings),
+        turn: turn.filter(|&t| points.get(t).is_some_and(|p| p.on_front)),
         points,
         strength_range: (lo, hi),
         floor_end,

@@ -264,6 +264,7 @@ fn tail_members(front: &Front) -> Map<String, Value> {
     let rest = json!({
         "status": front.status.as_str(),
         "knee": front.knee,
+        "turn": front.turn,
         "front": front.front_indices(),
         "trade_off": front.status == FrontStatus::Ok,
         "strength_range": [front.strength_range.0, front.strength_range.1],
@@ -491,6 +492,9 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
             si(k.objective, ounit, 4)
         ));
     }
+    if let Some(t) = front.turn.and_then(|t| front.points.get(t)) {
+        line(turn_sentence(front, t));
+    }
     let lw = &front.least_wear;
     line(format!(
         "least-wear design of the study: {} = {}, {} = {}",
@@ -514,12 +518,32 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
         ));
     }
     line(format!(
-        "{} points, {} range probes, {} model evaluations",
+        "{} points ({} on the front), {} range probes, {} model evaluations",
         front.points.len(),
+        front.front_indices().len(),
         front.probes,
         front.evaluations
     ));
     out
+}
+
+/// Where the curve turns, in words: the front's far end and the points past it.
+fn turn_sentence(front: &Front, t: &FrontPoint) -> String {
+    let m = front.measure;
+    let past = front.points.len() - 1 - t.index;
+    let dominated = if past == 1 {
+        "the point past it has no less wear and a worse adhesion (dominated; shown, not one of the front's points)".to_string()
+    } else {
+        format!("the {past} points past it have no less wear and a worse adhesion (dominated; shown, not among the front's points)")
+    };
+    format!(
+        "the front turns at point {}, {} = {}, {} = {}: the least wear is reached there; {dominated}",
+        t.index,
+        m.as_str(),
+        measure_text(m, t.adhesion, t.log10_adhesion),
+        front.objective_name,
+        si(t.objective, super::objective_unit(front.objective_name), 4)
+    )
 }
 
 // ---------------------------------------------------------------- SVG
@@ -827,6 +851,15 @@ pub fn html(
     }
     if let Some(pt) = last.filter(|l| front.points.len() > 1 && l.index != 0) {
         point_row(format!("point {}: the far end", pt.index), pt);
+    }
+    if let Some(t) = front.turn.and_then(|t| front.points.get(t)) {
+        point_row(
+            format!(
+                "point {}: the turn, where the least wear is reached",
+                t.index
+            ),
+            t,
+        );
     }
     if let Some(k) = front
         .knee

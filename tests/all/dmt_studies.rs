@@ -162,9 +162,16 @@ fn dmt_pareto_front_trades_wear_against_pull_off() {
     let v = json(&["pareto", &file, "--format", "json"]);
     assert_eq!(v["status"], "ok", "{v}");
     let points = v["points"].as_array().unwrap();
-    assert_eq!(points.len(), 7);
     let front: Vec<&Value> = points.iter().filter(|p| p["on_front"] == true).collect();
-    assert!(front.len() >= 3, "{v}");
+    // The seven points asked for describe the front; where the curve turns,
+    // the dominated points past it come on top.
+    assert!(points.len() >= 7, "{v}");
+    if points.len() > 7 {
+        assert_eq!(front.len(), 7, "{v}");
+        assert!(v["turn"].is_u64(), "{v}");
+    } else {
+        assert!(front.len() >= 3, "{v}");
+    }
     // Along the front (ascending pull-off, direction low) wear falls: a trade-off.
     for w in front.windows(2) {
         let (a, b) = (w[0], w[1]);

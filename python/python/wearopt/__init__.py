@@ -111,9 +111,13 @@ def pareto(
     ``[pareto]`` section's front with these in place of its own, or without a
     section, these and the defaults (``pull_off_force``, 15 points, ``low``).
 
+    The points asked for describe the front; where the curve turns (the
+    least wear holds past some adhesion), the dominated points past the turn
+    (``front["turn"]``) are listed after the front's:
+
     >>> front = wearopt.pareto("problems/micro-gear.toml", points=5)
-    >>> len(front["points"])
-    5
+    >>> front["front"], front["turn"], len(front["points"])
+    ([0, 1, 2, 3, 4], 4, 7)
     """
     if points is not None and (isinstance(points, bool) or not isinstance(points, int)):
         raise TypeError(f"points must be an int or None, not {type(points).__name__}")
