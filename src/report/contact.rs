@@ -567,9 +567,20 @@ pub fn area_plot(doc: &ContactDocument) -> String {
             .filter(|p| p.1 > 0.0)
             .collect(),
     );
+    // Pressures in the tables' unit: the prefix the largest takes there.
+    let largest = doc
+        .points
+        .iter()
+        .map(|pt| pt.solution.pressure)
+        .fold(0.0, f64::max);
+    let (pf, pu) = crate::units::axis_unit(largest, "Pa");
+    let in_unit = |v: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
+        v.into_iter().map(|(p, a)| (p / pf, a)).collect()
+    };
+    let (exact, gw) = (in_unit(exact), in_unit(gw));
     let mut plot = LinePlot::new(
         format!("Real area against pressure — {}", doc.file),
-        Axis::log("mean pressure p̄").with_unit("Pa"),
+        Axis::log("mean pressure p̄").with_unit(pu),
         Axis::log("real area / nominal area"),
     )
     .with_series(Series::new("exact (FFT boundary elements)", exact).with_marker(Marker::Circle));
@@ -586,14 +597,14 @@ pub fn area_plot(doc: &ContactDocument) -> String {
     );
     if !adhesive.is_empty() {
         plot = plot.with_series(
-            Series::new("exact with adhesion", adhesive)
+            Series::new("exact with adhesion", in_unit(adhesive))
                 .with_marker(Marker::Triangle)
                 .with_color("#009e73"),
         );
     }
     if !gw.is_empty() {
         plot = plot.with_series(
-            Series::new("statistical (Greenwood–Williamson, McCool)", gw)
+            Series::new("statistical (GW, McCool σ, R, N)", gw)
                 .with_marker(Marker::Square)
                 .with_color("#d55e00"),
         );

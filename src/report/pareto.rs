@@ -640,19 +640,35 @@ pub fn svg(name: &str, front: &Front) -> String {
             FrontStatus::Infeasible => "infeasible",
         }
     );
+    // The tables' units: the prefix the largest value takes there.
+    let largest = |v: &[f64]| {
+        v.iter()
+            .map(|x| x.abs())
+            .filter(|x| x.is_finite())
+            .fold(0.0, f64::max)
+    };
+    let (xf, xu) = crate::units::axis_unit(largest(&xs), unit_of(m));
+    let (yf, yu) =
+        crate::units::axis_unit(largest(&ys), super::objective_unit(front.objective_name));
+    let scaled = |v: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
+        v.into_iter().map(|(x, y)| (x / xf, y / yf)).collect()
+    };
+    let (on_front, dominated, infeasible, knee, baseline) = (
+        scaled(on_front),
+        scaled(dominated),
+        scaled(infeasible),
+        scaled(knee),
+        scaled(baseline),
+    );
     let mut plot = LinePlot::new(
         title,
-        axis(xlabel, unit_of(m), spans_decades(&xs)),
-        axis(
-            ylabel,
-            super::objective_unit(front.objective_name),
-            spans_decades(&ys),
-        ),
+        axis(xlabel, &xu, spans_decades(&xs)),
+        axis(ylabel, &yu, spans_decades(&ys)),
     );
     plot = plot.with_series(
         Series::new(
             "all points (ε-constraint curve)",
-            curve.iter().map(|c| (c.1, c.2)).collect(),
+            scaled(curve.iter().map(|c| (c.1, c.2)).collect()),
         )
         .with_marker(Marker::None)
         .with_color("#999999"),

@@ -296,7 +296,9 @@ fn linear_ticks(lo: f64, hi: f64, fixed: bool) -> ((f64, f64), Vec<Tick>) {
     ((value(k0), value(k1)), ticks)
 }
 
-/// Decade ticks (with unlabelled 2…9 minors when few decades) covering [lo, hi] (log10 coordinates).
+/// Decade ticks (with 2…9 minors when few decades) covering [lo, hi] (log10
+/// coordinates). At least four are labelled: over one or two decades the minors 2
+/// and 5 are labelled too.
 fn log_ticks(lo: f64, hi: f64) -> ((f64, f64), Vec<Tick>) {
     let d0 = (lo + 1e-9).floor() as i32;
     let d1 = ((hi - 1e-9).ceil() as i32).max(d0 + 1);
@@ -316,9 +318,15 @@ fn log_ticks(lo: f64, hi: f64) -> ((f64, f64), Vec<Tick>) {
         });
         if decades <= 4 && d < d1 {
             for m in 2..10 {
+                let label = if decades <= 2 && (m == 2 || m == 5) {
+                    let v: f64 = format!("{m}e{d}").parse().unwrap_or(f64::NAN);
+                    tick_label(v)
+                } else {
+                    String::new()
+                };
                 ticks.push(Tick {
                     at: d as f64 + (m as f64).log10(),
-                    label: String::new(),
+                    label,
                 });
             }
         }
@@ -955,6 +963,35 @@ mod tests {
         let line = svg.lines().find(|l| l.starts_with("<polyline")).unwrap();
         assert_eq!(line.matches(',').count(), 3);
         assert!(svg.contains(">1</text>") && svg.contains(">100</text>"));
+    }
+
+    /// Every log axis labels at least four ticks: decades over three or more,
+    /// 1, 2 and 5 of each decade over one or two (a front over 1e7…1e8 Pa had
+    /// only its two ends labelled).
+    #[test]
+    fn log_axes_label_at_least_four_ticks() {
+        for (lo, hi) in [
+            (7.0, 8.0),
+            (7.2, 7.9),
+            (-17.0, -15.0),
+            (0.0, 3.0),
+            (-300.0, -1.0),
+        ] {
+            let (_, ticks) = log_ticks(lo, hi);
+            let labels: Vec<&str> = ticks
+                .iter()
+                .filter(|t| !t.label.is_empty())
+                .map(|t| t.label.as_str())
+                .collect();
+            assert!(labels.len() >= 4, "{lo}…{hi}: {labels:?}");
+        }
+        let (_, ticks) = log_ticks(7.0, 8.0);
+        let labels: Vec<&str> = ticks
+            .iter()
+            .filter(|t| !t.label.is_empty())
+            .map(|t| t.label.as_str())
+            .collect();
+        assert_eq!(labels, ["1e7", "2e7", "5e7", "1e8"]);
     }
 
     /// Data that are all zero (a front that never wears) get an axis from 0 to 1,

@@ -679,7 +679,14 @@ pub fn map_svg(
         .filter(|l| l.is_finite())
         .fold(f64::INFINITY, f64::min);
     let clamped = lowest < floor;
-    let at = |w: f64, l: f64| (10f64.powf(l.max(floor)), w);
+    // Wear in the tables' unit: the prefix the largest wear rate takes there.
+    let largest = points
+        .iter()
+        .map(|p| p.0.abs())
+        .filter(|w| w.is_finite())
+        .fold(0.0, f64::max);
+    let (wf, wu) = crate::units::axis_unit(largest, "m³/m");
+    let at = |w: f64, l: f64| (10f64.powf(l.max(floor)), w / wf);
     let class = |want: bool| -> Vec<(f64, f64)> {
         points
             .iter()
@@ -721,7 +728,7 @@ pub fn map_svg(
     let mut plot = LinePlot::new(
         format!("{title}: {} designs", points.len()),
         Axis::log(x_label),
-        Axis::log("wear rate").with_unit("m³/m"),
+        Axis::log("wear rate").with_unit(wu),
     );
     if top.is_finite() {
         plot.x = plot.x.with_range(

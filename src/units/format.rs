@@ -101,12 +101,16 @@ pub fn si(x: f64, unit: &str, prec: usize) -> String {
     }
 }
 
-/// The prefixed unit for an axis whose values reach `max_abs` (a first-power unit such
-/// as "N" or "m"): values are divided by the returned factor. `(1e-6, "µN")` for 8e-4.
+/// The prefixed unit for an axis whose values reach `max_abs`, the prefix [`si`] gives
+/// that value: values are divided by the returned factor. `(1e-6, "µN")` for 8e-4 N;
+/// `(1e-18, "µm³/m")` for 4.9e-17 m³/m.
 pub fn axis_unit(max_abs: f64, unit: &str) -> (f64, String) {
+    if unit.is_empty() {
+        return (1.0, String::new());
+    }
     let s = shape(unit);
-    match choose_prefix(max_abs, &s).filter(|_| !s.length_power && max_abs > 0.0) {
-        Some((e, p)) => (10f64.powi(e), format!("{p}{unit}")),
+    match choose_prefix(max_abs, &s).filter(|_| max_abs > 0.0 && max_abs.is_finite()) {
+        Some((e, p)) => (10f64.powi(e * s.power), format!("{p}{unit}")),
         None => (1.0, unit.to_string()),
     }
 }

@@ -423,12 +423,21 @@ fn plot_is_well_formed_svg_with_front_knee_and_baseline() {
         series.contains(&"knee") && series.contains(&"baseline design"),
         "{series:?}"
     );
-    assert!(svg.contains("pull-off force (N)") && svg.contains("wear rate (m³/m)"));
-    assert!(svg.contains("<title>"));
-    // Both axes span decades here: decade ticks.
+    // The tables' units (the prefix of the largest value), not SI's base units.
     assert!(
-        svg.contains(">1e-5</text>") || svg.contains(">0.0001</text>"),
+        svg.contains("pull-off force (µN)") && svg.contains("wear rate (µm³/m)"),
+        "{svg}"
+    );
+    assert!(svg.contains("<title>"));
+    // Both axes log: decade ticks on x (five decades); 1, 2, 5 labelled on y
+    // (one decade): at least four labels each.
+    assert!(
+        svg.contains(">0.01</text>") && svg.contains(">10</text>"),
         "log x axis"
+    );
+    assert!(
+        svg.contains(">20</text>") && svg.contains(">50</text>"),
+        "log y axis"
     );
 }
 
