@@ -640,3 +640,20 @@ def test_decimal_comma_scans(tmp_path):
     problem.write_text(scene)
     r = wearopt.evaluate(str(problem))
     assert r["status"] == "ok"
+
+
+@pytest.mark.skipif(shutil.which("chromium") is None or shutil.which("pdftotext") is None,
+                    reason="needs chromium and pdftotext (apt install chromium poppler-utils)")
+def test_the_widest_pages_print_whole_on_a4(tmp_path):
+    """The pages with the widest tables (a front with three design variables and
+    two constraints; a materials ranking) printed to A4 by headless Chromium keep
+    every table cell in the PDF's text layer (scripts/print_check.py; before the
+    print style, 26 and 15 cells of these two pages were cut off)."""
+    cli("pareto", "problems/latch-pareto.toml", "--points", "6", "--format", "html",
+        "--out", str(tmp_path / "pareto.html"))
+    (tmp_path / "materials.html").write_text(
+        cli("optimize", "problems/materials-study.toml", "--format", "html").stdout)
+    run = subprocess.run([sys.executable, "scripts/print_check.py", str(tmp_path)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "2 pages printed to A4, 0 with cells missing" in run.stdout

@@ -17,7 +17,7 @@ h1{font-size:1.5em;margin-bottom:0.2em}h2{font-size:1.15em;margin-top:1.6em;bord
 table{border-collapse:collapse;margin:0.5em 0;display:block;max-width:100%;overflow-x:auto}td,th{padding:0.2em 0.8em;border-bottom:1px solid #e4e4e4;text-align:left;vertical-align:top}\
 th{background:#f3f3f3}td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\
 .status{font-weight:bold}.warn{color:#8a3b00}.warn li{margin:0.2em 0}.note{color:#444}\
-figure{margin:1em 0}figcaption{font-size:0.9em;color:#444}svg{max-width:100%;height:auto}pre{background:#f7f7f7;padding:0.6em;overflow-x:auto}";
+figure{margin:1em 0}figcaption{font-size:0.9em;color:#444}svg{max-width:100%;height:auto}pre{background:#f7f7f7;padding:0.6em;overflow-x:auto}@media (max-width:900px){td,th{padding:0.15em 0.4em}td.num{white-space:normal}}@media print{@page{size:A4;margin:12mm}body{max-width:none;margin:0;padding:0;font-size:9pt}table{display:table;overflow:visible;width:100%;font-size:7.5pt;page-break-inside:auto}tr{page-break-inside:avoid}td,th{padding:0.1em 0.3em}td.num{white-space:normal}td{overflow-wrap:anywhere}figure{page-break-inside:avoid}svg{max-height:120mm}pre{white-space:pre-wrap;font-size:7pt}}";
 
 impl Page {
     /// A page with a title (also its first heading).
