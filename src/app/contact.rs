@@ -258,6 +258,16 @@ pub struct ContactDocument {
 
 /// Reads the map at `path` and solves its contact, as `wearopt contact` does.
 pub fn contact(path: &Path, options: &ContactOptions) -> Result<ContactDocument, AppError> {
+    contact_with(path, options, &super::Quiet)
+}
+
+/// As [`contact`], telling `progress` of each solve as it finishes: one per
+/// pressure, and with adhesion the loading along the approach and the pull-off.
+pub fn contact_with(
+    path: &Path,
+    options: &ContactOptions,
+    progress: &dyn super::Progress,
+) -> Result<ContactDocument, AppError> {
     check(options)?;
     let overrides = Overrides {
         pixel_size: options.pixel_size,
@@ -266,7 +276,7 @@ pub fn contact(path: &Path, options: &ContactOptions) -> Result<ContactDocument,
     };
     let format = Format::from_path(path).unwrap_or(Format::Ascii);
     let map = read::load(path, &overrides).map_err(AppError::Read)?;
-    solved(path.display().to_string(), format, &map, options)
+    solved(path.display().to_string(), format, &map, options, progress)
 }
 
 /// The contact of `heights` (row by row along y: `ny` rows of `nx`) in units of
@@ -288,7 +298,13 @@ pub fn contact_of_heights(
         options.pixel_size,
         options.height_unit,
     )?;
-    solved(origin.to_string(), Format::Npy, &map, options)
+    solved(
+        origin.to_string(),
+        Format::Npy,
+        &map,
+        options,
+        &super::Quiet,
+    )
 }
 
 fn solved(
@@ -296,6 +312,7 @@ fn solved(
     format: Format,
     map: &HeightMap,
     options: &ContactOptions,
+    progress: &dyn super::Progress,
 ) -> Result<ContactDocument, AppError> {
     let contact_error = |error| AppError::Contact {
         origin: origin.clone(),
@@ -353,8 +370,10 @@ fn solved(
     // Each pressure from the same uniform start: its numbers do not depend on
     // which other pressures were asked for.
     let mut points_solved = Vec::with_capacity(options.pressures.len());
+    progress.begin(options.pressures.len() + if options.adhesion.is_some() { 2 } else { 0 });
     for &p in &options.pressures {
         let mut s = solver.solve(p, &settings, None).map_err(contact_error)?;
+        progress.advance();
         if !options.fields {
             s.pressures = Vec::new();
             s.gaps = Vec::new();
@@ -364,7 +383,7 @@ fn solved(
     let area = nx as f64 * dx * ny as f64 * dy;
     let (mut adhesive, adhesion) = match options.adhesion {
         Some(a) => {
-            let (states, result) = adhesive(&mut solver, &a, options, area, &origin)?;
+            let (states, result) = adhesive(&mut solver, &a, options, area, &origin, progress)?;
             (states.into_iter().map(Some).collect(), Some(result))
         }
         None => (vec![None; options.pressures.len()], None),
@@ -424,6 +443,7 @@ fn adhesive(
     options: &ContactOptions,
     area: f64,
     origin: &str,
+    progress: &dyn super::Progress,
 ) -> Result<(Vec<AdhesiveSolution>, AdhesionResult), AppError> {
     let contact_error = |error| AppError::Contact {
         origin: origin.to_string(),
@@ -475,6 +495,7 @@ fn adhesive(
     let mut states = solver
         .adhesive_loading(&options.pressures, &law, &settings)
         .map_err(contact_error)?;
+    progress.advance();
     let top = states
         .iter()
         .max_by(|x, y| x.pressure.total_cmp(&y.pressure))
@@ -483,6 +504,7 @@ fn adhesive(
     let pull_off = solver
         .pull_off(&top, &law, &settings)
         .map_err(contact_error)?;
+    progress.advance();
     if !options.fields {
         for s in &mut states {
             s.pressures = Vec::new();

@@ -137,6 +137,17 @@ pub fn humidity(
     origin: &str,
     options: &HumidityOptions,
 ) -> Result<HumidityDocument, AppError> {
+    humidity_with(problem, origin, options, &super::Quiet)
+}
+
+/// As [`humidity`], telling `progress` of each humidity (and of dry air) as it is
+/// evaluated.
+pub fn humidity_with(
+    problem: &Problem,
+    origin: &str,
+    options: &HumidityOptions,
+    progress: &dyn super::Progress,
+) -> Result<HumidityDocument, AppError> {
     options.validate()?;
     valid_scene(problem, origin)?;
     let scene = &problem.scene;
@@ -149,11 +160,17 @@ pub fn humidity(
         design_given: false,
     }
     .humidities();
+    progress.begin(humidities.len() + 1);
     let rows: Vec<HumidityRow> = humidities
         .into_iter()
-        .map(|rh| row(scene, &environment, rh))
+        .map(|rh| {
+            let r = row(scene, &environment, rh);
+            progress.advance();
+            r
+        })
         .collect();
     let dry = row(scene, &environment, 0.0);
+    progress.advance();
     let threshold = threshold(scene, &environment, &rows, &dry);
     let gamma = environment.liquid.surface_tension(environment.temperature);
     let continuum = (gamma > 0.0).then(|| {

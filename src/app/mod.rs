@@ -36,6 +36,19 @@ pub use crate::problem::{load, parse, Problem, ProblemError};
 
 use crate::optimize::Study;
 
+/// Receives a long command's progress as its work finishes (the command line
+/// draws a bar from it on a terminal). Every method does nothing by default.
+pub trait Progress: Sync {
+    /// `total` pieces of work are ahead (called again when a stage adds some).
+    fn begin(&self, _total: usize) {}
+    /// One piece finished.
+    fn advance(&self) {}
+}
+
+/// A [`Progress`] that ignores everything.
+pub struct Quiet;
+impl Progress for Quiet {}
+
 /// The problem's scene, checked ([`crate::model::Scene::validate`]).
 fn valid_scene(problem: &Problem, origin: &str) -> Result<(), AppError> {
     problem.scene.validate().map_err(|error| AppError::Scene {

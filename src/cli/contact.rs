@@ -131,7 +131,9 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         fields: args.fields.is_some() || args.format == Format::Html,
         adhesion,
     };
-    let doc = ct::contact(&args.scan, &options)?;
+    let bar = super::progress::Bar(super::progress::bar(Some(0), "solves"));
+    let doc = ct::contact_with(&args.scan, &options, &bar)?;
+    drop(bar);
     if let Some(path) = &args.plot {
         write_output(path, &report::contact::area_plot(&doc), "the area plot")?;
     }

@@ -8,6 +8,7 @@ mod figures;
 mod fit_adhesion;
 mod format;
 mod pareto;
+mod progress;
 mod roughness;
 mod sweep;
 mod verbose;
@@ -316,15 +317,36 @@ fn optimize(
     }
     let problem = app::load(&file)?;
     let tables = verbose::Tables::default();
-    let make = |start: usize| tables.observer(start);
+    // A counter of the optimiser's solves (starts, vertex searches, materials):
+    // their number is known only as they come.
+    let bar = progress::bar(None, "solves");
+    let make = |start: usize| -> app::optimize::StartObserver {
+        let inner = verbose.then(|| tables.observer(start));
+        match &bar {
+            Some(b) => Box::new(progress::Ticking {
+                inner,
+                bar: Some(b.clone()),
+            }),
+            None => inner.unwrap_or_else(|| {
+                Box::new(progress::Ticking {
+                    inner: None,
+                    bar: None,
+                })
+            }),
+        }
+    };
     let doc = app::optimize::optimize(
         &problem,
         &file.display().to_string(),
         OptimizeOptions {
-            observers: verbose.then_some(&make as app::optimize::ObserverFactory),
+            observers: (verbose || bar.is_some())
+                .then_some(&make as app::optimize::ObserverFactory),
             ..report::optimize::options(format)
         },
     )?;
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
     tables.print();
     if let Some(path) = trace {
         write_output(&path, &report::optimize::trace(&doc), "the trace")?;
@@ -423,7 +445,10 @@ fn humidity(args: HumidityArgs) -> Result<ExitCode> {
     };
     options.validate()?;
     let problem = app::load(&args.file)?;
-    let doc = app::humidity::humidity(&problem, &args.file.display().to_string(), &options)?;
+    let bar = progress::Bar(progress::bar(Some(0), "humidities"));
+    let doc =
+        app::humidity::humidity_with(&problem, &args.file.display().to_string(), &options, &bar)?;
+    drop(bar);
     if let Some(path) = &args.plot {
         write_output(path, &report::humidity::plot_svg(&doc), "the plot")?;
     }

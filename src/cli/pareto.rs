@@ -3,7 +3,7 @@
 //! points are final (flushed each time), so an interrupted sweep keeps what it
 //! computed; a progress bar shows on a terminal.
 
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::Mutex;
@@ -45,14 +45,6 @@ pub struct ParetoArgs {
     /// Write the HTML page to this file instead of stdout (with --format html).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
-}
-
-/// Whether a progress bar may be drawn: stderr is a terminal, and neither
-/// NO_COLOR nor CI asks for plain output.
-fn progress_wanted() -> bool {
-    std::io::stderr().is_terminal()
-        && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
-        && std::env::var_os("CI").is_none_or(|v| v.is_empty() || v == "false")
 }
 
 /// Streams finished points to stdout and drives the progress bar.
@@ -156,7 +148,7 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         .map(|t| front::direction(OptionName("direction"), t))
         .transpose()?;
     let plan = front::plan(&problem, &origin, &options)?;
-    let bar = progress_wanted().then(|| {
+    let bar = super::progress::wanted().then(|| {
         let b = indicatif::ProgressBar::new(plan.spec.points as u64);
         b.set_style(
             indicatif::ProgressStyle::with_template("{msg:>12} [{bar:30}] {pos}/{len} {elapsed}")

@@ -2,7 +2,7 @@
 //! streamed as they are computed, shardable over a Slurm job array, resumable)
 //! and `wearopt merge` (the shards joined into the unsharded output).
 
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -65,12 +65,6 @@ pub struct MergeArgs {
     /// missing last shard otherwise; JSON parts carry it).
     #[arg(long)]
     pub samples: Option<u64>,
-}
-
-fn progress_wanted() -> bool {
-    std::io::stderr().is_terminal()
-        && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
-        && std::env::var_os("CI").is_none_or(|v| v.is_empty() || v == "false")
 }
 
 fn parse_shard(text: &str) -> Result<Shard> {
@@ -199,7 +193,7 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
     };
     let mut sink = Sink { writer };
-    let bar = progress_wanted().then(|| {
+    let bar = super::progress::wanted().then(|| {
         let b = indicatif::ProgressBar::new(range.end - range.start);
         b.set_style(
             indicatif::ProgressStyle::with_template(
