@@ -653,7 +653,8 @@ fn fit_adhesion_json(
         .map_err(words)?;
         let c = app::fit_adhesion::fit_adhesion(std::path::Path::new(&path), &options)
             .map_err(words)?;
-        report::calibrate::render(&c, report::Format::Json).map_err(|e| e.to_string())
+        report::calibrate::render_for(&c, report::Format::Json, app::Vocabulary::Keywords)
+            .map_err(|e| e.to_string())
     })
 }
 

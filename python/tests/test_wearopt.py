@@ -399,8 +399,15 @@ def test_new_commands_equal_the_cli_json(tmp_path):
     # fit-adhesion, figures and the roughness of an array: the command line's JSON.
     expected = json.loads(cli("fit-adhesion", "problems/ando-friction.csv", "--radius", "0.3mm",
                               "--materials", "steel,silicon", "--format", "json").stdout)
-    assert wearopt.fit_adhesion("problems/ando-friction.csv", "0.3mm",
-                                materials=["steel", "silicon"]) == expected
+    got = wearopt.fit_adhesion("problems/ando-friction.csv", "0.3mm",
+                               materials=["steel", "silicon"])
+    # The same document, its notes naming keyword arguments where the command
+    # line's name flags ("give mu= to set it or fit_mu=True to fit it").
+    notes, cli_notes = got.pop("notes"), expected.pop("notes")
+    assert got == expected
+    assert notes == [n.replace("--mu", "mu=").replace("--fit-mu", "fit_mu=True")
+                     for n in cli_notes]
+    assert any("fit_mu=True" in n for n in notes) and not any("--" in n for n in notes)
     expected = json.loads(cli("fit-adhesion", "problems/ando-friction.csv", "--radius", "1 mm",
                               "--fit-mu", "--modulus", "100 GPa", "--format", "json").stdout)
     assert wearopt.fit_adhesion("problems/ando-friction.csv", "1 mm", fit_mu=True,

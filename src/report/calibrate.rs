@@ -3,6 +3,7 @@
 use serde_json::{json, Value};
 
 use super::{si, sig};
+use crate::app::Vocabulary;
 use crate::calibrate::{
     Calibration, CalibrationNote, FrictionCoefficient, PointNote, CONFIDENCE_LEVEL,
 };
@@ -12,9 +13,15 @@ use crate::units::{format_number, format_quantity, Dimension};
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
 
 /// One JSON object, SI units (N, m, N/m, Pa). Keys: those of [`Calibration`]
-/// (`notes` worded) plus `note_details` (the notes as values), `confidence_level`
-/// and `model`.
+/// (`notes` worded, options named as the command line's flags) plus
+/// `note_details` (the notes as values), `confidence_level` and `model`.
 pub fn json(c: &Calibration) -> String {
+    json_for(c, Vocabulary::Flags)
+}
+
+/// [`json`] with the notes naming options in `vocabulary` (Python's keyword
+/// arguments for the Python package).
+pub fn json_for(c: &Calibration, vocabulary: Vocabulary) -> String {
     let mut v = serde_json::to_value(c).unwrap_or(Value::Null);
     if let Value::Object(obj) = &mut v {
         obj.insert("note_details".into(), json!(c.notes));
@@ -28,7 +35,11 @@ pub fn json(c: &Calibration) -> String {
         }
         obj.insert(
             "notes".into(),
-            json!(c.notes.iter().map(note).collect::<Vec<_>>()),
+            json!(c
+                .notes
+                .iter()
+                .map(|n| note_for(n, vocabulary))
+                .collect::<Vec<_>>()),
         );
         obj.insert("confidence_level".into(), json!(CONFIDENCE_LEVEL));
         obj.insert(
@@ -55,11 +66,20 @@ pub fn point_note(n: &PointNote) -> String {
     }
 }
 
-/// A calibration note in words.
+/// A calibration note in words, options named as the command line's flags.
 pub fn note(n: &CalibrationNote) -> String {
+    note_for(n, Vocabulary::Flags)
+}
+
+/// A calibration note in words, options named in `vocabulary`.
+pub fn note_for(n: &CalibrationNote, vocabulary: Vocabulary) -> String {
+    let (mu, fit_mu) = match vocabulary {
+        Vocabulary::Flags => ("--mu", "--fit-mu"),
+        Vocabulary::Keywords => ("mu=", "fit_mu=True"),
+    };
     match *n {
         CalibrationNote::FrictionCoefficientAssumed { value } => format!(
-            "μ = {value} assumed (the paper's value); give --mu to set it or --fit-mu to fit it"
+            "μ = {value} assumed (the paper's value); give {mu} to set it or {fit_mu} to fit it"
         ),
         CalibrationNote::ExactFit {
             measurements,
@@ -80,10 +100,9 @@ pub fn note(n: &CalibrationNote) -> String {
             "the Gauss–Newton iteration did not meet its tolerance; the estimate is the best point found"
                 .into()
         }
-        CalibrationNote::UncertaintyUndefined => {
-            "the data do not determine γ and μ separately (their covariance is singular): no standard errors or intervals can be given; fix μ with --mu, or add loads further apart"
-                .into()
-        }
+        CalibrationNote::UncertaintyUndefined => format!(
+            "the data do not determine γ and μ separately (their covariance is singular): no standard errors or intervals can be given; fix μ with {mu}, or add loads further apart"
+        ),
     }
 }
 
@@ -320,9 +339,19 @@ pub fn render(
     c: &Calibration,
     format: super::Format,
 ) -> Result<String, super::format::FormatError> {
+    render_for(c, format, Vocabulary::Flags)
+}
+
+/// [`render`] with options named in `vocabulary` (the JSON's notes; the text is
+/// the command line's).
+pub fn render_for(
+    c: &Calibration,
+    format: super::Format,
+    vocabulary: Vocabulary,
+) -> Result<String, super::format::FormatError> {
     match format {
         super::Format::Text => Ok(text(c)),
-        super::Format::Json => Ok(json(c)),
+        super::Format::Json => Ok(json_for(c, vocabulary)),
         given => Err(super::format::FormatError::NotRendered {
             command: "fit-adhesion",
             given,
