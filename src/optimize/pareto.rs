@@ -29,7 +29,8 @@
 //!   holds over a stretch of adhesion, so every point past the strongest
 //!   of them is dominated — the turn is located by bisection between the last
 //!   point above the least wear and the first at it (to [`RANGE_RESOLUTION`],
-//!   at most [`MAX_TURN_STEPS`] solves), and `points` targets are spread again
+//!   at most [`MAX_TURN_STEPS`] solves; none when that first point is the
+//!   least-wear design itself), and `points` targets are spread again
 //!   from the preferred end to the turn (points already solved within a
 //!   quarter spacing of a target stand for it). The dominated points past the
 //!   turn stay in the sweep, after the front's, and do not count against
@@ -1038,6 +1039,7 @@ fn spend_on_front(
     slots: Vec<Slot>,
     points: usize,
     direction: ParetoDirection,
+    least_wear_strength: f64,
     observer: &dyn Observer,
 ) -> (Vec<Slot>, usize, Option<usize>) {
     let settings = &sweep.settings;
@@ -1066,6 +1068,12 @@ fn spend_on_front(
     let at_least =
         |r: &Solved| r.feasible && r.objective <= least * (1.0 + settings.wear_tolerance);
     let (mut above, mut at) = (slots[last - 1].strength, slots[last].strength);
+    if (at - least_wear_strength).abs() <= settings.strength_tolerance {
+        // The first point at the least wear is the study's least-wear design
+        // itself (its target was snapped onto it): the wear rises on both
+        // sides of it, and it is the turn.
+        above = at;
+    }
     let mut warm = slots[last].solved.as_ref().map(|r| r.scene.clone());
     let mut found: Vec<Slot> = Vec::new();
     let mut turn: Option<Slot> = None;
@@ -1284,7 +1292,7 @@ pub fn pareto_with(
     observer.refine_started();
     refine(&sweep, &mut slots);
     let (slots, dropped, turn) =
-        spend_on_front(&sweep, slots, spec.points, spec.direction, observer);
+        spend_on_front(&sweep, slots, spec.points, spec.direction, s_w, observer);
     evaluations += dropped + slots.iter().map(|s| s.evaluations).sum::<usize>();
     let points = points_of(
         &slots,
