@@ -411,6 +411,21 @@ impl Model {
         Ok(self.at(h))
     }
 
+    /// Ā_p(h), the real area of the plastic junctions, with a scale of its own
+    /// (`e^{-κ(u_c)}`, u_c = h + Δc): what [`Integrals::plastic_area`] holds
+    /// where it does not underflow against `e^{-κ(h)}`, and its true size where it
+    /// does (junctions far out in the weight's tail, e.g. 10^-6622 of the nominal
+    /// area): T_1(u_c) + Δc T_0(u_c) in closed form. Zero without plasticity.
+    pub fn plastic_area_scaled(&self, h: f64) -> Scaled {
+        let dc = self.transition.critical_interference;
+        if !dc.is_finite() || h.is_nan() {
+            return Scaled::ZERO;
+        }
+        let u_c = h + dc;
+        let t0 = tail0(u_c);
+        Scaled::new(tail1_given(u_c, t0) + dc * t0, kappa(u_c))
+    }
+
     /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
         let mut out = match self.lennard_jones.as_deref() {

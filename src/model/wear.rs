@@ -603,7 +603,13 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
             .unwrap_or_else(|| model.at(h))
     });
     let area = at.map_or(zero, |a| a.area());
-    let plastic_area = at.map_or(zero, |a| a.plastic_area());
+    // Where the plastic share underflows against the contact's scale, its own
+    // closed form keeps its size (a finite log of a plastic-only wear).
+    let plastic_area = match (at, h) {
+        (Some(a), Some(h)) if a.plastic_area().mantissa == 0.0 => model.plastic_area_scaled(h),
+        (Some(a), _) => a.plastic_area(),
+        _ => zero,
+    };
     let elastic_area = at.map_or(zero, |a| a.elastic_area());
     let wear_area_scaled = match scene.wear_area {
         WearArea::Total => area,

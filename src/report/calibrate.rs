@@ -19,7 +19,7 @@ pub fn json(c: &Calibration) -> String {
     json_for(c, Vocabulary::Flags)
 }
 
-/// [`json`] with the notes naming options in `vocabulary` (Python's keyword
+/// [`json()`] with the notes naming options in `vocabulary` (Python's keyword
 /// arguments for the Python package).
 pub fn json_for(c: &Calibration, vocabulary: Vocabulary) -> String {
     let mut v = serde_json::to_value(c).unwrap_or(Value::Null);

@@ -967,7 +967,14 @@ pub fn text(r: &EvalReport) -> String {
         si(ev.wear_volume, "m³", 4),
         si(sc.sliding_distance, "m", 3)
     ));
-    if ev.log10_wear_rate.is_finite() {
+    if ev.log10_wear_rate.is_finite() && ev.wear_rate == 0.0 {
+        // Too small for a double (plastic junctions far out in the heights'
+        // tail): the logarithm is the number.
+        line(format!(
+            "  wear rate V/L = 10^{} m³/m  (negligible: below the smallest number a double holds; only plastic junctions wear, and asperities tall enough to turn plastic are that rare)",
+            sig(ev.log10_wear_rate, 5)
+        ));
+    } else if ev.log10_wear_rate.is_finite() {
         line(format!(
             "  wear rate V/L = {}  (10^{} m³/m)",
             si(ev.wear_rate, "m³/m", 4),

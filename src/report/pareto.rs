@@ -527,6 +527,14 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
     out
 }
 
+/// `s` with its first letter in upper case.
+fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map(|f| f.to_uppercase().chain(c).collect())
+        .unwrap_or_default()
+}
+
 /// Where the curve turns, in words: the front's far end and the points past it.
 fn turn_sentence(front: &Front, t: &FrontPoint) -> String {
     let m = front.measure;
@@ -795,6 +803,9 @@ pub fn html(
     }
     p.paragraph(&trade_off_line(front), None);
     p.paragraph(&reachable_line(front), None);
+    if let Some(t) = front.turn.and_then(|t| front.points.get(t)) {
+        p.paragraph(&format!("{}.", capitalised(&turn_sentence(front, t))), None);
+    }
     if let Some(b) = front.baseline.as_ref().filter(|b| !b.feasible) {
         let broken: Vec<String> = constraints
             .iter()

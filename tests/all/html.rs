@@ -210,6 +210,8 @@ fn pareto_page() {
         ]
     );
     let points = table_rows(&html, "point");
+    // The turn said in words above the plot.
+    assert!(html.contains("<p>The front turns at point 5,"), "{html}");
     // Six on the front; the curve turns, and the dominated points past it are
     // listed too.
     assert!(points.len() > 6, "{points:?}");

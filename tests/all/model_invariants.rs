@@ -283,3 +283,49 @@ fn sensitivities_say_why_they_are_missing() {
         assert_eq!(gap(&no_wear, which), Some(SensitivityGap::NoWear));
     }
 }
+
+/// Ā_p with its own scale (`Model::plastic_area_scaled`): where the plastic share
+/// is representable against e^{-κ(h)} it is the integrals' own to rounding; where
+/// it underflows (the junctions far out in the heights' tail, h + Δc ≫ 1) its ln
+/// is that of the asymptotic series of T_1(u) + Δc T_0(u) (A&S 7.1.23:
+/// e^{u²/2} T_0(u) = (1/u) Σ (−1)^k (2k−1)!! / u^{2k}, and T_1 = e^{−u²/2} − u T_0),
+/// an independent form, to 1e-12 of the ln.
+#[test]
+fn the_plastic_area_keeps_its_size_where_it_underflows() {
+    let m = Model::new(Coefficients::from_indices(10.0, 0.5));
+    let dc = m.transition.critical_interference;
+    assert!(dc.is_finite() && dc > 0.0);
+    for &h in &[-2.0, 0.0, 1.0, 3.0] {
+        let own = m.plastic_area_scaled(h);
+        let integrals = m.at(h).plastic_area();
+        assert!(integrals.mantissa > 0.0, "h = {h}");
+        let d = (own.ln_abs() - integrals.ln_abs()).abs();
+        assert!(
+            d < 1e-12 * own.ln_abs().abs().max(1.0),
+            "h = {h}: {own:?} {integrals:?}"
+        );
+    }
+    // Far out (at h = 1e5 the integrals' share is 0): the own-scale one is finite
+    // and equal to the series (u ≥ 60: eight terms reach 1e-25).
+    assert_eq!(m.at(1e5).plastic_area().mantissa, 0.0);
+    for &h in &[60.0, 200.0, 3000.0, 1e5] {
+        let u = h + dc;
+        let series = |odd_start: f64| {
+            // Σ_{k=0}^{7} (−1)^k (2k−1+odd_start)!!/u^{2k}, (−1)!! = 1.
+            let (mut sum, mut term) = (1.0, 1.0);
+            for k in 1..8 {
+                term *= -(2.0 * k as f64 - 1.0 + odd_start) / (u * u);
+                sum += term;
+            }
+            sum
+        };
+        // e^{u²/2} T_0 = series(0)/u; e^{u²/2} T_1 = 1 − u e^{u²/2} T_0 = series(2)/u².
+        let scaled = series(2.0) / (u * u) + dc * series(0.0) / u;
+        let ln_expected = scaled.ln() - 0.5 * u * u;
+        let got = m.plastic_area_scaled(h).ln_abs();
+        assert!(
+            (got - ln_expected).abs() < 1e-12 * ln_expected.abs(),
+            "h = {h}: {got} against {ln_expected}"
+        );
+    }
+}
