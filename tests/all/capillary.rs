@@ -116,6 +116,12 @@ fn pull_off_unloaded_separation_and_work_match_the_reference_table() {
     assert!(rows.iter().any(|r| r["attraction"] == "van_der_waals"));
     assert!(rows.iter().any(|r| r["attraction"] == "dugdale"));
     assert!(rows.iter().any(|r| r["attraction"] == "jkr"));
+    // A scene whose menisci flood the interface (d_K = 20σ, √(2π) R N d_K = 50).
+    assert!(
+        rows.iter()
+            .any(|r| num(&r["k"]) >= 10.0 && num(&r["f"]) >= 10.0),
+        "a flooding scene"
+    );
     for r in &rows {
         let model = row_model(r);
         let land = landscape(&model);
