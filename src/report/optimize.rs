@@ -255,12 +255,27 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
             si(o.objective, unit, 4),
             si(o.baseline_objective, unit, 4),
             if o.objective == 0.0 && o.baseline_objective > 0.0 && unit.starts_with("m³") {
-                // A ratio would be ×inf: say why nothing wears, and that the
-                // optimum is then one of many designs.
-                format!(
-                    "\n  (zero at the optimum: {}; every design where that holds wears nothing, and this is one of them)",
-                    super::zero_wear_reason(&o.scene)
-                )
+                // A ratio would be ×inf: say why nothing wears (or why the wear is
+                // too small for a double), and that the optimum is then one of
+                // many designs.
+                let log10 = o.evaluation.log10_wear_rate
+                    + match o.objective_name {
+                        Objective::WearVolume if o.scene.sliding_distance > 0.0 => {
+                            o.scene.sliding_distance.log10()
+                        }
+                        _ => 0.0,
+                    };
+                if log10.is_finite() {
+                    format!(
+                        "\n  (10^{} {unit} at the optimum, below the smallest number a double holds: only plastic junctions wear, and asperities tall enough to turn plastic are that rare; every design this far down is as good to the optimiser, and this is one of them)",
+                        sig(log10, 5)
+                    )
+                } else {
+                    format!(
+                        "\n  (zero at the optimum: {}; every design where that holds wears nothing, and this is one of them)",
+                        super::zero_wear_reason(&o.scene)
+                    )
+                }
             } else if broken.is_empty() {
                 format!(
                     " (improvement ×{})",

@@ -409,9 +409,10 @@ fn eval_text_names_the_single_asperity_pull_off_of_the_law() {
     );
 }
 
-/// An optimum that wears exactly nothing (only plastic junctions wear, and none
-/// forms at the optimum's hardness) is said in words, not as "improvement ×inf";
-/// the JSON `improvement_factor` is then null, never Inf.
+/// An optimum whose wear is too small for a double (only plastic junctions wear,
+/// and at the optimum's hardness asperities tall enough to turn plastic are
+/// astronomically rare) is said in words with its logarithm, not as "improvement
+/// ×inf"; the JSON `improvement_factor` is then null, never Inf.
 #[test]
 fn optimize_says_why_an_optimum_wears_nothing() {
     let out = common::stdout(
@@ -421,7 +422,7 @@ fn optimize_says_why_an_optimum_wears_nothing() {
     let text = String::from_utf8(out).unwrap();
     assert!(text.contains("Status: optimal"), "{text}");
     assert!(
-        text.contains("(zero at the optimum: only plastic junctions wear, and no asperity is tall enough to turn plastic; every design where that holds wears nothing"),
+        text.contains(" m³/m at the optimum, below the smallest number a double holds: only plastic junctions wear, and asperities tall enough to turn plastic are that rare; every design this far down is as good to the optimiser"),
         "{text}"
     );
     assert!(!text.contains("inf"), "{text}");
