@@ -40,7 +40,9 @@ use std::fmt;
 mod format;
 mod parse;
 
-pub use format::{axis_unit, format_number, format_quantity, number, quantity, si, sig, sig_exp};
+pub use format::{
+    axis_unit, axis_unit_of, format_number, format_quantity, number, quantity, si, sig, sig_exp,
+};
 pub use parse::{parse_quantity, QuantityInput, UnitError};
 
 /// The physical dimension a field expects.

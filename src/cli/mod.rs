@@ -321,19 +321,10 @@ fn optimize(
     // their number is known only as they come.
     let bar = progress::bar(None, "solves");
     let make = |start: usize| -> app::optimize::StartObserver {
-        let inner = verbose.then(|| tables.observer(start));
-        match &bar {
-            Some(b) => Box::new(progress::Ticking {
-                inner,
-                bar: Some(b.clone()),
-            }),
-            None => inner.unwrap_or_else(|| {
-                Box::new(progress::Ticking {
-                    inner: None,
-                    bar: None,
-                })
-            }),
-        }
+        Box::new(progress::Ticking {
+            inner: verbose.then(|| tables.observer(start)),
+            bar: bar.clone(),
+        })
     };
     let doc = app::optimize::optimize(
         &problem,

@@ -1281,14 +1281,13 @@ pub fn pareto_with(
         ParetoDirection::Low => 0,
         ParetoDirection::High => strengths.len() - 1,
     });
-    let slots = sweep_waves(
+    let mut slots = sweep_waves(
         &sweep,
         &strengths,
         floor_index,
         &[&range.lo_solved, &range.hi_solved, &start],
         observer,
     );
-    let mut slots = slots;
     observer.refine_started();
     refine(&sweep, &mut slots);
     let (slots, dropped, turn) =

@@ -568,12 +568,8 @@ pub fn area_plot(doc: &ContactDocument) -> String {
             .collect(),
     );
     // Pressures in the tables' unit: the prefix the largest takes there.
-    let largest = doc
-        .points
-        .iter()
-        .map(|pt| pt.solution.pressure)
-        .fold(0.0, f64::max);
-    let (pf, pu) = crate::units::axis_unit(largest, "Pa");
+    let (pf, pu) =
+        crate::units::axis_unit_of(doc.points.iter().map(|pt| pt.solution.pressure), "Pa");
     let in_unit = |v: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
         v.into_iter().map(|(p, a)| (p / pf, a)).collect()
     };

@@ -649,15 +649,11 @@ pub fn svg(name: &str, front: &Front) -> String {
         }
     );
     // The tables' units: the prefix the largest value takes there.
-    let largest = |v: &[f64]| {
-        v.iter()
-            .map(|x| x.abs())
-            .filter(|x| x.is_finite())
-            .fold(0.0, f64::max)
-    };
-    let (xf, xu) = crate::units::axis_unit(largest(&xs), unit_of(m));
-    let (yf, yu) =
-        crate::units::axis_unit(largest(&ys), super::objective_unit(front.objective_name));
+    let (xf, xu) = crate::units::axis_unit_of(xs.iter().copied(), unit_of(m));
+    let (yf, yu) = crate::units::axis_unit_of(
+        ys.iter().copied(),
+        super::objective_unit(front.objective_name),
+    );
     let scaled = |v: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
         v.into_iter().map(|(x, y)| (x / xf, y / yf)).collect()
     };

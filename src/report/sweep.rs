@@ -680,12 +680,7 @@ pub fn map_svg(
         .fold(f64::INFINITY, f64::min);
     let clamped = lowest < floor;
     // Wear in the tables' unit: the prefix the largest wear rate takes there.
-    let largest = points
-        .iter()
-        .map(|p| p.0.abs())
-        .filter(|w| w.is_finite())
-        .fold(0.0, f64::max);
-    let (wf, wu) = crate::units::axis_unit(largest, "m³/m");
+    let (wf, wu) = crate::units::axis_unit_of(points.iter().map(|p| p.0), "m³/m");
     let at = |w: f64, l: f64| (10f64.powf(l.max(floor)), w / wf);
     let class = |want: bool| -> Vec<(f64, f64)> {
         points

@@ -115,6 +115,17 @@ pub fn axis_unit(max_abs: f64, unit: &str) -> (f64, String) {
     }
 }
 
+/// [`axis_unit`] for an axis drawing `values` (the largest finite magnitude sets
+/// the prefix).
+pub fn axis_unit_of(values: impl IntoIterator<Item = f64>, unit: &str) -> (f64, String) {
+    let largest = values
+        .into_iter()
+        .map(f64::abs)
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    axis_unit(largest, unit)
+}
+
 /// [`si`] for a dimension (a plain number for [`Dimension::Dimensionless`]).
 pub fn quantity(x: f64, dimension: Dimension, prec: usize) -> String {
     match dimension {
