@@ -469,6 +469,12 @@ impl NonlinearProgram for StudyFunctions {
         (vec![0.0; self.dim()], vec![1.0; self.dim()])
     }
 
+    /// f = ln(objective): the KKT test's complementarity is then in relative
+    /// units of the objective, whatever unit it is written in.
+    fn logarithmic_objective(&self) -> bool {
+        true
+    }
+
     fn objective(&self, x: &[f64]) -> Option<f64> {
         self.at(x).map(|p| p.objective)
     }

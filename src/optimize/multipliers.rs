@@ -10,7 +10,8 @@ pub struct Kkt {
     pub residual: f64,
     /// ‖∇f + Σλ_j∇g_j - μ_lower + μ_upper‖∞ / max(1, ‖∇f‖∞).
     pub stationarity: f64,
-    /// max_j |λ_j g_j| / max(1, |f|).
+    /// max_j |λ_j g_j| / max(1, |f|), or max_j |λ_j g_j| alone where f is a
+    /// logarithm ([`KktData::logarithmic`]).
     pub complementarity: f64,
     /// max(0, max_j g_j, bound violations).
     pub violation: f64,
@@ -36,6 +37,10 @@ pub struct KktData<'a> {
     pub gradient: &'a [f64],
     /// ∇g_j(x).
     pub jacobian: &'a [Vec<f64>],
+    /// f is the logarithm of a positive quantity
+    /// ([`super::NonlinearProgram::logarithmic_objective`]): λ_j g_j, the
+    /// change of f a row's slack would buy, is already relative and unit-free.
+    pub logarithmic: bool,
 }
 
 /// The KKT residual (see [`Kkt`]). The bound multipliers are those that
@@ -68,7 +73,11 @@ pub fn kkt(d: &KktData, multipliers: &[f64]) -> Kkt {
         violation = violation.max(g);
         comp = comp.max((multipliers[j] * g).abs());
     }
-    let complementarity = comp / d.objective.abs().max(1.0);
+    let complementarity = if d.logarithmic {
+        comp
+    } else {
+        comp / d.objective.abs().max(1.0)
+    };
     Kkt {
         residual: stationarity.max(complementarity).max(violation),
         stationarity,
@@ -183,11 +192,39 @@ mod tests {
             rows: &[0.0],
             gradient: &[2.0],
             jacobian: &jac,
+            logarithmic: false,
         };
         let l = least_squares(&d, 1e-6);
         assert!((l[0] - 2.0).abs() < 1e-14);
         assert!(kkt(&d, &l).residual < 1e-14);
         // Without the multiplier the residual is the relative gradient, 2/2 = 1.
         assert_eq!(kkt(&d, &[0.0]).residual, 1.0);
+    }
+
+    /// A row with slack 1e-6 and multiplier 2 at f = ln(1e-18) = −41.4: the
+    /// objective could fall by λ|g| = 2e-6 of itself. For a logarithmic f
+    /// that is the complementarity, in any unit (f shifted by 41.4 or not);
+    /// for another f it is taken against max(1, |f|).
+    #[test]
+    fn complementarity_of_a_logarithm_is_unit_free() {
+        let jac = vec![vec![-1.0]];
+        let at = |objective: f64, logarithmic: bool| {
+            let d = KktData {
+                x: &[1.0],
+                lower: &[-10.0],
+                upper: &[10.0],
+                objective,
+                rows: &[-1e-6],
+                gradient: &[2.0],
+                jacobian: &jac,
+                logarithmic,
+            };
+            kkt(&d, &[2.0]).complementarity
+        };
+        let f = 1e-18f64.ln();
+        assert_eq!(at(f, true), 2e-6);
+        assert_eq!(at(f - f, true), 2e-6);
+        assert_eq!(at(f, false), 2e-6 / f.abs());
+        assert_eq!(at(0.5, false), 2e-6);
     }
 }

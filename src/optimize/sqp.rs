@@ -292,6 +292,8 @@ pub(crate) struct Sqp {
     last_ratio: f64,
     last_kkt: f64,
     accuracy: Accuracy,
+    /// f is a logarithm ([`NonlinearProgram::logarithmic_objective`]).
+    logarithmic: bool,
 }
 
 fn norm2(v: &[f64]) -> f64 {
@@ -335,6 +337,7 @@ impl Sqp {
             } else {
                 Accuracy::Forward
             },
+            logarithmic: false,
         }
     }
 
@@ -443,6 +446,7 @@ impl Sqp {
             rows: &v.constraints,
             gradient: &g.objective,
             jacobian: &g.rows,
+            logarithmic: self.logarithmic,
         }
     }
 
@@ -1019,7 +1023,8 @@ where
     scale.resize(n, 1.0);
     let mut x0 = x0.to_vec();
     x0.resize(n, 0.0);
-    let solver = Sqp::new(settings, bounds, scale);
+    let mut solver = Sqp::new(settings, bounds, scale);
+    solver.logarithmic = problem.logarithmic_objective();
     let mut exec = Executor::new(Program(problem), solver)
         .configure(|s| s.param(x0.clone()).max_iters(settings.max_iterations));
     if let Some(t) = settings.time_limit {
@@ -1035,6 +1040,7 @@ where
         }
         Err(_) => {
             let mut s = Sqp::new(settings, problem.bounds(), problem.scale());
+            s.logarithmic = problem.logarithmic_objective();
             s.exit = Some(SqpExit::Unevaluable);
             (s, None, 0)
         }
