@@ -17,7 +17,12 @@ use argmin::core::{
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-use super::fd::{gradients, Accuracy, Gradients};
+use super::fd::{gradients, Accuracy, Gradients, EVALUATION_NOISE};
+
+/// The relative decrease of the violation a probe must find to show that a
+/// point is not a stationary point of it (the tolerance of
+/// [`Sqp::violation_stationary`]'s own test).
+const PROBE_DECREASE: f64 = 1e-6;
 use super::multipliers::{kkt, least_squares, Kkt, KktData};
 use super::program::{NonlinearProgram, Values};
 use super::qp::{self, QpFailure, Subproblem};
@@ -584,7 +589,42 @@ impl Sqp {
     fn violation_stationary(&self, v: &Values) -> bool {
         let radius = self.settings.initial_radius * norm_inf(&self.x).max(1.0);
         self.least_linear_violation(v, radius)
-            .is_none_or(|least| least >= v.violation() * (1.0 - 1e-6))
+            .is_none_or(|least| least >= v.violation() * (1.0 - PROBE_DECREASE))
+    }
+
+    /// Whether a point near x has less violation than x (by more than
+    /// rounding): the evidence `infeasible` must survive, since the stationarity
+    /// [`Sqp::violation_stationary`] finds is that of finite-difference
+    /// gradients, which a flat patch of the violation with noise on it (or a
+    /// kink within a step) can fake. Probes x ± r e_i for r = R, R/10, R/100
+    /// (R the radius of the stationarity test), inside the bounds: at most 6n
+    /// evaluations, spent only where a run would end `infeasible`.
+    fn violation_falls_nearby<P: NonlinearProgram + ?Sized>(
+        &mut self,
+        problem: &P,
+        v: &Values,
+    ) -> bool {
+        let viol = v.violation();
+        let enough = viol * PROBE_DECREASE + EVALUATION_NOISE * (1.0 + viol);
+        let radius = self.settings.initial_radius * norm_inf(&self.x).max(1.0);
+        for r in [radius, 0.1 * radius, 0.01 * radius] {
+            for i in 0..self.x.len() {
+                for sign in [1.0, -1.0] {
+                    let mut y = self.x.clone();
+                    y[i] = (y[i] + sign * r).clamp(self.lower[i], self.upper[i]);
+                    if y[i] == self.x[i] {
+                        continue;
+                    }
+                    let near = v.warm_start.clone();
+                    if let Some(w) = self.evaluate(problem, &y, &near) {
+                        if w.violation() < viol - enough {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        false
     }
 
     /// Whether step p reduces the linearised violation by less than half of
@@ -1080,6 +1120,9 @@ fn finish<P: NonlinearProgram + Sync + ?Sized>(
         let least = solver.least_kkt();
         solver.kkt = Some(solver.better_kkt(&v, &g, &extra, least));
         solver.record(iterations as usize);
+    }
+    if solver.exit == Some(SqpExit::Infeasible) && solver.violation_falls_nearby(problem, &v) {
+        solver.exit = Some(SqpExit::Stalled);
     }
     let (k, lambda) = solver.kkt.clone().expect("set above");
     let status = match (solver.exit, &reason) {

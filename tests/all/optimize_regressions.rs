@@ -364,3 +364,49 @@ fn optimal_is_the_same_in_every_unit_of_a_logarithmic_objective() {
         assert!((r / residuals[0] - 1.0).abs() <= 0.01, "{residuals:?}");
     }
 }
+
+/// One start is not declared `infeasible` on a flat patch of the violation
+/// whose finite-difference gradient is noise. g(x) = 0.2 (plus a rounding-
+/// like noise of 1e-9) for x₀ ≤ 0.9, falling to −0.1 at x₀ = 1 (feasible for
+/// x₀ ≥ 0.9816); f = x₁. From x₀ = 0.75 the gradient of the violation is
+/// the noise's (≈ 1e-5 against an error estimate as large), so it proves no
+/// stationarity; a point within the trust radius has less violation, and the
+/// run must say `stalled` (or find the feasible corner), never `infeasible`.
+#[test]
+fn a_noisy_flat_violation_is_not_called_infeasible() {
+    use wearopt::optimize::{minimize, NonlinearProgram, SqpSettings, SqpStatus};
+    struct Plateau;
+    fn noise(x: f64) -> f64 {
+        // A deterministic pseudo-random value in [-1, 1] from x's bits.
+        let mut z = x.to_bits().wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        z ^= z >> 29;
+        z = z.wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z ^= z >> 32;
+        (z >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+    impl NonlinearProgram for Plateau {
+        fn dimension(&self) -> usize {
+            2
+        }
+        fn bounds(&self) -> (Vec<f64>, Vec<f64>) {
+            (vec![0.0; 2], vec![1.0; 2])
+        }
+        fn objective(&self, x: &[f64]) -> Option<f64> {
+            Some(x[1])
+        }
+        fn constraints(&self, x: &[f64]) -> Option<Vec<f64>> {
+            let fall = (x[0] - 0.9).max(0.0);
+            Some(vec![0.2 - 30.0 * fall * fall + 1e-9 * noise(x[0])])
+        }
+    }
+    let r = minimize(&Plateau, &[0.75, 0.5], &SqpSettings::default());
+    assert_ne!(
+        r.status,
+        SqpStatus::Infeasible,
+        "x {:?}, g {:?}, gradient error {:e}, {} evaluations",
+        r.x,
+        r.constraints,
+        r.gradient_error,
+        r.evaluations
+    );
+}
