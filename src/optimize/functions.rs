@@ -249,6 +249,31 @@ pub struct StudyFunctions {
     /// Over a humidity range: the humidity the objective is taken at (the file's
     /// `design_humidity`, else the worst for the objective at the baseline design).
     pub objective_humidity: Option<f64>,
+    /// A row holds the real area at or below the nominal one
+    /// (`real_area_fraction` with a max ≤ 1): a design whose only fault is a
+    /// real area above the nominal one is then evaluated (status
+    /// `out_of_range`, every number finite) and the row, violated, steers the
+    /// search back, instead of a wall the search runs into.
+    pub area_row: bool,
+}
+
+/// Whether an evaluation's only fault is a real area above the nominal one
+/// (its numbers all finite): what an explicit `real_area_fraction ≤ 1` row
+/// can judge.
+fn only_the_area_is_out_of_range(ev: &Evaluation) -> bool {
+    use crate::model::Warning;
+    ev.status == Status::OutOfRange
+        && ev.separation.is_some()
+        && ev
+            .warnings
+            .iter()
+            .any(|w| matches!(w, Warning::RealAreaExceedsNominal { .. }))
+        && !ev.warnings.iter().any(|w| {
+            matches!(
+                w,
+                Warning::NonFiniteResult { .. } | Warning::LoadBeyondModel { .. }
+            )
+        })
 }
 
 impl StudyFunctions {
@@ -297,6 +322,9 @@ impl StudyFunctions {
             // No objective or constraint reads Γ: the integral is not needed.
             work_of_adhesion: false,
         };
+        let area_row = constraints.iter().any(|c| {
+            c.quantity == ConstraintQuantity::RealAreaFraction && c.max.is_some_and(|m| m <= 1.0)
+        });
         let range = space
             .baseline
             .environment
@@ -309,6 +337,7 @@ impl StudyFunctions {
                 options,
                 humidities: Vec::new(),
                 objective_humidity: None,
+                area_row,
             };
         };
         let humidities = range.humidities();
@@ -328,6 +357,7 @@ impl StudyFunctions {
             options,
             humidities,
             objective_humidity: Some(scene_rh),
+            area_row,
         };
         if !range.design_given {
             // The worst humidity for the objective at the baseline design.
@@ -371,13 +401,19 @@ impl StudyFunctions {
     /// (those of a nearby point); the result does not depend on them beyond
     /// the last few ulps of the separation.
     pub fn at_from(&self, x: &[f64], hints: SearchHints) -> Option<Point> {
+        self.evaluated_at(x, hints).map(|(p, _)| p)
+    }
+
+    /// As [`StudyFunctions::at_from`], with the evaluation at the objective's
+    /// humidity.
+    pub fn evaluated_at(&self, x: &[f64], hints: SearchHints) -> Option<(Point, Evaluation)> {
         let scene = self.scene_at(x);
         let ev = evaluate_from(&scene, &self.options, hints);
-        if ev.status != Status::Ok {
+        if !self.evaluable(&ev) {
             return None;
         }
         if self.humidities.is_empty() {
-            return Some(self.point_of(x, &ev, &scene));
+            return Some((self.point_of(x, &ev, &scene), ev));
         }
         // Every row at its humidity: one evaluation per humidity of the range.
         let mut point = self.point_of(x, &ev, &scene);
@@ -388,7 +424,7 @@ impl StudyFunctions {
             } else {
                 evaluate_from(&s, &self.options, SearchHints::default())
             };
-            if e.status != Status::Ok {
+            if !self.evaluable(&e) {
                 return None;
             }
             for (j, r) in self.rows.iter().enumerate() {
@@ -397,7 +433,14 @@ impl StudyFunctions {
                 }
             }
         }
-        Some(point)
+        Some((point, ev))
+    }
+
+    /// Whether the rows can judge an evaluation: status `ok`, or with an
+    /// explicit area row ([`StudyFunctions::area_row`]) a real area above the
+    /// nominal one as its only fault.
+    fn evaluable(&self, ev: &Evaluation) -> bool {
+        ev.status == Status::Ok || (self.area_row && only_the_area_is_out_of_range(ev))
     }
 
     /// Objective and rows from an evaluation already made.

@@ -15,11 +15,15 @@
 //!   the design and set to ε in the scene. One-sided targets (range search,
 //!   the floor end) use one row, or for γ a narrowed bound.
 //! * **Range.** The least-wear design of the study sits at strength `s_w`. The
-//!   reachable range is bracketed by the design box's corners (θ and γ are
-//!   monotone in every variable; the pull-off nearly so) and by the study's
-//!   own limits on the measure, then each end is found by bisection on the
-//!   feasibility of "strength ≥ s" (or ≤ s), warm-started from the last
-//!   feasible probe. A pull-off force below [`PULL_OFF_FLOOR`] counts as
+//!   reachable range is bracketed by the strongest and the weakest adhesion any
+//!   design reaches under every row of the study and A_r ≤ A_n (an explicit
+//!   row, so that a design whose real area would exceed the nominal one is
+//!   judged by it rather than being a wall), each found as an optimisation
+//!   problem from the study's starts, and by the box's corners where one is
+//!   stronger still; the study's own limits on the measure cap it. Each end is
+//!   then found by bisection on the feasibility of "strength ≥ s" (or ≤ s),
+//!   warm-started from the last feasible probe and, failing that, from the
+//!   extreme's design. A pull-off force below [`PULL_OFF_FLOOR`] counts as
 //!   none: that end of the sweep is the one-sided point "pull-off ≤ floor".
 //! * **Targets.** `points` strengths evenly spaced in log10 when the range
 //!   spans a decade or more, evenly in value otherwise, ordered from the
@@ -571,6 +575,134 @@ fn study_limits(m: AdhesionMeasure, constraints: &[Constraint]) -> (f64, f64) {
     (lo, hi)
 }
 
+/// The adhesion measure as the objective of a program: f = ∓ln(10)·strength
+/// (maximised upward, minimised downward; below the pull-off floor the
+/// strength counts as the floor's), under every row of the study and the
+/// plausibility limit A_r ≤ A_n as an explicit row
+/// ([`super::StudyFunctions::area_row`]), on the study's design box.
+struct MeasureProgram {
+    functions: super::StudyFunctions,
+    measure: AdhesionMeasure,
+    up: bool,
+    floor: f64,
+}
+
+impl MeasureProgram {
+    fn new(sweep: &Sweep, up: bool, floor: f64) -> Self {
+        let mut constraints: Vec<Constraint> = sweep.study.constraints.to_vec();
+        constraints.push(Constraint {
+            quantity: ConstraintQuantity::RealAreaFraction,
+            min: None,
+            max: Some(1.0),
+        });
+        let space = super::DesignSpace::new(sweep.study.scene, sweep.study.design);
+        let mut functions = super::StudyFunctions::new(space, sweep.objective, &constraints);
+        functions.options.pull_off |= sweep.options.pull_off;
+        MeasureProgram {
+            functions,
+            measure: sweep.measure,
+            up,
+            floor,
+        }
+    }
+
+    /// The strength at x and the rows there (None where x is not evaluable
+    /// or has no measure).
+    fn strength_at(&self, x: &[f64], near: &[f64]) -> Option<(f64, super::Values)> {
+        let hints = model::SearchHints {
+            separation: near.first().copied().filter(|v| v.is_finite()),
+            pull_off: near.get(1).copied().filter(|v| v.is_finite()),
+        };
+        let (point, ev) = self.functions.evaluated_at(x, hints)?;
+        let scene = self.functions.scene_at(x);
+        let (_, log10) = measure_of(self.measure, &ev, &scene)?;
+        let strength = strength_of(self.measure, log10).max(self.floor);
+        let values = super::Values {
+            objective: 0.0,
+            constraints: point.rows,
+            warm_start: vec![
+                point.hints.separation.unwrap_or(f64::NAN),
+                point.hints.pull_off.unwrap_or(f64::NAN),
+            ],
+        };
+        Some((strength, values))
+    }
+}
+
+impl super::NonlinearProgram for MeasureProgram {
+    fn dimension(&self) -> usize {
+        self.functions.dim()
+    }
+
+    fn bounds(&self) -> (Vec<f64>, Vec<f64>) {
+        (vec![0.0; self.dimension()], vec![1.0; self.dimension()])
+    }
+
+    fn objective(&self, x: &[f64]) -> Option<f64> {
+        self.evaluate(x, &[]).map(|v| v.objective)
+    }
+
+    fn constraints(&self, x: &[f64]) -> Option<Vec<f64>> {
+        self.evaluate(x, &[]).map(|v| v.constraints)
+    }
+
+    fn evaluate(&self, x: &[f64], near: &[f64]) -> Option<super::Values> {
+        let (strength, mut values) = self.strength_at(x, near)?;
+        let sign = if self.up { -1.0 } else { 1.0 };
+        values.objective = sign * std::f64::consts::LN_10 * strength;
+        Some(values)
+    }
+
+    /// f is ±ln of the measure: its differences are relative changes.
+    fn logarithmic_objective(&self) -> bool {
+        true
+    }
+}
+
+/// The strongest (`up`) or weakest reachable adhesion under every constraint
+/// of the study and A_r ≤ A_n, as an optimisation problem
+/// ([`MeasureProgram`]) solved from the study's own starts (the baseline and
+/// its quasi-random draws, those in contact), in parallel with a fixed order:
+/// the strength and scene of the best feasible end, and the evaluations spent.
+/// None when no start ends feasible.
+fn measure_extreme(sweep: &Sweep, up: bool, floor: f64) -> (Option<(f64, Scene)>, usize) {
+    use super::NonlinearProgram;
+    let program = MeasureProgram::new(sweep, up, floor);
+    let settings = sweep.study.settings;
+    let deadline = Instant::now() + settings.time_limit;
+    let baseline = program.functions.space.baseline_unit();
+    let candidates = super::start_points(&baseline, settings.starts.max(1), settings.seed);
+    // Each start: the strength and design it ended at (when feasible), and its evaluations.
+    type Run = (Option<(f64, Vec<f64>)>, usize);
+    let runs: Vec<Run> = candidates
+        .into_par_iter()
+        .map(|x0| {
+            if program.evaluate(&x0, &[]).is_none() {
+                return (None, 1);
+            }
+            let remaining = deadline.saturating_duration_since(Instant::now());
+            let r = super::minimize(&program, &x0, &super::sqp_settings(settings, remaining));
+            let feasible = r.objective.is_finite()
+                && r.constraints
+                    .iter()
+                    .all(|g| *g <= super::FEASIBILITY_TOLERANCE);
+            let strength = -r.objective / std::f64::consts::LN_10;
+            let strength = if up { strength } else { -strength };
+            (feasible.then_some((strength, r.x)), r.evaluations + 1)
+        })
+        .collect();
+    let evaluations = runs.iter().map(|r| r.1).sum();
+    let best = runs
+        .into_iter()
+        .filter_map(|r| r.0)
+        .fold(None::<(f64, Vec<f64>)>, |best, c| match best {
+            Some(b) if (if up { c.0 <= b.0 } else { c.0 >= b.0 }) => Some(b),
+            _ => Some(c),
+        });
+    let best = best.map(|(s, x)| (s, program.functions.scene_at(&x)));
+    (best, evaluations)
+}
+
 /// Strengths at the corners of the design box (where the surfaces touch),
 /// with the corners' scenes.
 fn corner_strengths(sweep: &Sweep) -> Vec<(f64, Scene)> {
@@ -933,11 +1065,31 @@ fn reachable_range(sweep: &Sweep, start: &Solved, observer: &dyn Observer) -> Ra
                 _ => Some(c),
             })
     };
-    let weakest = extreme(|a, b| a < b);
-    let strongest = extreme(|a, b| a > b);
+    let mut weakest = extreme(|a, b| a < b).cloned();
+    let mut strongest = extreme(|a, b| a > b).cloned();
+    // Each end as an optimisation problem (the study's rows and A_r ≤ A_n):
+    // a corner can be out of range (its real area above the nominal one) or
+    // not the extreme at all, and a range bracketed by the corners alone
+    // then stops short of what a design can reach. The extreme's design is
+    // the start the end's probes fall back on.
+    let (mut probes, mut evaluations) = (0, 0);
+    if start.feasible {
+        let (hi, e) = measure_extreme(sweep, true, floor);
+        evaluations += e;
+        if let Some(hi) = hi.filter(|h| strongest.as_ref().is_none_or(|c| h.0 > c.0)) {
+            strongest = Some(hi);
+        }
+        if s_w > floor {
+            let (lo, e) = measure_extreme(sweep, false, floor);
+            evaluations += e;
+            if let Some(lo) = lo.filter(|l| weakest.as_ref().is_none_or(|c| l.0 < c.0)) {
+                weakest = Some(lo);
+            }
+        }
+    }
+    let (weakest, strongest) = (weakest.as_ref(), strongest.as_ref());
     let box_lo = weakest.map_or(s_w, |c| c.0.min(s_w)).max(limit_lo);
     let box_hi = strongest.map_or(s_w, |c| c.0.max(s_w)).min(limit_hi);
-    let (mut probes, mut evaluations) = (0, 0);
     let (lo, lo_solved, floor_end) = if !start.feasible {
         (s_w, start.clone(), false)
     } else if s_w <= floor {

@@ -606,3 +606,46 @@ fn the_front_can_be_asked_for_on_the_command_line() {
     );
     assert!(err(&["--direction", "up"]).contains("low, high"));
 }
+
+/// The range's strong end is the strongest adhesion any design reaches under
+/// the study's rows and A_r ≤ A_n, found as an optimisation problem, not the
+/// strongest box corner that is in range (`tests/data/latch_area_end.toml`:
+/// the corner that bounds it has A_r > A_n; the corners gave 34.3 mN). The
+/// end is checked by independent runs of the study with the pull-off bounded
+/// below and A_r ≤ A_n as a row: 0.99× the end is feasible (`optimal`), 1.02×
+/// is `infeasible`. The end is on the front (not dominated).
+#[test]
+fn the_strong_end_is_the_strongest_design_not_the_strongest_corner_in_range() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/latch_area_end.toml");
+    let p = wearopt::problem::load(&path).unwrap();
+    let s = study(&p);
+    let front = pareto(&s, &p.study.pareto.unwrap(), &Silent).unwrap();
+    let top = &front.points[0];
+    assert!(top.on_front && top.feasible, "{top:?}");
+    assert!((top.strength - front.strength_range.1).abs() < 1e-9);
+    assert!(top.adhesion > 40e-3, "{}", top.adhesion);
+    for (factor, feasible) in [(0.99, true), (1.02, false)] {
+        let mut c = p.study.constraints.clone();
+        c.push(Constraint {
+            quantity: ConstraintQuantity::PullOffForce,
+            min: Some(factor * top.adhesion),
+            max: None,
+        });
+        c.push(Constraint {
+            quantity: ConstraintQuantity::RealAreaFraction,
+            min: None,
+            max: Some(1.0),
+        });
+        let o = optimize(&Study {
+            constraints: &c,
+            ..s.clone()
+        })
+        .unwrap();
+        let want = if feasible {
+            OptimizationStatus::Optimal
+        } else {
+            OptimizationStatus::Infeasible
+        };
+        assert_eq!(o.status, want, "pull-off ≥ {factor} × {}", top.adhesion);
+    }
+}
