@@ -107,6 +107,10 @@ pub struct ConstraintReport {
     pub shadow_price: f64,
     /// Violation of the scaled row (0 when satisfied).
     pub violation: f64,
+    /// A row of it lies at its limit (within 1e-6 of the scaled row), whatever
+    /// its multiplier.
+    #[serde(skip)]
+    pub at_limit: bool,
     /// Over a humidity range: the humidity where the limit binds (its row nearest to
     /// or furthest beyond the limit), at which `value` is taken; absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -169,7 +173,10 @@ pub struct Optimum {
     pub constraints: Vec<ConstraintReport>,
     /// Bounds on which the design lies.
     pub active_bounds: Vec<ActiveBound>,
-    /// For an infeasible study: the constraints still violated at the least-violating design.
+    /// For an infeasible study: the constraints that hold its violation up at
+    /// the least-violating design, those violated and those at their limit.
+    /// (Their multipliers are then 0: at a design that is no optimum the
+    /// objective's multipliers mean nothing.)
     pub conflicting: Vec<ConstraintQuantity>,
     /// KKT residual at the design.
     pub kkt_residual: f64,
@@ -440,6 +447,10 @@ struct Multistart {
     search: VertexSearch,
 }
 
+/// A scaled row within this of its limit (ln units: 1e-6 relative) is at it:
+/// `active` in the report, and part of the conflict of an infeasible study.
+const AT_LIMIT: f64 = 1e-6;
+
 /// Relative (ln objective) improvement below which a new optimum is the same
 /// one: the 1e-6 of the global-optimum contract and of `reached_best`.
 const IMPROVEMENT: f64 = 1e-6;
@@ -626,14 +637,32 @@ fn assemble(
         &evaluation,
         &scene,
     );
-    let conflicting = if status == OptimizationStatus::Infeasible {
+    // At the least-violating design of an infeasible study the conflict is
+    // every limit that holds the violation up: those violated and those at
+    // their limit (pull-off ≥ 48 mN against A_r ≤ A_n, the second met
+    // exactly). Its rows' multipliers are the objective's KKT estimate at a
+    // point that is no optimum: they mean nothing there, and are set to 0.
+    let infeasible = status == OptimizationStatus::Infeasible;
+    let conflicting = if infeasible {
         constraints
             .iter()
-            .filter(|c| c.violation > FEASIBILITY_TOLERANCE)
+            .filter(|c| c.violation > FEASIBILITY_TOLERANCE || c.at_limit)
             .map(|c| c.quantity)
             .collect()
     } else {
         Vec::new()
+    };
+    let constraints = if infeasible {
+        constraints
+            .into_iter()
+            .map(|c| ConstraintReport {
+                multiplier: 0.0,
+                shadow_price: 0.0,
+                ..c
+            })
+            .collect()
+    } else {
+        constraints
     };
     let names: Vec<SceneParameter> = functions
         .space
@@ -718,8 +747,8 @@ fn constraint_reports(
                 .enumerate()
                 .filter(|(_, r)| r.constraint == i)
                 .collect();
-            let (mut multiplier, mut shadow, mut violation, mut active) =
-                (0.0f64, 0.0, 0.0f64, false);
+            let (mut multiplier, mut shadow, mut violation, mut active, mut at_limit) =
+                (0.0f64, 0.0, 0.0f64, false, false);
             // Over a humidity range: the humidity of the row nearest its limit (none
             // where every humidity gives the same value: the limit binds at all alike).
             let (lo, hi) = rows
@@ -736,7 +765,8 @@ fn constraint_reports(
                 let l = multipliers.get(j).copied().unwrap_or(0.0);
                 let g = point.rows[j];
                 violation = violation.max(g.max(0.0));
-                if g >= -1e-6 || l > 1e-9 {
+                at_limit |= g >= -AT_LIMIT;
+                if g >= -AT_LIMIT || l > 1e-9 {
                     active = true;
                 }
                 if l >= multiplier {
@@ -761,6 +791,7 @@ fn constraint_reports(
                 multiplier,
                 shadow_price: shadow,
                 violation,
+                at_limit,
                 humidity: binding,
             }
         })

@@ -312,6 +312,15 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
                 .map_or("—".into(), |e| si(e.wear_rate, "m³/m", 4))
         ));
     }
+    let infeasible = o.status == OptimizationStatus::Infeasible;
+    // Under `infeasible` the rows carry no multiplier (see `Optimum::conflicting`).
+    let price = |v: f64| {
+        if infeasible {
+            "—".to_string()
+        } else {
+            sig_exp(v, 3)
+        }
+    };
     if !o.constraints.is_empty() {
         line(String::new());
         line(format!(
@@ -329,8 +338,8 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
                 f(c.min),
                 f(c.max),
                 if c.active { "yes" } else { "no" },
-                sig_exp(c.multiplier, 3),
-                sig_exp(c.shadow_price, 3)
+                price(c.multiplier),
+                price(c.shadow_price)
             ));
             if let Some(h) = c.humidity {
                 line(format!(
@@ -340,11 +349,15 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
                 ));
             }
         }
-        line("  shadow price = d ln(objective) / d ln(limit): relaxing a limit by 1 % changes the objective by about that many per cent".into());
+        if infeasible {
+            line("  no multiplier or shadow price: the least-violating design is no optimum, so they have no meaning there".into());
+        } else {
+            line("  shadow price = d ln(objective) / d ln(limit): relaxing a limit by 1 % changes the objective by about that many per cent".into());
+        }
     }
     if !o.conflicting.is_empty() {
         line(format!(
-            "  conflicting constraints (violated at the least-violating design): {}",
+            "  conflicting constraints (violated, or at their limit, at the least-violating design): {}",
             o.conflicting
                 .iter()
                 .map(|q| q.as_str())
@@ -533,6 +546,15 @@ pub fn html(
     p.table(&["quantity", "optimum", "baseline"], &rows, &[]);
     if !o.constraints.is_empty() {
         p.heading("Constraints");
+        // Under `infeasible` the rows carry no multiplier (see `Optimum::conflicting`).
+        let infeasible = o.status == OptimizationStatus::Infeasible;
+        let price = |v: f64| {
+            if infeasible {
+                "—".to_string()
+            } else {
+                sig_exp(v, 3)
+            }
+        };
         let f = |q: ConstraintQuantity, x: Option<f64>| {
             x.map_or("—".to_string(), |v| constraint_quantity(q, v))
         };
@@ -549,8 +571,8 @@ pub fn html(
                     f(c.quantity, c.min),
                     f(c.quantity, c.max),
                     if c.active { "yes" } else { "no" }.into(),
-                    sig_exp(c.multiplier, 3),
-                    sig_exp(c.shadow_price, 3),
+                    price(c.multiplier),
+                    price(c.shadow_price),
                 ]
             })
             .collect();

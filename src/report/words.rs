@@ -104,7 +104,12 @@ pub fn warning(w: &Warning) -> String {
         ),
         Warning::RealAreaExceedsNominal { real_area_fraction } => format!(
             "the real area would be {}× the nominal area, which is impossible: the load is far beyond what this rough surface can carry as separate asperity contacts (status out_of_range); check the load, nominal area and hardness",
-            sig_exp(*real_area_fraction, 3)
+            // Enough digits to show it above 1 (a search held at A_r ≤ A_n
+            // can end a hair beyond it: 1.000003×, not "1.00×").
+            (3..=15)
+                .map(|d| sig_exp(*real_area_fraction, d))
+                .find(|t| t.parse::<f64>().is_ok_and(|v| v > 1.0))
+                .unwrap_or_else(|| sig_exp(*real_area_fraction, 3))
         ),
         Warning::FewContacts { contact_count } => format!(
             "only {} asperities are expected in contact (fewer than 10): the Gaussian statistics of the model do not hold; enlarge the nominal area or check the asperity density",

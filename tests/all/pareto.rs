@@ -613,7 +613,8 @@ fn the_front_can_be_asked_for_on_the_command_line() {
 /// the corner that bounds it has A_r > A_n; the corners gave 34.3 mN). The
 /// end is checked by independent runs of the study with the pull-off bounded
 /// below and A_r ≤ A_n as a row: 0.99× the end is feasible (`optimal`), 1.02×
-/// is `infeasible`. The end is on the front (not dominated).
+/// is `infeasible`, naming both limits as the conflict. The end is on the
+/// front (not dominated).
 #[test]
 fn the_strong_end_is_the_strongest_design_not_the_strongest_corner_in_range() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/latch_area_end.toml");
@@ -647,5 +648,20 @@ fn the_strong_end_is_the_strongest_design_not_the_strongest_corner_in_range() {
             OptimizationStatus::Infeasible
         };
         assert_eq!(o.status, want, "pull-off ≥ {factor} × {}", top.adhesion);
+        if !feasible {
+            // Both limits hold the violation up: the pull-off (violated) and
+            // A_r ≤ A_n (met exactly); a least-violating design is no optimum,
+            // so no row carries a multiplier.
+            for q in [
+                ConstraintQuantity::PullOffForce,
+                ConstraintQuantity::RealAreaFraction,
+            ] {
+                assert!(o.conflicting.contains(&q), "{:?}", o.conflicting);
+            }
+            assert!(o
+                .constraints
+                .iter()
+                .all(|c| c.multiplier == 0.0 && c.shadow_price == 0.0));
+        }
     }
 }
