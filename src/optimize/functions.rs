@@ -527,15 +527,24 @@ impl NonlinearProgram for StudyFunctions {
     }
 
     fn evaluate(&self, x: &[f64], near: &[f64]) -> Option<Values> {
-        let p = self.at_from(x, hints_of(near))?;
-        Some(Values {
+        self.values_at(x, near).map(|(v, _)| v)
+    }
+}
+
+impl StudyFunctions {
+    /// The program's values at x, searches started from `near` (a nearby
+    /// point's `warm_start`), with the evaluation they come from.
+    pub fn values_at(&self, x: &[f64], near: &[f64]) -> Option<(Values, Evaluation)> {
+        let (p, ev) = self.evaluated_at(x, hints_of(near))?;
+        let values = Values {
             objective: p.objective,
             constraints: p.rows,
             warm_start: vec![
                 p.hints.separation.unwrap_or(f64::NAN),
                 p.hints.pull_off.unwrap_or(f64::NAN),
             ],
-        })
+        };
+        Some((values, ev))
     }
 }
 

@@ -605,28 +605,6 @@ impl MeasureProgram {
             floor,
         }
     }
-
-    /// The strength at x and the rows there (None where x is not evaluable
-    /// or has no measure).
-    fn strength_at(&self, x: &[f64], near: &[f64]) -> Option<(f64, super::Values)> {
-        let hints = model::SearchHints {
-            separation: near.first().copied().filter(|v| v.is_finite()),
-            pull_off: near.get(1).copied().filter(|v| v.is_finite()),
-        };
-        let (point, ev) = self.functions.evaluated_at(x, hints)?;
-        let scene = self.functions.scene_at(x);
-        let (_, log10) = measure_of(self.measure, &ev, &scene)?;
-        let strength = strength_of(self.measure, log10).max(self.floor);
-        let values = super::Values {
-            objective: 0.0,
-            constraints: point.rows,
-            warm_start: vec![
-                point.hints.separation.unwrap_or(f64::NAN),
-                point.hints.pull_off.unwrap_or(f64::NAN),
-            ],
-        };
-        Some((strength, values))
-    }
 }
 
 impl super::NonlinearProgram for MeasureProgram {
@@ -635,7 +613,7 @@ impl super::NonlinearProgram for MeasureProgram {
     }
 
     fn bounds(&self) -> (Vec<f64>, Vec<f64>) {
-        (vec![0.0; self.dimension()], vec![1.0; self.dimension()])
+        self.functions.bounds()
     }
 
     fn objective(&self, x: &[f64]) -> Option<f64> {
@@ -646,8 +624,12 @@ impl super::NonlinearProgram for MeasureProgram {
         self.evaluate(x, &[]).map(|v| v.constraints)
     }
 
+    /// The study's rows at x, with the strength (floored) as the objective;
+    /// None where x is not evaluable or has no measure.
     fn evaluate(&self, x: &[f64], near: &[f64]) -> Option<super::Values> {
-        let (strength, mut values) = self.strength_at(x, near)?;
+        let (mut values, ev) = self.functions.values_at(x, near)?;
+        let (_, log10) = measure_of(self.measure, &ev, &self.functions.scene_at(x))?;
+        let strength = strength_of(self.measure, log10).max(self.floor);
         let sign = if self.up { -1.0 } else { 1.0 };
         values.objective = sign * std::f64::consts::LN_10 * strength;
         Some(values)
@@ -666,7 +648,6 @@ impl super::NonlinearProgram for MeasureProgram {
 /// the strength and scene of the best feasible end, and the evaluations spent.
 /// None when no start ends feasible.
 fn measure_extreme(sweep: &Sweep, up: bool, floor: f64) -> (Option<(f64, Scene)>, usize) {
-    use super::NonlinearProgram;
     let program = MeasureProgram::new(sweep, up, floor);
     let settings = sweep.study.settings;
     let deadline = Instant::now() + settings.time_limit;
@@ -677,9 +658,7 @@ fn measure_extreme(sweep: &Sweep, up: bool, floor: f64) -> (Option<(f64, Scene)>
     let runs: Vec<Run> = candidates
         .into_par_iter()
         .map(|x0| {
-            if program.evaluate(&x0, &[]).is_none() {
-                return (None, 1);
-            }
+            // A start out of contact ends at once, not feasible.
             let remaining = deadline.saturating_duration_since(Instant::now());
             let r = super::minimize(&program, &x0, &super::sqp_settings(settings, remaining));
             let feasible = r.objective.is_finite()
@@ -688,7 +667,7 @@ fn measure_extreme(sweep: &Sweep, up: bool, floor: f64) -> (Option<(f64, Scene)>
                     .all(|g| *g <= super::FEASIBILITY_TOLERANCE);
             let strength = -r.objective / std::f64::consts::LN_10;
             let strength = if up { strength } else { -strength };
-            (feasible.then_some((strength, r.x)), r.evaluations + 1)
+            (feasible.then_some((strength, r.x)), r.evaluations)
         })
         .collect();
     let evaluations = runs.iter().map(|r| r.1).sum();

@@ -615,8 +615,7 @@ impl Sqp {
                     if y[i] == self.x[i] {
                         continue;
                     }
-                    let near = v.warm_start.clone();
-                    if let Some(w) = self.evaluate(problem, &y, &near) {
+                    if let Some(w) = self.evaluate(problem, &y, &v.warm_start) {
                         if w.violation() < viol - enough {
                             return true;
                         }

@@ -313,14 +313,7 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
         ));
     }
     let infeasible = o.status == OptimizationStatus::Infeasible;
-    // Under `infeasible` the rows carry no multiplier (see `Optimum::conflicting`).
-    let price = |v: f64| {
-        if infeasible {
-            "—".to_string()
-        } else {
-            sig_exp(v, 3)
-        }
-    };
+    let price = |v: f64| price(o, v);
     if !o.constraints.is_empty() {
         line(String::new());
         line(format!(
@@ -546,15 +539,7 @@ pub fn html(
     p.table(&["quantity", "optimum", "baseline"], &rows, &[]);
     if !o.constraints.is_empty() {
         p.heading("Constraints");
-        // Under `infeasible` the rows carry no multiplier (see `Optimum::conflicting`).
-        let infeasible = o.status == OptimizationStatus::Infeasible;
-        let price = |v: f64| {
-            if infeasible {
-                "—".to_string()
-            } else {
-                sig_exp(v, 3)
-            }
-        };
+        let price = |v: f64| price(o, v);
         let f = |q: ConstraintQuantity, x: Option<f64>| {
             x.map_or("—".to_string(), |v| constraint_quantity(q, v))
         };
@@ -628,4 +613,14 @@ pub fn html(
         }
     }
     p.finish()
+}
+
+/// A row's multiplier or shadow price as a table cell: "—" under `infeasible`,
+/// where the rows carry none (see `Optimum::conflicting`).
+fn price(o: &Optimum, v: f64) -> String {
+    if o.status == OptimizationStatus::Infeasible {
+        "—".to_string()
+    } else {
+        sig_exp(v, 3)
+    }
 }
