@@ -351,11 +351,7 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
     if !o.conflicting.is_empty() {
         line(format!(
             "  conflicting constraints (violated, or at their limit, at the least-violating design): {}",
-            o.conflicting
-                .iter()
-                .map(|q| q.as_str())
-                .collect::<Vec<_>>()
-                .join(", ")
+            conflict_names(o)
         ));
     }
     let warnings = super::words::warnings(&o.evaluation);
@@ -574,6 +570,21 @@ pub fn html(
             &rows,
             &[4],
         );
+        if o.status == OptimizationStatus::Infeasible {
+            p.paragraph(
+                "No multiplier or shadow price: the least-violating design is no optimum, so they have no meaning there.",
+                None,
+            );
+        }
+    }
+    if !o.conflicting.is_empty() {
+        p.paragraph(
+            &format!(
+                "Conflicting constraints (violated, or at their limit, at the least-violating design): {}.",
+                conflict_names(o)
+            ),
+            Some("note"),
+        );
     }
     p.paragraph(
         &format!(
@@ -623,4 +634,13 @@ fn price(o: &Optimum, v: f64) -> String {
     } else {
         sig_exp(v, 3)
     }
+}
+
+/// The conflicting constraints' names, comma-separated.
+fn conflict_names(o: &Optimum) -> String {
+    o.conflicting
+        .iter()
+        .map(|q| q.as_str())
+        .collect::<Vec<_>>()
+        .join(", ")
 }

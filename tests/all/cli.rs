@@ -228,6 +228,22 @@ fn optimize_json_contract_and_exit_codes() {
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(v["status"], "infeasible");
     assert_eq!(v["conflicting_constraints"][0], "plasticity_index");
+    // The page names the conflict too, and shows no multiplier.
+    let out = common::stdout(
+        wearopt().args([
+            "optimize",
+            "problems/infeasible-study.toml",
+            "--format",
+            "html",
+        ]),
+        1,
+    );
+    let page = String::from_utf8(out).unwrap();
+    assert!(
+        page.contains("Conflicting constraints") && page.contains("plasticity_index.</p>"),
+        "the page names the conflict"
+    );
+    assert!(page.contains("No multiplier or shadow price"));
 
     // No [design]: bad input, exit 2, the file named.
     let out = common::stderr(wearopt().args(["optimize", "problems/dlc-contact.toml"]), 2);
