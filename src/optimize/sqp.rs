@@ -82,6 +82,12 @@ pub struct SqpSettings {
     /// Richardson-extrapolated (four per variable), accurate enough for the
     /// KKT test (default 1e-4; 0 or less: always Richardson).
     pub richardson_below: f64,
+    /// After this many steps rejected in a row the gradients are made one
+    /// level more accurate (forward → central → Richardson) at the current
+    /// point: a model whose step fails again and again at shrinking radii has
+    /// the wrong slope, and the finite differences' error is where that comes
+    /// from (default 2; 0: never).
+    pub doubt_after: usize,
     /// A step this short relative to max(1, ‖x‖∞) is no step (default 1e-14).
     pub step_tolerance: f64,
     /// Merit changes within this relative to 1 + |φ| are noise (default 1e-12).
@@ -160,6 +166,7 @@ impl Default for SqpSettings {
             fd_step: 1e-4,
             central_below: 1e-3,
             richardson_below: 1e-4,
+            doubt_after: 2,
             step_tolerance: 1e-14,
             merit_noise: 1e-12,
             active_tolerances: vec![1e-10, 1e-7, 1e-4],
@@ -395,6 +402,19 @@ impl Sqp {
             return;
         };
         let near = self.settings.richardson_threshold();
+        // Steps rejected one after another: the model's slope is not the
+        // function's, and at a short step that is the gradient's error (a
+        // forward difference errs by ~fd_step/2 times the curvature: 0.05 on
+        // Rosenbrock's valley floor, more than its whole slope there).
+        let doubted =
+            if self.settings.doubt_after > 0 && self.rejections >= self.settings.doubt_after {
+                match self.accuracy {
+                    Accuracy::Forward => Accuracy::Central,
+                    _ => Accuracy::Richardson,
+                }
+            } else {
+                Accuracy::Forward
+            };
         let wanted = if always {
             Accuracy::Richardson
         } else {
@@ -404,9 +424,10 @@ impl Sqp {
             } else if residual <= self.settings.central_below {
                 Accuracy::Central
             } else {
-                return;
+                Accuracy::Forward
             }
-        };
+        }
+        .max(doubted);
         if wanted <= self.accuracy {
             return;
         }
