@@ -114,7 +114,8 @@ fn dimensional(c: &mut Criterion) {
 /// Capillary adhesion (docs/model.md §10): P̄ and Ā at one h with a meniscus, and the
 /// humid hub (`problems/micro-gear-humid.toml`, RH = 50 %) against the same scene dry:
 /// the separation solve alone, and the whole evaluation (solve, pull-off and the
-/// apparent work of adhesion Γ, an integral over h).
+/// apparent work of adhesion Γ, one integral over the summit heights and one
+/// of the meniscus over h).
 fn capillary(c: &mut Criterion) {
     let mut g = c.benchmark_group("capillary");
     let m = Model::with_law(

@@ -66,6 +66,20 @@ pub struct Model {
     lennard_jones: Option<Arc<Grid>>,
 }
 
+/// One asperity's load in contact under JKR or DMT (docs/model.md §3, §7): for
+/// Δ ≤ Δc the JKR p_e = s⁶ - c_a s³ at Δ = s⁴ - c_d s (s = s0 + v), or, where
+/// `hertz_offset` (c_0) is not 0, DMT's Δ^{3/2} - c_0; beyond Δc, c_p Δ - c_0.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct ContactLaw {
+    pub hertz_offset: f64,
+    pub c_a: f64,
+    pub s_touch: f64,
+    pub c_d_cubed: f64,
+    pub c_p: f64,
+    pub c_0: f64,
+    pub critical_interference: f64,
+}
+
 /// The shares of the plastic junctions beyond Δc in closed form, scaled by
 /// e^{κ(h)}: the count T_0(u_c), the area, the load c_p Ā_p − c_0 T_0 and its
 /// first two h-derivatives, φ̄(u_c) and u_c φ̄(u_c) (u_c = h + Δc).
@@ -370,11 +384,28 @@ impl Model {
         self.s_touch + self.v_of_interference(delta)
     }
 
+    /// What the exchanged work integral ([`super::work`]) needs of the model's
+    /// asperity law in contact: None under the Lennard-Jones law's table.
+    pub(super) fn contact_law(&self) -> Option<ContactLaw> {
+        if self.lennard_jones.is_some() {
+            return None;
+        }
+        Some(ContactLaw {
+            hertz_offset: self.elastic_offset,
+            c_a: self.contact.c_a,
+            s_touch: self.s_touch,
+            c_d_cubed: self.c_d_cubed,
+            c_p: self.contact.c_p,
+            c_0: self.contact.c_0,
+            critical_interference: self.transition.critical_interference,
+        })
+    }
+
     /// Δ as a function of v = s - s0, s0 = c_d^{1/3}:
     /// `Δ = v (3 s0³ + 6 s0² v + 4 s0 v² + v³)`, free of the cancellation in
     /// `s⁴ - c_d s` near s0 (c_d is taken as s0³, one ulp from the input).
     #[inline]
-    fn interference_of_v(&self, v: f64) -> f64 {
+    pub(super) fn interference_of_v(&self, v: f64) -> f64 {
         let s0 = self.s_touch;
         v * (3.0 * self.c_d_cubed + v * (6.0 * s0 * s0 + v * (4.0 * s0 + v)))
     }
