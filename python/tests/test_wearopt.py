@@ -664,3 +664,13 @@ def test_the_widest_pages_print_whole_on_a4(tmp_path):
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stdout + run.stderr
     assert "2 pages printed to A4, 0 with cells missing" in run.stdout
+
+
+def test_pareto_over_a_humidity_range_names_its_humidity():
+    """A front over a humidity range is measured at one humidity (the
+    objective's), which the result names, as the CLI's JSON does."""
+    path = "problems/micro-gear-coating-study.toml"
+    front = wearopt.pareto(path, points=3)
+    assert front["adhesion_humidity"] == 0.9
+    expected = json.loads(cli("pareto", path, "--points", "3", "--format", "json").stdout)
+    assert without_timing(front) == without_timing(expected)

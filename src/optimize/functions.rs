@@ -344,7 +344,12 @@ impl StudyFunctions {
         let rows = rows
             .iter()
             .flat_map(|r| {
-                humidities.iter().map(move |&h| Row {
+                let at: Vec<f64> = if constraints[r.constraint].only_at_objective_humidity {
+                    vec![scene_rh]
+                } else {
+                    humidities.clone()
+                };
+                at.into_iter().map(move |h| Row {
                     humidity: Some(h),
                     ..*r
                 })
@@ -373,6 +378,12 @@ impl StudyFunctions {
                 .max_by(|a, b| a.1.total_cmp(&b.1));
             if let Some((h, _)) = worst {
                 f.objective_humidity = Some(h);
+            }
+        }
+        // Rows held only at the objective's humidity follow it.
+        for r in f.rows.iter_mut() {
+            if constraints[r.constraint].only_at_objective_humidity {
+                r.humidity = f.objective_humidity;
             }
         }
         f

@@ -268,6 +268,12 @@ pub struct Front {
     /// The scene's factor on the statistical real area (1 unless the problem's
     /// `contact_model` is `bem_corrected`).
     pub real_area_scale: f64,
+    /// Over a humidity range: the humidity at which every point's adhesion and
+    /// wear are measured (the objective's: the file's `design_humidity`, else
+    /// the one where the baseline design's objective is worst), while every
+    /// limit of the study holds at each humidity of the range. None for a
+    /// scene at one humidity.
+    pub adhesion_humidity: Option<f64>,
 }
 
 impl Front {
@@ -467,7 +473,15 @@ impl Sweep<'_> {
                 ((!upper).then_some(v), upper.then_some(v))
             }
         };
-        constraints.push(Constraint { quantity, min, max });
+        // Over a humidity range the measure is taken at the objective's
+        // humidity (fixed for the whole front by `pareto_with`): the row holds
+        // there, not at each humidity (where one value could not be held at all).
+        constraints.push(Constraint {
+            quantity,
+            min,
+            max,
+            only_at_objective_humidity: true,
+        });
         Some((scene, design, constraints))
     }
 
@@ -594,6 +608,7 @@ impl MeasureProgram {
             quantity: ConstraintQuantity::RealAreaFraction,
             min: None,
             max: Some(1.0),
+            only_at_objective_humidity: false,
         });
         let space = super::DesignSpace::new(sweep.study.scene, sweep.study.design);
         let mut functions = super::StudyFunctions::new(space, sweep.objective, &constraints);
@@ -1342,6 +1357,37 @@ pub fn pareto_with(
     if !(ParetoSpec::MIN_POINTS..=ParetoSpec::MAX_POINTS).contains(&spec.points) {
         return Err(ParetoError::Points(spec.points));
     }
+    // Over a humidity range, one humidity for the whole front: the objective's,
+    // chosen once at the study's baseline and then named as the design
+    // humidity, so that every solve (each from its own start or warm scene,
+    // which would choose afresh) measures wear and adhesion there.
+    let adhesion_humidity = study
+        .scene
+        .environment
+        .and_then(|e| e.humidity_range)
+        .and_then(|_| {
+            let space = super::DesignSpace::new(study.scene, study.design);
+            super::StudyFunctions::new(space, objective, study.constraints).objective_humidity
+        });
+    let fixed_scene = adhesion_humidity.map(|h| {
+        let mut scene = super::functions::at_humidity(study.scene.clone(), h);
+        if let Some(r) = scene
+            .environment
+            .as_mut()
+            .and_then(|e| e.humidity_range.as_mut())
+        {
+            r.design_given = true;
+        }
+        scene
+    });
+    let fixed_study;
+    let study = match &fixed_scene {
+        Some(scene) => {
+            fixed_study = Study { scene, ..*study };
+            &fixed_study
+        }
+        None => study,
+    };
     let measure = spec.adhesion;
     if measure == AdhesionMeasure::WorkOfAdhesion
         && !study
@@ -1456,6 +1502,7 @@ pub fn pareto_with(
         probes,
         time_seconds: t0.elapsed().as_secs_f64(),
         real_area_scale: study.scene.real_area_scale,
+        adhesion_humidity,
     })
 }
 

@@ -171,6 +171,11 @@ pub struct Constraint {
     pub min: Option<f64>,
     /// Upper bound (SI), if any.
     pub max: Option<f64>,
+    /// Over a humidity range: held only at the humidity the objective is taken
+    /// at, not at each of the range's (a front's ε-row, which holds the adhesion
+    /// measured there). Every `[[constraint]]` of a file holds at each (false).
+    #[serde(skip)]
+    pub only_at_objective_humidity: bool,
 }
 
 named_enum! {

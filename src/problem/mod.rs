@@ -1382,6 +1382,7 @@ impl Reader<'_> {
                 quantity: ConstraintQuantity::ReleaseMargin,
                 min: Some(DEFAULT_RELEASE_MARGIN),
                 max: None,
+                only_at_objective_humidity: false,
             });
         }
 
@@ -1555,7 +1556,12 @@ impl Reader<'_> {
                 ));
             }
         }
-        Ok(Constraint { quantity, min, max })
+        Ok(Constraint {
+            quantity,
+            min,
+            max,
+            only_at_objective_humidity: false,
+        })
     }
 
     fn optimizer(

@@ -275,7 +275,12 @@ fn tail_members(front: &Front) -> Map<String, Value> {
         "evaluations": front.evaluations,
     });
     match rest {
-        Value::Object(m) => m,
+        Value::Object(mut m) => {
+            if let Some(h) = front.adhesion_humidity {
+                m.insert("adhesion_humidity".into(), json!(h));
+            }
+            m
+        }
         _ => Map::new(),
     }
 }
@@ -386,6 +391,18 @@ fn status_sentence(front: &Front) -> String {
     }
 }
 
+/// Over a humidity range: at which humidity the front is measured.
+fn humidity_line(front: &Front) -> Option<String> {
+    front.adhesion_humidity.map(|h| {
+        format!(
+            "{} and {} taken at RH = {} % (the range's humidity where the objective is worst at the baseline, or the file's design_humidity); every limit holds at each humidity of the range",
+            front.measure,
+            front.objective_name,
+            super::sig(100.0 * h, 4)
+        )
+    })
+}
+
 /// The reachable range of the measure.
 fn reachable_line(front: &Front) -> String {
     let m = front.measure;
@@ -432,6 +449,9 @@ pub fn text(name: &str, front: &Front, constraints: &[Constraint]) -> String {
     line(trade_off_line(front));
     line(format!("Status: {}", status_sentence(front)));
     line(reachable_line(front));
+    if let Some(h) = humidity_line(front) {
+        line(h);
+    }
     if !constraints.is_empty() {
         let list: Vec<String> = constraints.iter().map(constraint_text).collect();
         line(format!("every point also meets: {}", list.join(", ")));
@@ -799,6 +819,9 @@ pub fn html(
     }
     p.paragraph(&trade_off_line(front), None);
     p.paragraph(&reachable_line(front), None);
+    if let Some(h) = humidity_line(front) {
+        p.paragraph(&format!("{h}."), None);
+    }
     if let Some(t) = front.turn.and_then(|t| front.points.get(t)) {
         p.paragraph(&format!("{}.", capitalised(&turn_sentence(front, t))), None);
     }

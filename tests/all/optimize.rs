@@ -214,6 +214,7 @@ fn closed_form_optimum_to_1e_8() {
         quantity: ConstraintQuantity::PlasticityIndex,
         min: None,
         max: Some(psi_max),
+        only_at_objective_humidity: false,
     }];
     let settings = OptimizerSettings {
         starts: 3,
@@ -348,11 +349,13 @@ fn bad_problems_end_with_clear_statuses() {
             quantity: ConstraintQuantity::PlasticityIndex,
             min: None,
             max: Some(1.0),
+            only_at_objective_humidity: false,
         },
         Constraint {
             quantity: ConstraintQuantity::PlasticityIndex,
             min: None,
             max: Some(1.0 + 1e-9),
+            only_at_objective_humidity: false,
         },
     ];
     let o = custom(&p.scene, &design, &parallel, &quick);
@@ -374,6 +377,7 @@ fn bad_problems_end_with_clear_statuses() {
         quantity: ConstraintQuantity::RealAreaFraction,
         min: Some(0.5),
         max: None,
+        only_at_objective_humidity: false,
     }];
     let o = custom(&p.scene, &design, &impossible, &quick);
     assert_eq!(o.status, OptimizationStatus::Infeasible);

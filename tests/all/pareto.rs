@@ -256,6 +256,7 @@ fn micro_gear_high_is_a_trade_off_whose_ends_agree_with_single_runs() {
         quantity: ConstraintQuantity::PullOffForce,
         min: Some(100e-6),
         max: Some(100e-6),
+        only_at_objective_humidity: false,
     });
     let single = optimize(&Study {
         constraints: &pinned,
@@ -631,11 +632,13 @@ fn the_strong_end_is_the_strongest_design_not_the_strongest_corner_in_range() {
             quantity: ConstraintQuantity::PullOffForce,
             min: Some(factor * top.adhesion),
             max: None,
+            only_at_objective_humidity: false,
         });
         c.push(Constraint {
             quantity: ConstraintQuantity::RealAreaFraction,
             min: None,
             max: Some(1.0),
+            only_at_objective_humidity: false,
         });
         let o = optimize(&Study {
             constraints: &c,
@@ -664,4 +667,58 @@ fn the_strong_end_is_the_strongest_design_not_the_strongest_corner_in_range() {
                 .all(|c| c.multiplier == 0.0 && c.shadow_price == 0.0));
         }
     }
+}
+
+/// Over a humidity range every limit holds at each humidity, but a front's
+/// adhesion is one number per design: it is measured at the objective's
+/// humidity, and its ε-row holds there only. Held at every humidity, as it
+/// once was, one pull-off could not be met at all where the coating lets water
+/// condense (the pull-off grows with RH): on the coating study with contact
+/// angles up to 70° (water condenses at every design) every point came out
+/// `infeasible` and the front said the study had no feasible point, though its
+/// own optimum is feasible. Each point is what `eval` says at that humidity.
+#[test]
+fn a_front_over_a_humidity_range_is_measured_at_one_humidity() {
+    let text = std::fs::read_to_string(problem_path("micro-gear-coating-study.toml"))
+        .unwrap()
+        .replace(
+            "contact_angle = { min = \"0 deg\", max = \"110 deg\" }",
+            "contact_angle = { min = \"0 deg\", max = \"70 deg\" }",
+        )
+        .replace("max = \"50 uN\"", "max = \"5 mN\"");
+    assert!(text.contains("max = \"70 deg\"") && text.contains("5 mN"));
+    let file =
+        std::env::temp_dir().join(format!("wearopt-wet-coating-{}.toml", std::process::id()));
+    std::fs::write(&file, text).unwrap();
+    let p = wearopt::problem::load(&file).unwrap();
+    let front = pareto(
+        &study(&p),
+        &spec(AdhesionMeasure::PullOffForce, 5, ParetoDirection::Low),
+        &Silent,
+    )
+    .unwrap();
+    assert_ne!(front.status, FrontStatus::Infeasible);
+    // The worst humidity for wear at the baseline (bare oxide) is the wettest.
+    assert_eq!(front.adhesion_humidity, Some(0.9));
+    for pt in &front.points {
+        assert!(pt.feasible, "{pt:?}");
+        assert_eq!(pt.status, OptimizationStatus::Optimal, "{pt:?}");
+        let scene = wearopt::optimize::functions::at_humidity(scene_at(&p, &pt.design), 0.9);
+        let ev = evaluate(&scene, &EvaluationOptions::default());
+        assert_eq!(ev.status, Status::Ok);
+        assert!(
+            rel(ev.pull_off_force.unwrap(), pt.adhesion) < 1e-9,
+            "{pt:?}"
+        );
+        assert!(rel(ev.wear_rate, pt.wear_rate) < 1e-9, "{pt:?}");
+    }
+    // The reachable range runs from the least-wear design to the bare oxide.
+    let (lo, hi) = front.strength_range;
+    assert!(hi - lo > 2.0, "{lo} {hi}");
+    // Said in every format.
+    let json = report::json("wet coating", &front);
+    assert!(json.contains("\"adhesion_humidity\": 0.9"), "{json}");
+    let text = report::text("wet coating", &front, &p.study.constraints);
+    assert!(text.contains("taken at RH = 90.00 %"), "{text}");
+    let _ = std::fs::remove_file(&file);
 }

@@ -40,6 +40,7 @@ fn every_front_point_is_as_good_as_a_standalone_run_at_its_target() {
             quantity: ConstraintQuantity::PullOffForce,
             min: Some(q.target),
             max: Some(q.target),
+            only_at_objective_humidity: false,
         });
         let alone = optimize(&Study {
             constraints: &constraints,
