@@ -289,6 +289,8 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
         AsperityLaw::Dmt(a) if c_0 > 0.0 => Some(a),
         _ => None,
     };
+    // z0 (van der Waals) or Δ_h (Dugdale).
+    let reach = attraction.map_or(0.0, |a| a.range());
     match attraction {
         Some(Attraction::VanDerWaals { .. }) => {
             // y = -Δ: the weight T_0(h0 - y) turns at y = h0.
@@ -301,10 +303,7 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
             );
             for (i, &a) in ys.iter().enumerate() {
                 // τ of the next edge in this piece's own map (1: y = ∞).
-                let top = ys.get(i + 1).map_or(1.0, |&y| {
-                    let z0 = attraction.map_or(0.0, |a| a.range());
-                    (y - a) / (z0 + y)
-                });
+                let top = ys.get(i + 1).map_or(1.0, |&y| (y - a) / (reach + y));
                 start.push((Part::VanDerWaals(a), 0.0, top));
             }
         }
@@ -329,7 +328,6 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
         start.push((Part::Capillary, t_end, 1.0));
     }
     let (s0, s0_3, c_a) = (law.s_touch, law.c_d_cubed, law.c_a);
-    let z0 = attraction.map_or(0.0, |a| a.range());
     let mut evaluations = 0;
     let mut f = |part: Part, x: f64| -> f64 {
         evaluations += 1;
@@ -347,14 +345,13 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
             }
             Part::Plastic => (law.c_p * x - law.c_0) * tail(h0 + x),
             Part::VanDerWaals(a) => {
-                let y = (z0 + a) * x / (1.0 - x);
-                -c_0 * z0 * z0 / (z0 + a) * tail((h0 - a) - y)
+                let y = (reach + a) * x / (1.0 - x);
+                -c_0 * reach * reach / (reach + a) * tail((h0 - a) - y)
             }
-            Part::Dugdale => {
-                let range = attraction.map_or(1.0, |a| a.range());
-                -c_0 / range * x * tail(h0 - range + x)
-            }
-            Part::Capillary | Part::Load => {
+            Part::Dugdale => -c_0 / reach * x * tail(h0 - reach + x),
+            // The whole load over h is the other method's, never a piece here.
+            Part::Load => 0.0,
+            Part::Capillary => {
                 let h = h0 + cap_scale * (1.0 - x) / x;
                 let c = model.capillary.map_or(CapillaryShare::ZERO, |c| c.at(h));
                 c.load * (-c.exponent).exp() * cap_scale / (x * x)
