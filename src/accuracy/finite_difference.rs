@@ -20,8 +20,8 @@ use std::f64::consts::{LN_10, PI};
 
 use super::reference::ReferenceModel;
 use crate::model::{
-    evaluate, AdhesionModel, AsperityLaw, Attraction, AttractionKind, Coefficients,
-    EvaluationOptions, Quadrature, Scene, SceneParameter, Status, WearArea,
+    evaluate, AsperityLaw, AttractionKind, Coefficients, EvaluationOptions, Quadrature, Scene,
+    SceneParameter, Status, WearArea,
 };
 
 /// A finite-difference rule on ln x.
@@ -191,17 +191,16 @@ pub fn reference_ln_wear_rate(scene: &Scene) -> Option<f64> {
 /// The scene's asperity law, its attraction range taken from Z0/σ here
 /// (z0 = Z0/σ; Δ_h = Z0/(1.03 σ), docs/model.md §7).
 fn reference_law(scene: &Scene) -> Option<AsperityLaw> {
+    let law = scene.adhesion_model.law();
+    // The reference integrates the closed-form laws (a tabulated law has its
+    // own reference: `accuracy::lennard_jones`).
     let z = scene.interatomic_distance / scene.sigma;
-    match (scene.adhesion_model, scene.attraction) {
-        (AdhesionModel::Jkr, _) => Some(AsperityLaw::Jkr),
-        (AdhesionModel::Dmt, AttractionKind::VanDerWaals) => {
-            Some(AsperityLaw::Dmt(Attraction::VanDerWaals { range: z }))
-        }
-        (AdhesionModel::Dmt, AttractionKind::Dugdale) => {
-            Some(AsperityLaw::Dmt(Attraction::Dugdale { range: z / 1.03 }))
-        }
-        (AdhesionModel::LennardJones, _) => None,
-    }
+    let range = match scene.attraction {
+        AttractionKind::Dugdale if law.takes_attraction() => z / 1.03,
+        _ => z,
+    };
+    law.closed_form_pull_off()
+        .map(|_| law.with_range(scene.attraction, range))
 }
 
 /// The root of the reference P̄(h) = target nearest h0 on its monotone piece.

@@ -4,7 +4,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::model::{AsperityLaw, Attraction, Coefficients, Model, Quadrature};
+use crate::model::{AsperityLaw, Coefficients, Model, Quadrature};
 
 use super::{AppError, OptionName};
 
@@ -50,38 +50,32 @@ fn quoted_list(names: &[&str]) -> String {
 impl LawOptions {
     /// The law these options name, or the clash between them.
     pub fn law(&self) -> Result<AsperityLaw, AppError> {
-        if self.adhesion_model == AdhesionModel::LennardJones {
-            if self.attraction.is_some() {
-                return Err(AppError::AttractionUnderLennardJones);
-            }
-            let range = self
-                .attraction_range
-                .ok_or(AppError::LennardJonesWithoutRange)?;
-            if !(range > 0.0 && range.is_finite()) {
-                return Err(AppError::Invalid {
-                    options: vec![(OptionName("attraction_range"), range.to_string())],
-                    rule: "must be finite and > 0".to_string(),
+        let law = self.adhesion_model.law();
+        if !law.takes_attraction() {
+            if !law.has_own_range() {
+                if self.attraction.is_some() || self.attraction_range.is_some() {
+                    return Err(AppError::AttractionNotTaken);
+                }
+            } else if self.attraction.is_some() {
+                return Err(AppError::AttractionRefused {
+                    law: self.adhesion_model,
                 });
             }
-            return Ok(AsperityLaw::LennardJones { range });
         }
-        if !self.adhesion_model.takes_attraction() {
-            if self.attraction.is_some() || self.attraction_range.is_some() {
-                return Err(AppError::AttractionWithoutDmt);
-            }
-            return Ok(AsperityLaw::Jkr);
+        let attraction = self.attraction.unwrap_or_default();
+        if !(law.takes_attraction() || law.has_own_range()) {
+            return Ok(law.with_range(attraction, 0.0));
         }
-        let range = self.attraction_range.ok_or(AppError::DmtWithoutRange)?;
+        let range = self.attraction_range.ok_or(AppError::WithoutRange {
+            law: self.adhesion_model,
+        })?;
         if !(range > 0.0 && range.is_finite()) {
             return Err(AppError::Invalid {
                 options: vec![(OptionName("attraction_range"), range.to_string())],
                 rule: "must be finite and > 0".to_string(),
             });
         }
-        Ok(AsperityLaw::Dmt(Attraction::new(
-            self.attraction.unwrap_or_default(),
-            range,
-        )))
+        Ok(law.with_range(attraction, range))
     }
 }
 

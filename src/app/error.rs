@@ -5,6 +5,7 @@ use std::fmt;
 
 use crate::calibrate::CalibrationError;
 use crate::figures::{FigureError, MAX_POINTS as FIGURE_MAX_POINTS};
+use crate::model::AdhesionModel;
 use crate::optimize::pareto::ParetoError;
 use crate::optimize::{OptimizeError, ParetoSpec};
 use crate::problem::ProblemError;
@@ -130,14 +131,20 @@ pub enum AppError {
         /// What is wrong with it.
         error: Box<AppError>,
     },
-    /// `attraction` or `attraction_range` given with an asperity law other than DMT.
-    AttractionWithoutDmt,
-    /// `attraction` given with the Lennard-Jones law, whose attraction is its own.
-    AttractionUnderLennardJones,
-    /// The Lennard-Jones law asked for without its range z0 = Z0/σ.
-    LennardJonesWithoutRange,
-    /// DMT asked for without the attraction's range.
-    DmtWithoutRange,
+    /// `attraction` or `attraction_range` given with an asperity law that takes
+    /// neither (JKR).
+    AttractionNotTaken,
+    /// `attraction` given with a law whose attraction is its own (the
+    /// Lennard-Jones law; its range it takes).
+    AttractionRefused {
+        /// The law.
+        law: AdhesionModel,
+    },
+    /// A law that needs a range (its attraction's, or its own) asked for without it.
+    WithoutRange {
+        /// The law.
+        law: AdhesionModel,
+    },
     /// The height map cannot be read.
     Read(ReadError),
     /// The height map cannot be solved for contact (too small, missing points).
@@ -225,35 +232,36 @@ impl AppError {
             AppError::Element { index, error } => {
                 format!("{} (element {index})", error.message(vocabulary))
             }
-            AppError::AttractionWithoutDmt => match vocabulary {
-                Vocabulary::Flags => "--attraction and --attraction-range apply to --adhesion-model dmt only (the default is jkr)".to_string(),
-                Vocabulary::Keywords => "attraction and attraction_range apply to adhesion_model=\"dmt\" only (the default is \"jkr\")".to_string(),
-            },
-            AppError::AttractionUnderLennardJones => match vocabulary {
-                Vocabulary::Flags => "--attraction applies to --adhesion-model dmt only: the lennard_jones law's attraction is its own (give its range with --attraction-range Z0/σ)".to_string(),
-                Vocabulary::Keywords => "attraction applies to adhesion_model=\"dmt\" only: the \"lennard_jones\" law's attraction is its own (give its range with attraction_range = Z0/σ)".to_string(),
-            },
-            AppError::LennardJonesWithoutRange => format!(
-                "{} needs {}: z0 = Z0/σ, the Lennard-Jones force's equilibrium spacing over the roughness (e.g. 0.1)",
+            AppError::AttractionNotTaken => {
+                let (takes, default) = (attraction_law().as_str(), AdhesionModel::default().as_str());
+                match vocabulary {
+                    Vocabulary::Flags => format!("--attraction and --attraction-range apply to --adhesion-model {takes} only (the default is {default})"),
+                    Vocabulary::Keywords => format!("attraction and attraction_range apply to adhesion_model=\"{takes}\" only (the default is \"{default}\")"),
+                }
+            }
+            AppError::AttractionRefused { law } => {
+                let (takes, name) = (attraction_law().as_str(), law.as_str());
+                match vocabulary {
+                    Vocabulary::Flags => format!("--attraction applies to --adhesion-model {takes} only: the {name} law's attraction is its own (give its range with --attraction-range Z0/σ)"),
+                    Vocabulary::Keywords => format!("attraction applies to adhesion_model=\"{takes}\" only: the \"{name}\" law's attraction is its own (give its range with attraction_range = Z0/σ)"),
+                }
+            }
+            AppError::WithoutRange { law } => format!(
+                "{} needs {}: {} (e.g. 0.1)",
                 OptionName("adhesion_model").with(
-                    if vocabulary == Vocabulary::Flags { "lennard_jones" } else { "\"lennard_jones\"" },
+                    &if vocabulary == Vocabulary::Flags {
+                        law.as_str().to_string()
+                    } else {
+                        format!("{:?}", law.as_str())
+                    },
                     vocabulary
                 ),
                 match vocabulary {
+                    Vocabulary::Flags if law.takes_attraction() => "--attraction-range D".to_string(),
                     Vocabulary::Flags => "--attraction-range Z0/σ".to_string(),
                     Vocabulary::Keywords => "attraction_range".to_string(),
-                }
-            ),
-            AppError::DmtWithoutRange => format!(
-                "{} needs {}: z0 = Z0/σ for van_der_waals, h0/σ for dugdale (e.g. 0.1)",
-                OptionName("adhesion_model").with(
-                    if vocabulary == Vocabulary::Flags { "dmt" } else { "\"dmt\"" },
-                    vocabulary
-                ),
-                match vocabulary {
-                    Vocabulary::Flags => "--attraction-range D".to_string(),
-                    Vocabulary::Keywords => "attraction_range".to_string(),
-                }
+                },
+                law.law().range_meaning()
             ),
             AppError::Read(e) => read_message(e, vocabulary),
             AppError::Surface { origin, error } => format!("{origin}: {error}"),
@@ -364,4 +372,12 @@ impl From<CalibrationError> for AppError {
     fn from(e: CalibrationError) -> Self {
         AppError::Calibration(e)
     }
+}
+
+/// The law that takes the `attraction` option (DMT).
+fn attraction_law() -> AdhesionModel {
+    AdhesionModel::ALL
+        .into_iter()
+        .find(|m| m.takes_attraction())
+        .unwrap_or_default()
 }

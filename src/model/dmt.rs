@@ -596,6 +596,85 @@ fn hertz_body(quadrature: &Quadrature, h: f64, dc: f64, bounds: &[f64]) -> (f64,
     (load, dload, d2load)
 }
 
+/// The DMT law's entry in the registry: Hertz contact with the adhesive offset
+/// −c_0 (the contact machinery of `integrals.rs` with c_a = c_d = 0) and the
+/// attraction of the asperities out of contact above.
+pub struct Dmt;
+
+impl super::law::Law for Dmt {
+    fn name(&self) -> &'static str {
+        "dmt"
+    }
+    fn label(&self) -> &'static str {
+        "DMT"
+    }
+    fn takes_attraction(&self) -> bool {
+        true
+    }
+    fn range_meaning(&self) -> &'static str {
+        "z0 = Z0/σ for van_der_waals, h0/σ for dugdale"
+    }
+    fn section(&self) -> &'static str {
+        "docs/model.md §7"
+    }
+    fn valid_tabor(&self) -> (f64, f64) {
+        (0.0, super::law::TRANSITION_TABOR.0)
+    }
+    fn description(&self, attraction: super::law::AttractionKind) -> &'static str {
+        match attraction {
+            super::law::AttractionKind::VanDerWaals => "DMT with van der Waals attraction of asperities not in contact (range z0 = Z0/σ = {z0}, Hamaker constant A = 12π Z0² γ = {hamaker} J)",
+            super::law::AttractionKind::Dugdale => "DMT with Dugdale attraction of asperities not in contact (stress 1.03 γ/Z0 over h0 = Z0/1.03; h0/σ = {dugdale_range})",
+        }
+    }
+    fn hamaker_factor(&self, attraction: super::law::AttractionKind) -> Option<f64> {
+        (attraction == super::law::AttractionKind::VanDerWaals).then_some(12.0)
+    }
+    fn attracts_out_of_contact(&self) -> bool {
+        true
+    }
+    fn closed_form_pull_off(&self) -> Option<f64> {
+        Some(2.0)
+    }
+    fn with_range(
+        &self,
+        attraction: super::law::AttractionKind,
+        range: f64,
+    ) -> super::law::AsperityLaw {
+        super::law::AsperityLaw::Dmt(Attraction::new(attraction, range))
+    }
+    fn prepare(
+        &self,
+        law: super::law::AsperityLaw,
+        c: &super::coefficients::Coefficients,
+    ) -> super::law::Prepared {
+        let contact = super::coefficients::Coefficients {
+            c_a: 0.0,
+            c_d: 0.0,
+            ..*c
+        };
+        super::law::Prepared::closed_form(law, contact, c.c_0)
+    }
+    fn closed_form_attraction(&self, law: super::law::AsperityLaw) -> Option<Attraction> {
+        match law {
+            super::law::AsperityLaw::Dmt(a) => Some(a),
+            _ => None,
+        }
+    }
+    fn separation_scale(
+        &self,
+        law: super::law::AsperityLaw,
+        _c: &super::coefficients::Coefficients,
+    ) -> f64 {
+        // The minimum lies within a few units of the attraction's reach.
+        1.0 + law.range().min(1e3)
+    }
+    fn outside_regime(&self, tabor: f64) -> Option<super::warnings::Warning> {
+        (tabor > self.valid_tabor().1).then_some(super::warnings::Warning::OutsideDmtRegime {
+            tabor_parameter: tabor,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

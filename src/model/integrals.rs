@@ -17,7 +17,6 @@ use super::coefficients::{Coefficients, Transition};
 use super::dmt::{hertz, noncontact, Noncontact};
 use super::gauss;
 use super::law::{AsperityLaw, Attraction};
-use super::lennard_jones::rough::{self, Grid, RoughLaw};
 use super::quadrature::{contact_level, Quadrature};
 use super::scaled::Scaled;
 use super::special::{gauss_scaled, kappa, tail0, tail1_given};
@@ -27,6 +26,38 @@ use std::sync::Arc;
 /// the contact scale (the non-contact mantissa times e^{κ-E} ≤ e^{300} stays finite;
 /// beyond it the contact share is below e^{-300} of the other).
 const NONCONTACT_GAP_LIMIT: f64 = 300.0;
+
+/// The non-contact and contact shares of P̄ and their first two
+/// h-derivatives, each a mantissa: the value is `m e^{-exponent}`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Shares {
+    /// ∫_{Δ<0} p φ̄ dΔ, and its h-derivatives.
+    pub noncontact: [f64; 3],
+    /// The scale of `noncontact`: κ(−h) = max(−h, 0)²/2.
+    pub noncontact_exponent: f64,
+    /// ∫_0^{Δc} p φ̄ dΔ (elastic contacts), and its h-derivatives.
+    pub elastic: [f64; 3],
+    /// The scale of `elastic`: κ(h) = max(h, 0)²/2.
+    pub elastic_exponent: f64,
+}
+
+/// A law that integrates its own elastic and non-contact shares over the
+/// summit heights (the Lennard-Jones law, from the table of its single-asperity
+/// curve): the model adds the plastic junctions of each of its curves, the
+/// area, the counts and the capillary load.
+pub trait Tabulated: Send + Sync + std::fmt::Debug {
+    /// The elastic and non-contact shares at h.
+    fn shares(&self, h: f64) -> Shares;
+    /// Each curve's Δc with its weight, the plastic junctions beyond which the
+    /// model adds in closed form.
+    fn plastic_junctions(&self, visit: &mut dyn FnMut(f64, f64));
+    /// The elastic–plastic transition at these coefficients.
+    fn transition(&self, coefficients: &Coefficients) -> Transition;
+    /// One asperity's pull-off in units of πγR (> 0).
+    fn asperity_pull_off(&self) -> f64;
+    /// The law's own type (for its module's accessors).
+    fn as_any(&self) -> &dyn std::any::Any;
+}
 
 /// The model at fixed coefficients and one asperity law: precomputes the
 /// transition once, then evaluates any separation with [`Model::at`].
@@ -56,14 +87,13 @@ pub struct Model {
     c_d_cubed: f64,
     /// The capillary term of docs/model.md §9 (None: dry, or no meniscus).
     pub capillary: Option<Capillary>,
-    /// The law whose integrals are taken: `law` itself, except under the
-    /// Lennard-Jones law outside its table or without adhesion, where its
-    /// closed-form limit stands in (see [`Model::stand_in`]).
+    /// The law whose integrals are taken: `law` itself, except where a
+    /// closed-form limit stands in for it (see [`Model::stand_in`]).
     effective: AsperityLaw,
-    /// The Lennard-Jones law's rough-surface integrals: its table in use and
-    /// their quadrature nodes over the separations most evaluations ask for,
+    /// A law's own rough-surface integrals (the Lennard-Jones law's table and
+    /// its quadrature nodes over the separations most evaluations ask for),
     /// built once with the model (shared by its clones).
-    lennard_jones: Option<Arc<Grid>>,
+    tabulated: Option<Arc<dyn Tabulated>>,
 }
 
 /// One asperity's load in contact under JKR or DMT (docs/model.md §3, §7): for
@@ -281,47 +311,24 @@ impl Model {
     /// The model of an asperity law with explicit quadrature settings. Under
     /// DMT the attraction range (z0 or Δ_h) must be finite and > 0.
     pub fn with_law(coefficients: Coefficients, law: AsperityLaw, quadrature: Quadrature) -> Self {
-        let (effective, lennard_jones) = match law {
-            // Without adhesion every law is Hertz's (and JKR's path is exact).
-            AsperityLaw::LennardJones { .. } if !coefficients.has_adhesion() => {
-                (AsperityLaw::Jkr, None)
-            }
-            AsperityLaw::LennardJones { range } => {
-                match RoughLaw::new(coefficients.c_0, coefficients.c_h, range) {
-                    Some(table) => (law, Some(table)),
-                    None if rough::tabor(coefficients.c_0, range) > 1.0 => (AsperityLaw::Jkr, None),
-                    None => (AsperityLaw::Dmt(Attraction::VanDerWaals { range }), None),
-                }
-            }
-            other => (other, None),
-        };
-        let (contact, elastic_offset) = match effective {
-            AsperityLaw::Jkr | AsperityLaw::LennardJones { .. } => (coefficients, 0.0),
-            AsperityLaw::Dmt(_) => (
-                Coefficients {
-                    c_a: 0.0,
-                    c_d: 0.0,
-                    ..coefficients
-                },
-                coefficients.c_0,
-            ),
-        };
-        let transition = match &lennard_jones {
-            Some(table) => lennard_jones_transition(&coefficients, table),
+        let prepared = law.law().prepare(law, &coefficients);
+        let contact = prepared.contact;
+        let transition = match &prepared.tabulated {
+            Some(table) => table.transition(&coefficients),
             None => contact.transition(),
         };
         Model {
             coefficients,
             law,
             contact,
-            elastic_offset,
+            elastic_offset: prepared.elastic_offset,
             transition,
             quadrature,
             s_touch: contact.c_d.cbrt(),
             c_d_cubed: contact.c_d.cbrt().powi(3),
             capillary: None,
-            effective,
-            lennard_jones: lennard_jones.map(|t| Arc::new(t.grid())),
+            effective: prepared.effective,
+            tabulated: prepared.tabulated,
         }
     }
 
@@ -331,36 +338,29 @@ impl Model {
         self.effective
     }
 
-    /// The Lennard-Jones law's table in use (None under the other laws, and
-    /// under this one where a closed form stands in).
-    pub fn lennard_jones_table(&self) -> Option<&RoughLaw> {
-        self.lennard_jones.as_deref().map(Grid::law)
+    /// The law's own integrals where it takes them (None for the closed-form
+    /// contacts, and where a closed form stands in).
+    pub fn tabulated(&self) -> Option<&dyn Tabulated> {
+        self.tabulated.as_deref()
     }
 
     /// One asperity's pull-off under the model's law in units of πγR: JKR's
     /// 1.5, DMT's 2, the Lennard-Jones sphere's from its table (between them).
     pub fn asperity_pull_off(&self) -> f64 {
-        match (self.lennard_jones_table(), self.effective) {
-            (Some(table), _) => -table.asperity_pull_off(),
-            (None, AsperityLaw::Dmt(_)) => 2.0,
-            // Bradley's rigid sphere at contact, 2πγR, below the table; its
-            // DMT stand-in's own is the same.
-            (None, _) => 1.5,
+        match &self.tabulated {
+            Some(table) => table.asperity_pull_off(),
+            // A closed form that stands in for a tabulated law has its own (below
+            // the Lennard-Jones table, Bradley's rigid sphere at contact, 2πγR,
+            // is its DMT stand-in's).
+            None => self.effective.law().closed_form_pull_off().unwrap_or(1.5),
         }
     }
 
-    /// The closed-form law that stands in for the scene's: under the
-    /// Lennard-Jones law outside its table (JKR above μ = 5, DMT with van der
+    /// The closed-form law that stands in for the scene's (under the
+    /// Lennard-Jones law outside its table: JKR above μ = 5, DMT with van der
     /// Waals attraction below μ = 0.01); None where the scene's law is used.
     pub fn stand_in(&self) -> Option<AsperityLaw> {
-        match self.law {
-            AsperityLaw::LennardJones { .. }
-                if self.lennard_jones.is_none() && self.coefficients.has_adhesion() =>
-            {
-                Some(self.effective)
-            }
-            _ => None,
-        }
+        (self.effective != self.law && self.coefficients.has_adhesion()).then_some(self.effective)
     }
 
     /// This model with a capillary term (docs/model.md §9) added to its load.
@@ -387,7 +387,7 @@ impl Model {
     /// What the exchanged work integral ([`super::work`]) needs of the model's
     /// asperity law in contact: None under the Lennard-Jones law's table.
     pub(super) fn contact_law(&self) -> Option<ContactLaw> {
-        if self.lennard_jones.is_some() {
+        if self.tabulated.is_some() {
             return None;
         }
         Some(ContactLaw {
@@ -459,14 +459,14 @@ impl Model {
 
     /// All integrals at separation h (finite; see [`Model::checked_at`]).
     pub fn at(&self, h: f64) -> Integrals {
-        let mut out = match self.lennard_jones.as_deref() {
-            Some(grid) => self.lennard_jones_at(grid, h),
+        let mut out = match self.tabulated.as_deref() {
+            Some(table) => self.tabulated_at(table, h),
             None => self.contact_at(h),
         };
         if let Some(c) = &self.capillary {
             out.capillary = c.at(h);
         }
-        if let AsperityLaw::Dmt(attraction) = self.effective {
+        if let Some(attraction) = self.effective.law().closed_form_attraction(self.effective) {
             let n: Noncontact = noncontact(attraction, self.coefficients.c_0, h);
             out.load_noncontact = n.load;
             out.dload_dh_noncontact = n.dload_dh;
@@ -537,13 +537,13 @@ impl Model {
         out
     }
 
-    /// The integrals under the Lennard-Jones law from its table: the elastic and
-    /// non-contact shares from the rough-surface quadrature, the plastic
+    /// The integrals of a law that takes its own (the Lennard-Jones law's
+    /// table): the elastic and non-contact shares from the law, the plastic
     /// junctions of each of its curves (own Δc and weight) in closed form, and
     /// §3's area and counts over Δ ≥ 0 (MODEL.md §8).
-    fn lennard_jones_at(&self, grid: &Grid, h: f64) -> Integrals {
+    fn tabulated_at(&self, table: &dyn Tabulated, h: f64) -> Integrals {
         let t0_h = tail0(h);
-        let shares = grid.shares(h);
+        let shares = table.shares(h);
         let mut out = Integrals {
             separation: h,
             scale_exponent: kappa(h),
@@ -569,13 +569,13 @@ impl Model {
         // keeps them ≥ 0 where the Lagrange weights are not.
         let mut shares = [0.0; 3];
         let mut signs = (true, true);
-        for (dc, weight) in grid.law().critical_interferences() {
+        table.plastic_junctions(&mut |dc, weight| {
             let p = Plastic::at(&self.coefficients, h, dc);
             shares[0] += weight * p.load;
             shares[1] += weight * p.dload;
             shares[2] += weight * p.d2load;
             signs = (signs.0 && p.load >= 0.0, signs.1 && p.load <= 0.0);
-        }
+        });
         let plastic = Plastic::at(&self.coefficients, h, self.transition.critical_interference);
         // Where the junctions lie far out in the weight's tail their shares
         // change by orders of magnitude from one curve's Δc to the next, and
@@ -746,26 +746,6 @@ impl Model {
             out[..n].reverse();
             n
         }
-    }
-}
-
-/// The elastic–plastic transition under the Lennard-Jones law: Δc and the
-/// load jump J = (c_p Δc − c_0) − p(Δc) of its curves, Δc interpolated as the
-/// integrals are, J the most negative (the separation search looks for extra
-/// minima wherever one curve's jump is negative).
-fn lennard_jones_transition(c: &Coefficients, table: &RoughLaw) -> Transition {
-    let mut dc = 0.0;
-    let mut jump = f64::INFINITY;
-    for (critical, weight, load) in table.transitions() {
-        dc += weight * critical;
-        if critical.is_finite() {
-            jump = jump.min(c.c_p * critical - c.c_0 - load);
-        }
-    }
-    Transition {
-        t: dc.sqrt().sqrt(),
-        critical_interference: if dc.is_nan() { f64::INFINITY } else { dc },
-        jump: if jump.is_finite() { jump } else { 0.0 },
     }
 }
 

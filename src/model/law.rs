@@ -21,7 +21,11 @@
 //! The separation and pull-off searches only see P̄, P̄', P̄'' and the sign of
 //! the load jump.
 
+use super::coefficients::Coefficients;
+use super::integrals::Tabulated;
+use super::warnings::{Note, Warning};
 use serde::Serialize;
+use std::sync::Arc;
 
 /// φ0 range where neither limit law is exact (the JKR–DMT transition), and `eval`
 /// gives both.
@@ -50,13 +54,20 @@ impl AdhesionModel {
         AdhesionModel::LennardJones,
     ];
 
+    /// The law's module: its names, the options it takes, where it is exact,
+    /// and its physics. **The registration**: a new law is a variant here and
+    /// in [`AsperityLaw`], and one line below.
+    pub fn law(self) -> &'static dyn Law {
+        match self {
+            AdhesionModel::Jkr => &super::jkr::Jkr,
+            AdhesionModel::Dmt => &super::dmt::Dmt,
+            AdhesionModel::LennardJones => &super::lennard_jones::law::LennardJones,
+        }
+    }
+
     /// The word used in problem files and reports.
     pub fn as_str(self) -> &'static str {
-        match self {
-            AdhesionModel::Jkr => "jkr",
-            AdhesionModel::Dmt => "dmt",
-            AdhesionModel::LennardJones => "lennard_jones",
-        }
+        self.law().name()
     }
 
     /// The law named `name` (as [`AdhesionModel::as_str`] writes it).
@@ -72,29 +83,26 @@ impl AdhesionModel {
     /// Whether the law takes an attraction of the asperities out of contact (the
     /// `attraction` key and its range).
     pub fn takes_attraction(self) -> bool {
-        match self {
-            AdhesionModel::Jkr | AdhesionModel::LennardJones => false,
-            AdhesionModel::Dmt => true,
-        }
+        self.law().takes_attraction()
     }
 
     /// The law's name as a report writes it in prose.
     pub fn label(self) -> &'static str {
-        match self {
-            AdhesionModel::Jkr => "JKR",
-            AdhesionModel::Dmt => "DMT",
-            AdhesionModel::LennardJones => "Lennard-Jones",
-        }
+        self.law().label()
     }
 
     /// The Tabor parameters φ0 over which the law is exact (closed ends): JKR at
     /// and above the transition, DMT at and below it.
     pub fn valid_tabor(self) -> (f64, f64) {
-        match self {
-            AdhesionModel::Jkr => (TRANSITION_TABOR.1, f64::INFINITY),
-            AdhesionModel::Dmt => (0.0, TRANSITION_TABOR.0),
-            AdhesionModel::LennardJones => (0.0, f64::INFINITY),
-        }
+        self.law().valid_tabor()
+    }
+
+    /// The laws exact at φ0 (the registry's order).
+    pub fn valid_at(tabor: f64) -> impl Iterator<Item = AdhesionModel> {
+        Self::ALL.into_iter().filter(move |m| {
+            let (lo, hi) = m.valid_tabor();
+            tabor >= lo && tabor <= hi
+        })
     }
 
     /// The law `eval` gives beside this one at φ0: inside the JKR–DMT transition
@@ -103,8 +111,119 @@ impl AdhesionModel {
     /// itself and outside the transition (φ0 inside the limit law's validity).
     pub fn bracket(self, tabor: f64) -> Option<AdhesionModel> {
         let inside = tabor >= TRANSITION_TABOR.0 && tabor <= TRANSITION_TABOR.1;
-        let general = AdhesionModel::LennardJones;
-        (inside && self != general).then_some(general)
+        if !inside || self.law().general() {
+            return None;
+        }
+        Self::ALL.into_iter().find(|m| m.law().general())
+    }
+}
+
+/// One asperity law as its own module gives it: the registry's entry (names,
+/// the options it takes, where it is exact, a report's words for it) and what
+/// the rough-surface model asks of it. Each law implements it on a unit struct
+/// (`jkr.rs`, `dmt.rs`, `lennard_jones/law.rs`); [`AdhesionModel::law`] lists
+/// them. Nothing outside the law's module and that line names a law.
+pub trait Law: Sync {
+    /// The word used in problem files, options and reports (`adhesion_model`).
+    fn name(&self) -> &'static str;
+    /// The law's short name in prose ("JKR").
+    fn label(&self) -> &'static str;
+    /// Where docs/model.md states it ("docs/model.md §3").
+    fn section(&self) -> &'static str;
+    /// Its name where a report names it in full ("Lennard-Jones sphere").
+    fn title(&self) -> &'static str {
+        self.label()
+    }
+    /// Whether it takes an attraction of its asperities out of contact (the
+    /// `attraction` key, a kind and a range).
+    fn takes_attraction(&self) -> bool {
+        false
+    }
+    /// Whether it needs a range of its own (z0 = Z0/σ) without taking an
+    /// attraction (`curve`'s `--attraction-range`).
+    fn has_own_range(&self) -> bool {
+        false
+    }
+    /// What its range means, for a message that asks for it ("z0 = Z0/σ, …").
+    fn range_meaning(&self) -> &'static str {
+        ""
+    }
+    /// Why the law refuses the `attraction` key, after `adhesion_model is
+    /// "NAME"` (ignored where it takes one).
+    fn attraction_refused(&self) -> &'static str {
+        ""
+    }
+    /// The Tabor parameters φ0 over which the law is exact (closed ends).
+    fn valid_tabor(&self) -> (f64, f64);
+    /// True for a law that holds through the JKR–DMT transition: `eval` gives it
+    /// beside the limit laws there.
+    fn general(&self) -> bool {
+        false
+    }
+    /// A report's description of the law, `{z0}` (Z0/σ), `{hamaker}` (J) and
+    /// `{dugdale_range}` (h0/σ) standing for the scene's numbers.
+    fn description(&self, attraction: AttractionKind) -> &'static str;
+    /// The Hamaker constant of its attraction over π Z0² γ (None: no power-law
+    /// attraction out of contact).
+    fn hamaker_factor(&self, _attraction: AttractionKind) -> Option<f64> {
+        None
+    }
+    /// Whether asperities out of contact carry load under it.
+    fn attracts_out_of_contact(&self) -> bool {
+        false
+    }
+    /// One asperity's pull-off over πγR where it is a closed form (None: the
+    /// law's own, from its curve).
+    fn closed_form_pull_off(&self) -> Option<f64>;
+
+    /// The law of a scene, its range (z0 = Z0/σ, or under an attraction that
+    /// attraction's own) already non-dimensional.
+    fn with_range(&self, attraction: AttractionKind, range: f64) -> AsperityLaw;
+    /// What the model takes its integrals from at these coefficients.
+    fn prepare(&self, law: AsperityLaw, coefficients: &Coefficients) -> Prepared;
+    /// The attraction of asperities out of contact that the model adds in
+    /// closed form (docs/model.md §7), if the law has one.
+    fn closed_form_attraction(&self, _law: AsperityLaw) -> Option<Attraction> {
+        None
+    }
+    /// A first guess of the separation of the load's minimum (the separation
+    /// search's scale), for a law with adhesion.
+    fn separation_scale(&self, law: AsperityLaw, coefficients: &Coefficients) -> f64;
+    /// The warning for a scene outside the law's regime at φ0 (with adhesion).
+    fn outside_regime(&self, _tabor: f64) -> Option<Warning> {
+        None
+    }
+    /// The note a scene gets where a closed form (`stand_in`) stands in for the
+    /// law.
+    fn stand_in_note(&self, _stand_in: AsperityLaw, _tabor: f64) -> Option<Note> {
+        None
+    }
+}
+
+/// What a [`Law`] gives the model at one scene's coefficients.
+#[derive(Debug, Clone)]
+pub struct Prepared {
+    /// The law whose integrals are taken: the scene's, or a closed form that
+    /// stands in for it.
+    pub effective: AsperityLaw,
+    /// The coefficients of the contact integrals.
+    pub contact: Coefficients,
+    /// The constant subtracted from the elastic asperity load (DMT's c_0).
+    pub elastic_offset: f64,
+    /// A law that integrates its own elastic and non-contact shares (from a
+    /// table of its single-asperity curve); None for the closed-form contacts.
+    pub tabulated: Option<Arc<dyn Tabulated>>,
+}
+
+impl Prepared {
+    /// The closed-form contacts of `law` at these coefficients.
+    pub fn closed_form(law: AsperityLaw, contact: Coefficients, elastic_offset: f64) -> Self {
+        Prepared {
+            effective: law,
+            contact,
+            elastic_offset,
+            tabulated: None,
+        }
     }
 }
 
@@ -139,6 +258,14 @@ impl AttractionKind {
     /// The names of every attraction, in order.
     pub fn names() -> [&'static str; 2] {
         Self::ALL.map(AttractionKind::as_str)
+    }
+
+    /// The attraction's name in prose.
+    pub fn label(self) -> &'static str {
+        match self {
+            AttractionKind::VanDerWaals => "van der Waals",
+            AttractionKind::Dugdale => "Dugdale",
+        }
     }
 
     /// The non-dimensional range of the attraction for an interatomic distance
@@ -220,6 +347,28 @@ impl AsperityLaw {
         }
     }
 
+    /// The law's module.
+    pub fn law(self) -> &'static dyn Law {
+        self.adhesion_model().law()
+    }
+
+    /// The reach of its attraction out of contact (z0 or Δ_h; 0 under JKR).
+    pub fn range(self) -> f64 {
+        match self {
+            AsperityLaw::Jkr => 0.0,
+            AsperityLaw::Dmt(a) => a.range(),
+            AsperityLaw::LennardJones { range } => range,
+        }
+    }
+
+    /// Its attraction's kind (van der Waals where it takes none).
+    pub fn attraction_kind(self) -> AttractionKind {
+        match self {
+            AsperityLaw::Dmt(a) => a.kind(),
+            _ => AttractionKind::VanDerWaals,
+        }
+    }
+
     /// The law for a scene's choice, with its attraction range from Z0 and σ.
     pub fn of(
         model: AdhesionModel,
@@ -227,16 +376,13 @@ impl AsperityLaw {
         interatomic_distance: f64,
         sigma: f64,
     ) -> Self {
-        match model {
-            AdhesionModel::Jkr => AsperityLaw::Jkr,
-            AdhesionModel::Dmt => AsperityLaw::Dmt(Attraction::new(
-                attraction,
-                attraction.range(interatomic_distance, sigma),
-            )),
-            AdhesionModel::LennardJones => AsperityLaw::LennardJones {
-                range: interatomic_distance / sigma,
-            },
-        }
+        let law = model.law();
+        let range = if law.takes_attraction() {
+            attraction.range(interatomic_distance, sigma)
+        } else {
+            interatomic_distance / sigma
+        };
+        law.with_range(attraction, range)
     }
 }
 
@@ -260,6 +406,19 @@ mod registry_tests {
                 assert_eq!(m.bracket(phi), Some(AdhesionModel::LennardJones));
             }
             assert_eq!(AdhesionModel::LennardJones.bracket(phi), None);
+        }
+        // The laws exact in each regime: the limit law and the general one.
+        let valid = |phi: f64| AdhesionModel::valid_at(phi).collect::<Vec<_>>();
+        use AdhesionModel::{Dmt, Jkr, LennardJones};
+        assert_eq!(valid(0.1), [Dmt, LennardJones]);
+        assert_eq!(valid(1.0), [LennardJones]);
+        assert_eq!(valid(10.0), [Jkr, LennardJones]);
+        // Each law's entry agrees with its configured law's.
+        for m in AdhesionModel::ALL {
+            let law = m.law().with_range(AttractionKind::Dugdale, 0.25);
+            assert_eq!(law.adhesion_model(), m);
+            let takes_range = m.takes_attraction() || m.law().has_own_range();
+            assert_eq!(law.range(), if takes_range { 0.25 } else { 0.0 });
         }
         // Well inside a law's validity nothing brackets it.
         assert_eq!(AdhesionModel::Jkr.bracket(100.0), None);

@@ -16,6 +16,7 @@ pub(crate) mod dmt;
 pub mod environment;
 pub mod gauss;
 pub mod integrals;
+mod jkr;
 pub mod law;
 pub mod lennard_jones;
 pub mod load_curve;

@@ -213,12 +213,11 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         f.minus(bump).signum()
     };
     // The large-h expansion puts the minimum near h ≈ p'(0)/|p(0)| = (3/2) c_d^{-1/3}/c_a.
-    let law_guess = match model.effective_law() {
-        _ if !c.has_adhesion() => f64::INFINITY,
-        super::law::AsperityLaw::Jkr => (1.5 / (c.c_d.cbrt() * c.c_a)).clamp(0.5, 1e6),
-        // The minimum lies within a few units of the attraction's reach.
-        super::law::AsperityLaw::Dmt(a) => 1.0 + a.range().min(1e3),
-        super::law::AsperityLaw::LennardJones { range } => 1.0 + range.min(1e3),
+    let law = model.effective_law();
+    let law_guess = if c.has_adhesion() {
+        law.law().separation_scale(law, &c)
+    } else {
+        f64::INFINITY
     };
     // A meniscus reaches k = d_K/σ: the minimum lies within a few units of it too,
     // or nearer where the solid law's own minimum is.

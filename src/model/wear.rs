@@ -473,29 +473,14 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
     let mut warnings = warnings::scene_warnings(scene);
     let mut notes = Vec::new();
     let phi = idx.tabor_parameter;
-    match scene.adhesion_model {
-        AdhesionModel::Jkr if coeffs.has_adhesion() && phi < TRANSITION_TABOR.1 => {
-            warnings.push(Warning::OutsideJkrRegime {
-                tabor_parameter: phi,
-            });
-        }
-        AdhesionModel::Dmt if coeffs.has_adhesion() && phi > TRANSITION_TABOR.0 => {
-            warnings.push(Warning::OutsideDmtRegime {
-                tabor_parameter: phi,
-            });
-        }
-        _ => {}
+    if coeffs.has_adhesion() {
+        warnings.extend(scene.adhesion_model.law().outside_regime(phi));
     }
-    let stand_in = model.stand_in().map(|law| law.adhesion_model());
+    let stand_in = model.stand_in();
     if let Some(law) = stand_in {
-        notes.push(Note::LennardJonesStandIn {
-            tabor_parameter: phi,
-            stand_in: law,
-            pull_off_error: super::lennard_jones::rough::stand_in_pull_off_error(
-                law == AdhesionModel::Jkr,
-            ),
-        });
+        notes.extend(model.law.law().stand_in_note(law, phi));
     }
+    let stand_in = stand_in.map(|law| law.adhesion_model());
     if reg.elastic_adhesion_matters {
         notes.push(Note::ElasticAdhesionMatters {
             elastic_adhesion_index: idx.elastic_adhesion_index,
@@ -677,13 +662,17 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         friction_force: None,
         friction_coefficient: None,
         adhesion_model: scene.adhesion_model,
-        attraction: (scene.adhesion_model == AdhesionModel::Dmt).then_some(scene.attraction),
-        hamaker_constant: match scene.adhesion_model {
-            AdhesionModel::Dmt if scene.attraction == AttractionKind::VanDerWaals => Some(12.0),
-            AdhesionModel::LennardJones => Some(16.0),
-            _ => None,
-        }
-        .map(|factor| factor * PI * scene.interatomic_distance.powi(2) * scene.work_of_adhesion),
+        attraction: scene
+            .adhesion_model
+            .takes_attraction()
+            .then_some(scene.attraction),
+        hamaker_constant: scene
+            .adhesion_model
+            .law()
+            .hamaker_factor(scene.attraction)
+            .map(|factor| {
+                factor * PI * scene.interatomic_distance.powi(2) * scene.work_of_adhesion
+            }),
         noncontact_load: at.map(|a| a.noncontact_load().scale(load_scale).value()),
         other_model: None,
         stand_in_model: stand_in,

@@ -40,7 +40,7 @@
 
 use super::capillary::CapillaryShare;
 use super::integrals::{ContactLaw, Model};
-use super::law::{AsperityLaw, Attraction};
+use super::law::Attraction;
 use super::special::{tail0, SQRT_TWO_PI};
 
 /// The Gauss–Kronrod 7–15 pair (QUADPACK's qk15): the 15 Kronrod nodes on [0, 1)
@@ -285,10 +285,11 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
     }
     // The attraction on Δ < 0 under DMT.
     let c_0 = model.coefficients.c_0;
-    let attraction = match model.effective_law() {
-        AsperityLaw::Dmt(a) if c_0 > 0.0 => Some(a),
-        _ => None,
-    };
+    let effective = model.effective_law();
+    let attraction = effective
+        .law()
+        .closed_form_attraction(effective)
+        .filter(|_| c_0 > 0.0);
     // z0 (van der Waals) or Δ_h (Dugdale).
     let reach = attraction.map_or(0.0, |a| a.range());
     match attraction {
@@ -376,13 +377,11 @@ fn capillary_end(from: f64, scale: f64) -> f64 {
 /// Γ̄ by the quadrature of the whole load over h (module docs): the method under
 /// the Lennard-Jones law's table, and the independent check of the exchanged one.
 pub fn work_by_separation(model: &Model, from: f64) -> (f64, usize) {
-    let reach = match model.effective_law() {
-        AsperityLaw::Dmt(a) => a.range(),
-        AsperityLaw::LennardJones { range } => range,
-        AsperityLaw::Jkr => 0.0,
-    }
-    .max(model.capillary.map_or(0.0, |c| c.range))
-    .min(1e3);
+    let law = model.effective_law();
+    let reach = law
+        .range()
+        .max(model.capillary.map_or(0.0, |c| c.range))
+        .min(1e3);
     let scale = 1.0 + reach;
     let t_end = capillary_end(from, scale);
     let mut evaluations = 0;
@@ -395,11 +394,10 @@ pub fn work_by_separation(model: &Model, from: f64) -> (f64, usize) {
     // Beyond h = MAX_SEPARATION a power-law attraction's tail in closed form:
     // −c_0 (z0/(z0 + h))² per summit under van der Waals, 4/3 of it under
     // Lennard-Jones (Hamaker constant 16π Z0² γ against 12π).
-    let tail = match model.effective_law() {
-        AsperityLaw::Dmt(Attraction::VanDerWaals { range }) => Some((range, 1.0)),
-        AsperityLaw::LennardJones { range } => Some((range, 4.0 / 3.0)),
-        _ => None,
-    };
+    let tail = law
+        .law()
+        .hamaker_factor(law.attraction_kind())
+        .map(|factor| (law.range(), factor / 12.0));
     if let Some((range, factor)) = tail {
         if t_end < 1.0 {
             let c_0 = model.coefficients.c_0;

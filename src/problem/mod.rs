@@ -865,14 +865,20 @@ impl Problem {
         let attraction = match &i.attraction {
             None => AttractionKind::default(),
             Some(w) if !adhesion_model.takes_attraction() => {
-                let why = match adhesion_model {
-                    AdhesionModel::LennardJones => "adhesion_model is \"lennard_jones\", whose attraction is its own (the Lennard-Jones force, range interatomic_distance): remove attraction, or set adhesion_model = \"dmt\"",
-                    _ => "adhesion_model is \"jkr\" (the default): remove attraction, or set adhesion_model = \"dmt\"",
-                };
+                let takes = AdhesionModel::ALL
+                    .into_iter()
+                    .find(|m| m.takes_attraction())
+                    .unwrap_or_default();
                 return Err(r.invalid(
                     "interface.attraction",
                     &w.span(),
-                    format!("attraction applies to the DMT law only, and {why}"),
+                    format!(
+                        "attraction applies to the {} law only, and adhesion_model is {:?}{}: remove attraction, or set adhesion_model = {:?}",
+                        takes.label(),
+                        adhesion_model.as_str(),
+                        adhesion_model.law().attraction_refused(),
+                        takes.as_str()
+                    ),
                 ));
             }
             Some(w) => match AttractionKind::from_name(w.get_ref()) {

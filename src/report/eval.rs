@@ -5,7 +5,8 @@ use serde_json::{json, Map, Value};
 use super::format::FormatError;
 use super::{si, sig, sig_exp};
 use crate::app::eval::{EvalDocument, EvalOptions, LOAD_CURVE_POINTS};
-use crate::model::{AdhesionModel, AttractionKind, Evaluation, Scene, Sensitivity, WearArea};
+use crate::model::law::{DUGDALE_STRESS_FACTOR, TRANSITION_TABOR};
+use crate::model::{AdhesionModel, Evaluation, Scene, Sensitivity, WearArea};
 
 /// The formats `wearopt eval` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[
@@ -236,16 +237,15 @@ fn humidity_rows(h: &crate::model::wear::Humidity) -> Vec<[String; 2]> {
     rows
 }
 
-/// The asperity law in a few words (a table cell): its name, DMT's attraction,
-/// the closed form that stands in for the Lennard-Jones law outside its table.
+/// The asperity law in a few words (a table cell): its name, the attraction
+/// of a law that takes one, the closed form that stands in for a law outside
+/// its table.
 fn law_label(ev: &Evaluation, sc: &Scene) -> String {
-    let name = match ev.adhesion_model {
-        AdhesionModel::Dmt => match sc.attraction {
-            AttractionKind::VanDerWaals => "DMT, van der Waals".to_string(),
-            AttractionKind::Dugdale => "DMT, Dugdale".to_string(),
-        },
-        AdhesionModel::LennardJones => "Lennard-Jones sphere".to_string(),
-        AdhesionModel::Jkr => "JKR".to_string(),
+    let law = ev.adhesion_model.law();
+    let name = if law.takes_attraction() {
+        format!("{}, {}", law.title(), sc.attraction.label())
+    } else {
+        law.title().to_string()
     };
     match ev.stand_in_model {
         Some(m) => format!("{name} ({} stands in)", m.label()),
@@ -253,29 +253,26 @@ fn law_label(ev: &Evaluation, sc: &Scene) -> String {
     }
 }
 
-/// The asperity law in words, with the attraction's range under DMT.
+/// The asperity law in words, with its attraction's range and Hamaker
+/// constant where it has them (the law's own description, the scene's numbers
+/// put in).
 fn law_words(ev: &Evaluation, sc: &Scene) -> String {
-    match ev.adhesion_model {
-        AdhesionModel::Jkr => {
-            "JKR (adhesion inside contacts only; adhesion_model = \"jkr\")".to_string()
-        }
-        AdhesionModel::LennardJones => format!(
-            "Lennard-Jones sphere (self-consistent, for every Tabor parameter; attraction of asperities not in contact with range z0 = Z0/σ = {}, Hamaker constant A = 16π Z0² γ = {} J)",
-            sig_exp(sc.interatomic_distance / sc.sigma, 4),
-            sig_exp(ev.hamaker_constant.unwrap_or(f64::NAN), 4)
-        ),
-        AdhesionModel::Dmt => match sc.attraction {
-            AttractionKind::VanDerWaals => format!(
-                "DMT with van der Waals attraction of asperities not in contact (range z0 = Z0/σ = {}, Hamaker constant A = 12π Z0² γ = {} J)",
-                sig_exp(sc.interatomic_distance / sc.sigma, 4),
-                sig_exp(ev.hamaker_constant.unwrap_or(f64::NAN), 4)
-            ),
-            AttractionKind::Dugdale => format!(
-                "DMT with Dugdale attraction of asperities not in contact (stress 1.03 γ/Z0 over h0 = Z0/1.03; h0/σ = {})",
-                sig_exp(sc.interatomic_distance / (1.03 * sc.sigma), 4)
-            ),
-        },
+    let words = ev.adhesion_model.law().description(sc.attraction);
+    let mut out = words.to_string();
+    if words.contains("{z0}") {
+        out = out.replace("{z0}", &sig_exp(sc.interatomic_distance / sc.sigma, 4));
     }
+    if words.contains("{hamaker}") {
+        out = out.replace(
+            "{hamaker}",
+            &sig_exp(ev.hamaker_constant.unwrap_or(f64::NAN), 4),
+        );
+    }
+    if words.contains("{dugdale_range}") {
+        let range = sc.interatomic_distance / (DUGDALE_STRESS_FACTOR * sc.sigma);
+        out = out.replace("{dugdale_range}", &sig_exp(range, 4));
+    }
+    out
 }
 
 /// The stiction verdict under the other asperity law (JKR–DMT transition only).
@@ -587,7 +584,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     ];
     if let Some(nc) = ev
         .noncontact_load
-        .filter(|_| ev.adhesion_model != AdhesionModel::Jkr)
+        .filter(|_| ev.adhesion_model.law().attracts_out_of_contact())
     {
         rows.insert(
             6,
@@ -887,7 +884,7 @@ pub fn text(r: &EvalReport) -> String {
     let elastic = part(ev.elastic_load, carried, si(ev.elastic_load, "N", 4));
     let plastic = part(ev.plastic_load, carried, si(ev.plastic_load, "N", 4));
     match ev.noncontact_load {
-        Some(nc) if ev.adhesion_model != AdhesionModel::Jkr => line(format!(
+        Some(nc) if ev.adhesion_model.law().attracts_out_of_contact() => line(format!(
             "  load carried: elastic {elastic}, plastic {plastic}, attracted asperities not in contact {}",
             si(nc, "N", 4)
         )),
@@ -904,16 +901,19 @@ pub fn text(r: &EvalReport) -> String {
                 format!("{l:.1}")
             },
             ev.pull_off_separation.map_or("-".into(), |d| si(d, "m", 4)),
-            match (ev.adhesion_model, ev.stand_in_model) {
-                (AdhesionModel::Jkr, _) | (_, Some(AdhesionModel::Jkr)) => "JKR 1.5πγR".to_string(),
-                (AdhesionModel::Dmt, _) | (_, Some(_)) => "DMT 2πγR".to_string(),
-                (AdhesionModel::LennardJones, None) => format!(
-                    "Lennard-Jones sphere {}πγR",
-                    sig(
-                        1.5 * ev.law_asperity_pull_off_force / ev.asperity_pull_off_force,
-                        4
-                    )
-                ),
+            {
+                let law = ev.stand_in_model.unwrap_or(ev.adhesion_model).law();
+                match law.closed_form_pull_off() {
+                    Some(c) => format!("{} {c}πγR", law.label()),
+                    None => format!(
+                        "{} {}πγR",
+                        law.title(),
+                        sig(
+                            1.5 * ev.law_asperity_pull_off_force / ev.asperity_pull_off_force,
+                            4
+                        )
+                    ),
+                }
             },
             si(ev.law_asperity_pull_off_force, "N", 3)
         )),
@@ -1041,30 +1041,37 @@ pub fn text(r: &EvalReport) -> String {
                 verdict_words(o.verdict)
             ));
             line(format!(
-                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where {} is not exact and the Lennard-Jones law is (docs/model.md §11){}",
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where {} is not exact and the {} law is ({}){}",
                 sig_exp(phi, 3),
                 ev.adhesion_model.label(),
+                law.label(),
+                law.law().section(),
                 if o.verdict == st.verdict {
-                    "; both give the same verdict"
+                    "; both give the same verdict".to_string()
                 } else {
-                    "; they DISAGREE: trust the Lennard-Jones verdict"
+                    format!("; they DISAGREE: trust the {} verdict", law.label())
                 }
             ));
-        } else if (0.3..=3.0).contains(&phi)
-            && ev.adhesion_model != crate::model::law::AdhesionModel::LennardJones
-        {
+        } else if let Some(general) = ev.adhesion_model.bracket(phi) {
             line(format!(
-                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where {} is not exact: judge stiction under adhesion_model = \"lennard_jones\" (docs/model.md §11)",
+                "  φ0 = {} lies in the JKR–DMT transition (0.3–3), where {} is not exact: judge stiction under adhesion_model = \"{}\" ({})",
                 sig_exp(phi, 3),
-                ev.adhesion_model.label()
+                ev.adhesion_model.label(),
+                general.as_str(),
+                general.law().section()
             ));
-        } else if phi < 0.3
-            && phi > 0.0
-            && ev.adhesion_model == crate::model::law::AdhesionModel::Jkr
+        } else if let Some(limit) =
+            (phi > 0.0 && phi < TRANSITION_TABOR.0 && phi < ev.adhesion_model.valid_tabor().0)
+                .then(|| AdhesionModel::valid_at(phi).find(|m| !m.law().general()))
+                .flatten()
         {
             line(format!(
-                "  φ0 = {} < 0.3: the DMT law applies, and the JKR verdict above understates adhesion (docs/model.md §7)",
-                sig_exp(phi, 3)
+                "  φ0 = {} < {}: the {} law applies, and the {} verdict above understates adhesion ({})",
+                sig_exp(phi, 3),
+                TRANSITION_TABOR.0,
+                limit.label(),
+                ev.adhesion_model.label(),
+                limit.law().section()
             ));
         }
     }

@@ -186,9 +186,11 @@ pub fn note(n: &Note) -> String {
             stand_in,
             pull_off_error,
         } => {
-            let (side, limit, rest) = match stand_in {
-                crate::model::law::AdhesionModel::Jkr => ("above 5", "JKR's (its large-μ limit)", ""),
-                _ => ("below 0.01", "DMT's with van der Waals attraction (its small-μ limit)", "; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)"),
+            // The closed form that holds above the table (large μ) or below it.
+            let (side, limit, rest) = if stand_in.valid_tabor().1.is_infinite() {
+                ("above 5", "JKR's (its large-μ limit)", "")
+            } else {
+                ("below 0.01", "DMT's with van der Waals attraction (its small-μ limit)", "; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)")
             };
             format!(
                 "Tabor parameter φ0 = {} lies {side}, outside the Lennard-Jones law's table (0.01–5): the numbers are {limit}, whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end{rest}",

@@ -4,6 +4,7 @@
 //! sphere with DMT's contact (small μ) are the limits.
 
 pub(crate) mod elliptic;
+pub mod law;
 pub mod rough;
 pub mod sphere;
 pub mod table;

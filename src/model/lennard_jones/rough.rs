@@ -48,19 +48,7 @@ const TAU_GROWTH: f64 = 1.5;
 /// it); 2 gave the same P̄ to 1e-13 and cost 15 % more.
 const CONTACT_PANEL: f64 = 4.0;
 
-/// The non-contact and contact shares of P̄ and their first two
-/// h-derivatives, each a mantissa: the value is `m e^{-exponent}`.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Shares {
-    /// ∫_{Δ<0} p φ̄ dΔ, and its h-derivatives.
-    pub noncontact: [f64; 3],
-    /// The scale of `noncontact`: κ(−h) = max(−h, 0)²/2.
-    pub noncontact_exponent: f64,
-    /// ∫_0^{Δc} p φ̄ dΔ (elastic contacts), and its h-derivatives.
-    pub elastic: [f64; 3],
-    /// The scale of `elastic`: κ(h) = max(h, 0)²/2.
-    pub elastic_exponent: f64,
-}
+pub use crate::model::integrals::Shares;
 
 /// One node's share of the law: its curve, its weight and its Δc.
 #[derive(Debug, Clone, Copy)]
