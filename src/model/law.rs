@@ -2,24 +2,25 @@
 //!
 //! The evaluator ([`super::Model`]) is built from one [`AsperityLaw`]:
 //!
-//! * [`AsperityLaw::Jkr`] — docs/model.md §3: JKR elastic asperities on the loading
-//!   branch, plastic junctions beyond Δc; surface forces act only inside contacts.
-//!   Its integrals live in `integrals.rs` (elastic quadrature in s = Δ1^{1/4}).
-//! * [`AsperityLaw::Dmt`] — docs/model.md §7: Hertz contact with the DMT adhesive
-//!   offset `-c_0`, Δc = c_h², and attraction of the asperities that are *not* in
-//!   contact, by a Dugdale stress of range Δ_h or by van der Waals forces with
-//!   equilibrium distance z0. Its non-contact term lives in `dmt.rs`.
+//! * [`AsperityLaw::Jkr`] — docs/model.md §3 (`jkr.rs`): JKR elastic asperities
+//!   on the loading branch, plastic junctions beyond Δc; surface forces act only
+//!   inside contacts. Its integrals are `integrals.rs`'s (elastic quadrature in
+//!   s = Δ1^{1/4}).
+//! * [`AsperityLaw::Dmt`] — docs/model.md §7 (`dmt.rs`): Hertz contact with the
+//!   DMT adhesive offset `-c_0`, Δc = c_h², and attraction of the asperities that
+//!   are *not* in contact, by a Dugdale stress of range Δ_h or by van der Waals
+//!   forces with equilibrium distance z0.
+//! * [`AsperityLaw::LennardJones`] — docs/model.md §11 (`lennard_jones/`): the
+//!   self-consistent sphere with a Lennard-Jones surface force, from its loading
+//!   table, valid for every Tabor parameter; outside the table (μ < 0.01, μ > 5)
+//!   its closed-form limits stand in.
 //!
-//! A law contributes (a) the coefficients its contact integrals use, (b) the
-//! elastic–plastic transition, and (c) an optional non-contact load.
-//!
-//! * [`AsperityLaw::LennardJones`] — docs/model.md §11: the self-consistent
-//!   sphere with a Lennard-Jones surface force, from its loading table
-//!   (`lennard_jones/`), valid for every Tabor parameter; outside the table
-//!   (μ < 0.01, μ > 5) its closed-form limits stand in.
-//!
-//! The separation and pull-off searches only see P̄, P̄', P̄'' and the sign of
-//! the load jump.
+//! Each law's module implements [`Law`]: its entry in the registry (names,
+//! options, where it is exact, its words) and what the model asks of it —
+//! (a) the coefficients its contact integrals use or its own integrals,
+//! (b) the elastic–plastic transition, (c) an optional non-contact load.
+//! [`AdhesionModel::law`] is the registry. The separation and pull-off searches
+//! only see P̄, P̄', P̄'' and the sign of the load jump.
 
 use super::coefficients::Coefficients;
 use super::integrals::Tabulated;
