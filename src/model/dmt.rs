@@ -601,7 +601,7 @@ fn hertz_body(quadrature: &Quadrature, h: f64, dc: f64, bounds: &[f64]) -> (f64,
 /// attraction of the asperities out of contact above.
 pub struct Dmt;
 
-impl super::law::Law for Dmt {
+impl super::asperity_law::Law for Dmt {
     fn name(&self) -> &'static str {
         "dmt"
     }
@@ -646,13 +646,13 @@ impl super::law::Law for Dmt {
         &self,
         law: super::law::AsperityLaw,
         c: &super::coefficients::Coefficients,
-    ) -> super::law::Prepared {
+    ) -> super::asperity_law::Prepared {
         let contact = super::coefficients::Coefficients {
             c_a: 0.0,
             c_d: 0.0,
             ..*c
         };
-        super::law::Prepared::closed_form(law, contact, c.c_0)
+        super::asperity_law::Prepared::closed_form(law, contact, c.c_0)
     }
     fn closed_form_attraction(&self, law: super::law::AsperityLaw) -> Option<Attraction> {
         match law {

@@ -12,6 +12,7 @@
 //! bounded amount. Everything else is closed form in erfc/erfcx. Every result is
 //! a mantissa scaled by `e^{κ(h)}`, κ(h) = max(h,0)²/2.
 
+use super::asperity_law::Tabulated;
 use super::capillary::{Capillary, CapillaryShare};
 use super::coefficients::{Coefficients, Transition};
 use super::dmt::{hertz, noncontact, Noncontact};
@@ -26,38 +27,6 @@ use std::sync::Arc;
 /// the contact scale (the non-contact mantissa times e^{κ-E} ≤ e^{300} stays finite;
 /// beyond it the contact share is below e^{-300} of the other).
 const NONCONTACT_GAP_LIMIT: f64 = 300.0;
-
-/// The non-contact and contact shares of P̄ and their first two
-/// h-derivatives, each a mantissa: the value is `m e^{-exponent}`.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Shares {
-    /// ∫_{Δ<0} p φ̄ dΔ, and its h-derivatives.
-    pub noncontact: [f64; 3],
-    /// The scale of `noncontact`: κ(−h) = max(−h, 0)²/2.
-    pub noncontact_exponent: f64,
-    /// ∫_0^{Δc} p φ̄ dΔ (elastic contacts), and its h-derivatives.
-    pub elastic: [f64; 3],
-    /// The scale of `elastic`: κ(h) = max(h, 0)²/2.
-    pub elastic_exponent: f64,
-}
-
-/// A law that integrates its own elastic and non-contact shares over the
-/// summit heights (the Lennard-Jones law, from the table of its single-asperity
-/// curve): the model adds the plastic junctions of each of its curves, the
-/// area, the counts and the capillary load.
-pub trait Tabulated: Send + Sync + std::fmt::Debug {
-    /// The elastic and non-contact shares at h.
-    fn shares(&self, h: f64) -> Shares;
-    /// Each curve's Δc with its weight, the plastic junctions beyond which the
-    /// model adds in closed form.
-    fn plastic_junctions(&self, visit: &mut dyn FnMut(f64, f64));
-    /// The elastic–plastic transition at these coefficients.
-    fn transition(&self, coefficients: &Coefficients) -> Transition;
-    /// One asperity's pull-off in units of πγR (> 0).
-    fn asperity_pull_off(&self) -> f64;
-    /// The law's own type (for its module's accessors).
-    fn as_any(&self) -> &dyn std::any::Any;
-}
 
 /// The model at fixed coefficients and one asperity law: precomputes the
 /// transition once, then evaluates any separation with [`Model::at`].

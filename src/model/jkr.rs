@@ -4,8 +4,9 @@
 //! `integrals.rs` (the elastic quadrature in s = Δ1^{1/4}) with the scene's
 //! coefficients as they are.
 
+use super::asperity_law::{Law, Prepared};
 use super::coefficients::Coefficients;
-use super::law::{AsperityLaw, AttractionKind, Law, Prepared, TRANSITION_TABOR};
+use super::law::{AsperityLaw, AttractionKind, TRANSITION_TABOR};
 use super::warnings::Warning;
 
 /// The JKR law's entry in the registry.

@@ -10,6 +10,7 @@
 
 pub mod asperity;
 pub mod asperity_curve;
+pub mod asperity_law;
 pub mod capillary;
 pub mod coefficients;
 pub(crate) mod dmt;
@@ -23,6 +24,7 @@ pub mod load_curve;
 mod material;
 mod parameter;
 pub mod quadrature;
+mod registry;
 pub mod scaled;
 mod scene;
 pub mod sensitivity;

@@ -50,8 +50,8 @@ fn the_rough_load_with_plastic_junctions_matches_an_adaptive_quadrature() {
                 AsperityLaw::LennardJones { range: z0 },
                 Quadrature::default(),
             );
-            let table =
-                wearopt::model::lennard_jones::law::table_of(&model).expect("a tabulated μ");
+            let table = wearopt::model::lennard_jones::law::table_of(model.tabulated())
+                .expect("a tabulated μ");
             assert!((table.tabor / curve.tabor - 1.0).abs() < 1e-12);
             let dc = model.critical_interference();
             let switch = curve.switch / ell;

@@ -4,9 +4,11 @@
 //! in, JKR above and DMT with van der Waals attraction below.
 
 use super::rough::{self, Grid, RoughLaw, Shares};
+use crate::model::asperity_law::{Law, Prepared, Tabulated};
 use crate::model::coefficients::{Coefficients, Transition};
-use crate::model::integrals::Tabulated;
-use crate::model::law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind, Law, Prepared};
+use crate::model::dmt::Dmt;
+use crate::model::jkr::Jkr;
+use crate::model::law::{AdhesionModel, AsperityLaw, Attraction, AttractionKind};
 use crate::model::warnings::Note;
 use std::sync::Arc;
 
@@ -60,7 +62,7 @@ impl Law for LennardJones {
         let range = law.range();
         // Without adhesion every law is Hertz's (and JKR's path is exact).
         if !c.has_adhesion() {
-            return AsperityLaw::Jkr.law().prepare(AsperityLaw::Jkr, c);
+            return Jkr.prepare(AsperityLaw::Jkr, c);
         }
         match RoughLaw::new(c.c_0, c.c_h, range) {
             Some(table) => Prepared {
@@ -70,12 +72,11 @@ impl Law for LennardJones {
                 tabulated: Some(Arc::new(table.grid())),
             },
             None => {
-                let stand_in = if rough::tabor(c.c_0, range) > 1.0 {
-                    AsperityLaw::Jkr
+                if rough::tabor(c.c_0, range) > 1.0 {
+                    Jkr.prepare(AsperityLaw::Jkr, c)
                 } else {
-                    AsperityLaw::Dmt(Attraction::VanDerWaals { range })
-                };
-                stand_in.law().prepare(stand_in, c)
+                    Dmt.prepare(AsperityLaw::Dmt(Attraction::VanDerWaals { range }), c)
+                }
             }
         }
     }
@@ -127,11 +128,10 @@ impl Tabulated for Grid {
     }
 }
 
-/// The Lennard-Jones table a model integrates (None under the other laws, and
-/// under this one where a closed form stands in).
-pub fn table_of(model: &crate::model::Model) -> Option<&RoughLaw> {
-    model
-        .tabulated()
+/// The Lennard-Jones table among a model's own integrals (`Model::tabulated`;
+/// None under the other laws, and under this one where a closed form stands in).
+pub fn table_of(tabulated: Option<&dyn Tabulated>) -> Option<&RoughLaw> {
+    tabulated
         .and_then(|t| t.as_any().downcast_ref::<Grid>())
         .map(Grid::law)
 }

@@ -48,7 +48,7 @@ const TAU_GROWTH: f64 = 1.5;
 /// it); 2 gave the same P̄ to 1e-13 and cost 15 % more.
 const CONTACT_PANEL: f64 = 4.0;
 
-pub use crate::model::integrals::Shares;
+pub use crate::model::asperity_law::Shares;
 
 /// One node's share of the law: its curve, its weight and its Δc.
 #[derive(Debug, Clone, Copy)]
