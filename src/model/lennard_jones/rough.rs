@@ -27,12 +27,14 @@
 
 use super::table::{curves, Curve};
 use crate::model::gauss;
+use crate::model::special::exp_fast;
 
 /// The half-width in Δ of the weight's range: e^{-u²/2} ≥ e^{-46} inside.
 const REACH: f64 = 9.591_663_046_625_44;
 
 /// The Gauss–Legendre order on each panel (12 on the table's narrow panels).
 const ORDER: usize = 20;
+const CONTACT_ORDER: usize = 12;
 
 /// The widest approach panel in Δ: order 20 integrates the weight over it to
 /// rounding (its Taylor remainder over 4 units is below 1e-30).
@@ -326,7 +328,7 @@ impl RoughLaw {
                 let pieces = (width / CONTACT_PANEL).ceil().max(1.0) as usize;
                 // A table panel much narrower than the weight's scale holds a
                 // polynomial of degree 12 times a nearly constant weight.
-                let rule = gauss::rule(if width <= 0.25 { 12 } else { ORDER });
+                let rule = gauss::rule(if width <= 0.25 { 12 } else { CONTACT_ORDER });
                 for k in 0..pieces {
                     let a = pair[0] + (pair[1] - pair[0]) * k as f64 / pieces as f64;
                     let b = pair[0] + (pair[1] - pair[0]) * (k + 1) as f64 / pieces as f64;
@@ -367,11 +369,112 @@ pub struct Grid {
     /// The law the nodes are laid out for (and that integrates at h itself
     /// where the grid does not reach).
     law: RoughLaw,
-    /// (Δ, the load times the node's weight and the curve's), ascending in Δ:
-    /// the approach part and the contact part below Δ = 0.
-    noncontact: Vec<(f64, f64)>,
-    /// The same for the contact part at Δ ≥ 0 (up to each curve's Δc).
-    contact: Vec<(f64, f64)>,
+    /// Each curve's approach part and contact part below Δ = 0, in the
+    /// order of the law's curves.
+    noncontact: Vec<Nodes>,
+    /// Each curve's contact part at Δ ≥ 0 (up to its Δc).
+    contact: Vec<Nodes>,
+}
+
+/// One curve's quadrature nodes, ascending in Δ (as its panels visit them):
+/// their Δ, and the load times the node's weight and its curve's (two
+/// arrays, so that the loop over a window vectorizes).
+#[derive(Debug, Clone, Default)]
+struct Nodes {
+    interference: Vec<f64>,
+    load: Vec<f64>,
+}
+
+impl Nodes {
+    fn push(&mut self, d: f64, f: f64) {
+        self.interference.push(d);
+        self.load.push(f);
+    }
+
+    fn len(&self) -> usize {
+        self.interference.len()
+    }
+
+    /// Adds [P̄, P̄', P̄''] of the nodes with lo ≤ Δ ≤ hi at h, relative to the
+    /// share's scale (`scaled`: e^{κ} with κ = h²/2; else 1), to `sums`.
+    fn add_sums(&self, sums: &mut [f64; 3], lo: f64, hi: f64, h: f64, scaled: bool) {
+        let first = self.interference.partition_point(|&d| d < lo);
+        let end = self.interference.partition_point(|&d| d <= hi).max(first);
+        let (d, f) = (&self.interference[first..end], &self.load[first..end]);
+        #[cfg(target_arch = "x86_64")]
+        let part = if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2, checked just above.
+            unsafe { window_sums_avx2(d, f, h, scaled) }
+        } else {
+            window_sums(d, f, h, scaled)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let part = window_sums(d, f, h, scaled);
+        for (sum, p) in sums.iter_mut().zip(part) {
+            *sum += p;
+        }
+    }
+}
+
+/// [`window_sums`] compiled for AVX2: the same numbers bit for bit (no fused
+/// multiply–adds, one node per lane, serial sums).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn window_sums_avx2(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
+    window_sums(d, f, h, scaled)
+}
+
+/// Σ g, Σ −g u, Σ g (u² − 1) with g = f φ̄ over nodes at Δ = d, u = h + Δ, in
+/// a fixed order: the log-weights of a chunk, their exponentials (branch-free
+/// [`exp_fast`], which vectorizes), then four partial sums.
+#[inline(always)]
+fn window_sums(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
+    const CHUNK: usize = 64;
+    const LANES: usize = 4;
+    let mut weight = [0.0f64; CHUNK];
+    let mut lanes = [[0.0f64; 3]; LANES];
+    for (d, f) in d.chunks(CHUNK).zip(f.chunks(CHUNK)) {
+        let weight = &mut weight[..d.len()];
+        // Where the share's scale is h²/2 the exponent is −Δ(h + Δ/2), exact
+        // for large |h| ([`RoughLaw::weight`]).
+        if scaled {
+            for (w, &d) in weight.iter_mut().zip(d) {
+                *w = -d * (h + 0.5 * d);
+            }
+        } else {
+            for (w, &d) in weight.iter_mut().zip(d) {
+                *w = -0.5 * (h + d) * (h + d);
+            }
+        }
+        for w in weight.iter_mut() {
+            *w = exp_fast(*w);
+        }
+        // Four partial sums, node i into lane i mod 4 (a fixed order, so the
+        // same numbers on every machine), break the chain of dependent adds.
+        let mut quads = weight
+            .chunks_exact(LANES)
+            .zip(f.chunks_exact(LANES))
+            .zip(d.chunks_exact(LANES));
+        for ((w, f), d) in &mut quads {
+            for lane in 0..LANES {
+                add_moments(&mut lanes[lane], f[lane] * w[lane], h + d[lane]);
+            }
+        }
+        let rest = weight.len() - weight.len() % LANES;
+        for (lane, ((&w, &f), &d)) in weight[rest..]
+            .iter()
+            .zip(&f[rest..])
+            .zip(&d[rest..])
+            .enumerate()
+        {
+            add_moments(&mut lanes[lane], f * w, h + d);
+        }
+    }
+    let mut sums = [0.0; 3];
+    for (k, sum) in sums.iter_mut().enumerate() {
+        *sum = (lanes[0][k] + lanes[1][k]) + (lanes[2][k] + lanes[3][k]);
+    }
+    sums
 }
 
 impl Grid {
@@ -397,7 +500,11 @@ impl Grid {
 
     /// The nodes, non-contact and contact.
     pub fn len(&self) -> usize {
-        self.noncontact.len() + self.contact.len()
+        self.noncontact
+            .iter()
+            .chain(&self.contact)
+            .map(Nodes::len)
+            .sum()
     }
 
     /// True without nodes.
@@ -405,26 +512,20 @@ impl Grid {
         self.len() == 0
     }
 
-    /// The shares at h (which the grid serves: [`Grid::serves`]).
+    /// The shares at h (which the grid serves: [`Grid::serves`]), curve by
+    /// curve in the law's order.
     pub fn at(&self, h: f64) -> Shares {
+        let (lo, hi) = (-h - REACH, -h + REACH);
         let mut out = Shares {
             noncontact_exponent: 0.5 * (-h).max(0.0).powi(2),
             elastic_exponent: 0.5 * h.max(0.0).powi(2),
             ..Shares::default()
         };
-        let (lo, hi) = (-h - REACH, -h + REACH);
-        for (nodes, contact) in [(&self.noncontact, false), (&self.contact, true)] {
-            let first = nodes.partition_point(|n| n.0 < lo);
-            let end = nodes.partition_point(|n| n.0 <= hi);
-            let mut sums = [0.0; 3];
-            for &(d, f) in &nodes[first..end] {
-                add_moments(&mut sums, f * RoughLaw::weight(h, d, contact), h + d);
-            }
-            if contact {
-                out.elastic = sums;
-            } else {
-                out.noncontact = sums;
-            }
+        for nodes in &self.noncontact {
+            nodes.add_sums(&mut out.noncontact, lo, hi, h, h < 0.0);
+        }
+        for nodes in &self.contact {
+            nodes.add_sums(&mut out.elastic, lo, hi, h, h > 0.0);
         }
         out
     }
@@ -436,32 +537,27 @@ impl RoughLaw {
     pub fn grid(&self) -> Grid {
         let (h_lo, h_hi) = GRID_SEPARATIONS;
         let (lo, hi) = (-h_hi - REACH, -h_lo + REACH);
-        let mut grid = Grid {
-            law: *self,
-            noncontact: Vec::new(),
-            contact: Vec::new(),
-        };
+        let (mut noncontact, mut contact) = (Vec::new(), Vec::new());
         for node in self.nodes() {
             let weight = node.weight;
-            self.visit(node, lo, hi, &mut |d, f, contact| {
-                let nodes = if contact {
-                    &mut grid.contact
-                } else {
-                    &mut grid.noncontact
-                };
-                nodes.push((d, weight * f));
+            let (mut below, mut above) = (Nodes::default(), Nodes::default());
+            self.visit(node, lo, hi, &mut |d, f, in_contact| {
+                let nodes = if in_contact { &mut above } else { &mut below };
+                nodes.push(d, weight * f);
             });
+            noncontact.push(below);
+            contact.push(above);
         }
-        // A stable sort: nodes at one Δ keep their curves' order, so the sums
-        // are the same on every machine and thread count.
-        grid.noncontact.sort_by(|a, b| a.0.total_cmp(&b.0));
-        grid.contact.sort_by(|a, b| a.0.total_cmp(&b.0));
-        grid
+        Grid {
+            law: *self,
+            noncontact,
+            contact,
+        }
     }
 }
 
 /// δ̂c of one curve: where P̂_in/â² first reaches `target` = c_h ℓ^{1/2} on
-/// the contact part (bisection; ∞ for c_h = ∞; the switch where the ratio
+/// the contact part (regula falsi; ∞ for c_h = ∞; the switch where the ratio
 /// already exceeds it there).
 pub fn critical_interference(curve: &Curve, target: f64) -> f64 {
     if target.is_infinite() {
@@ -487,15 +583,32 @@ pub fn critical_interference(curve: &Curve, target: f64) -> f64 {
             return f64::INFINITY;
         }
     }
+    // The Illinois variant of regula falsi on the bracket (the ratio is smooth
+    // and increasing there): ~10 evaluations where bisection took ~50; a
+    // bisection step wherever the secant leaves the bracket.
+    let (mut f_lo, mut f_hi) = (ratio(lo) - target, ratio(hi) - target);
+    let mut side = 0;
     for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
+        let mut x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+        if !(x > lo && x < hi) {
+            x = 0.5 * (lo + hi);
+        }
+        if x <= lo || x >= hi || hi - lo <= 4.0 * f64::EPSILON * hi {
             break;
         }
-        if ratio(mid) < target {
-            lo = mid;
+        let f = ratio(x) - target;
+        if f < 0.0 {
+            (lo, f_lo) = (x, f);
+            if side < 0 {
+                f_hi *= 0.5;
+            }
+            side = -1;
         } else {
-            hi = mid;
+            (hi, f_hi) = (x, f);
+            if side > 0 {
+                f_lo *= 0.5;
+            }
+            side = 1;
         }
     }
     0.5 * (lo + hi)
