@@ -54,51 +54,9 @@ fn the_rough_load_with_plastic_junctions_matches_an_adaptive_quadrature() {
                 .expect("a tabulated μ");
             assert!((table.tabor / curve.tabor - 1.0).abs() < 1e-12);
             let dc = model.critical_interference();
-            let switch = curve.switch / ell;
-            let p = |d: f64| {
-                if d >= dc {
-                    c.c_p * d - c.c_0
-                } else {
-                    ell.powf(-1.5) * curve.load(ell * d)
-                }
-            };
             for h in [-1.0f64, 0.5, 2.0, 4.0] {
                 let at = model.at(h);
-                let weight = |d: f64| (-0.5 * (h + d) * (h + d)).exp();
-                let (lo, hi) = (-h - 10.0, -h + 10.0);
-                // [∫ p φ̄, ∫ |p| φ̄, −∫ p (h + Δ) φ̄] over [a, b] in the coordinate
-                // that suits it.
-                let sums = |a: f64, b: f64| -> [f64; 3] {
-                    if a >= b {
-                        return [0.0; 3];
-                    }
-                    let part = |g: &dyn Fn(f64) -> f64| -> f64 {
-                        if b <= switch {
-                            let f = |t: f64| 2.0 * t * g(switch - t * t);
-                            simpson(&f, (switch - b).sqrt(), (switch - a).sqrt(), 1e-12)
-                        } else if a >= switch && a - switch < 1.0 {
-                            let f = |t: f64| 2.0 * t * g(switch + t * t);
-                            simpson(&f, (a - switch).sqrt(), (b - switch).sqrt(), 1e-12)
-                        } else {
-                            simpson(g, a, b, 1e-12)
-                        }
-                    };
-                    [
-                        part(&|d| p(d) * weight(d)),
-                        part(&|d| p(d).abs() * weight(d)),
-                        part(&|d| -p(d) * (h + d) * weight(d)),
-                    ]
-                };
-                let mut cuts = vec![lo, switch, 0.0, dc, hi];
-                cuts.retain(|x| x.is_finite() && *x >= lo && *x <= hi);
-                cuts.sort_by(f64::total_cmp);
-                let mut want = [0.0; 3];
-                for w in cuts.windows(2) {
-                    let s = sums(w[0], w[1]);
-                    for i in 0..3 {
-                        want[i] += s[i];
-                    }
-                }
+                let want = reference_shares(curve, ell, &c, dc, h);
                 let got = at.load().value();
                 let slope = at.dload_dh().value();
                 let e = ((got - want[0]).abs() / want[1]).max((slope - want[2]).abs() / want[1]);
@@ -114,6 +72,152 @@ fn the_rough_load_with_plastic_junctions_matches_an_adaptive_quadrature() {
         }
     }
     eprintln!("worst {worst:e}");
+}
+
+/// [∫ p φ̄, ∫ |p| φ̄, −∫ p (h + Δ) φ̄] over the summits at h for one tabulated
+/// curve at ℓ: p its load (§3 units) up to Δc, c_p Δ − c_0 beyond; adaptive
+/// Simpson to 1e-12 on each piece between the window's ends, the switch, 0 and
+/// Δc, in Δ = switch ∓ t² next to the switch (a square-root end there).
+fn reference_shares(
+    curve: &wearopt::model::lennard_jones::table::Curve,
+    ell: f64,
+    c: &Coefficients,
+    dc: f64,
+    h: f64,
+) -> [f64; 3] {
+    let switch = curve.switch / ell;
+    let p = |d: f64| {
+        if d >= dc {
+            c.c_p * d - c.c_0
+        } else {
+            ell.powf(-1.5) * curve.load(ell * d)
+        }
+    };
+    let weight = |d: f64| (-0.5 * (h + d) * (h + d)).exp();
+    let (lo, hi) = (-h - 10.0, -h + 10.0);
+    let sums = |a: f64, b: f64| -> [f64; 3] {
+        if a >= b {
+            return [0.0; 3];
+        }
+        let part = |g: &dyn Fn(f64) -> f64| -> f64 {
+            if b <= switch {
+                let f = |t: f64| 2.0 * t * g(switch - t * t);
+                simpson(&f, (switch - b).sqrt(), (switch - a).sqrt(), 1e-12)
+            } else if a >= switch && a - switch < 1.0 {
+                let f = |t: f64| 2.0 * t * g(switch + t * t);
+                simpson(&f, (a - switch).sqrt(), (b - switch).sqrt(), 1e-12)
+            } else {
+                simpson(g, a, b, 1e-12)
+            }
+        };
+        [
+            part(&|d| p(d) * weight(d)),
+            part(&|d| p(d).abs() * weight(d)),
+            part(&|d| -p(d) * (h + d) * weight(d)),
+        ]
+    };
+    let mut cuts = vec![lo, switch, 0.0, dc, hi];
+    cuts.retain(|x| x.is_finite() && *x >= lo && *x <= hi);
+    cuts.sort_by(f64::total_cmp);
+    let mut want = [0.0; 3];
+    for w in cuts.windows(2) {
+        let s = sums(w[0], w[1]);
+        for i in 0..3 {
+            want[i] += s[i];
+        }
+    }
+    want
+}
+
+/// With a meniscus (docs/model.md §9) the Lennard-Jones law's pull-off (the
+/// deepest minimum of P̄) and unloaded separation (P̄ = 0) against the
+/// independent quadrature above plus the capillary load (its closed form,
+/// itself checked against the 40-digit table in capillary.rs), its extrema
+/// found by bisection on the reference's own P̄' and P̄: at a tabulated μ on
+/// a stiff and a soft scene, a sub-σ meniscus and one reaching 3σ. Measured:
+/// the pull-off's separation 2.8e-14, its load 2.1e-13, h0 1.3e-13 (the
+/// issue asks 1e-10). Γ is not checked here: under this law it is the
+/// quadrature over h itself (`work::work_by_separation`).
+#[test]
+fn with_a_meniscus_the_extrema_match_an_independent_quadrature() {
+    use wearopt::model::{landscape, pull_off_of, solve_separation, Capillary, SeparationOutcome};
+    let mut worst = [0.0f64; 3];
+    let scenes = [
+        (17usize, 30.0f64, 6.0f64, (0.5, 0.04)),
+        (30, 3.0, f64::INFINITY, (3.0, 0.5)),
+    ];
+    for (index, ell, c_h, (k, f)) in scenes {
+        let curve = &curves()[index];
+        let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
+        let cap = Capillary {
+            range: k,
+            wetting: f,
+            flooded: 1.3,
+        };
+        let model = Model::with_law(
+            c,
+            AsperityLaw::LennardJones {
+                range: spacing(curve.tabor) / ell,
+            },
+            Quadrature::default(),
+        )
+        .with_capillary(Some(cap));
+        let dc = model.critical_interference();
+        // The reference P̄ and P̄' at h.
+        let reference = |h: f64| {
+            let s = reference_shares(curve, ell, &c, dc, h);
+            let m = cap.at(h);
+            let scale = (-m.exponent).exp();
+            (s[0] + m.load * scale, s[2] + m.dload_dh * scale)
+        };
+        // The root of g in [a, b] (a sign change) by bisection to the last bit.
+        let bisect = |g: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64| {
+            let ga = g(a);
+            assert!(ga * g(b) < 0.0, "no sign change in [{a}, {b}]");
+            loop {
+                let m = 0.5 * (a + b);
+                if m <= a || m >= b {
+                    return m;
+                }
+                if (g(m) < 0.0) == (ga < 0.0) {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+        };
+        let po = pull_off_of(&landscape(&model)).expect("a minimum");
+        let h_min = bisect(
+            &|h| reference(h).1,
+            po.separation - 0.05,
+            po.separation + 0.05,
+        );
+        let p_min = reference(h_min).0;
+        let h0 = match solve_separation(&model, 0.0) {
+            SeparationOutcome::Contact { separation, .. } => separation,
+            other => panic!("μ={} ℓ={ell}: {other:?}", curve.tabor),
+        };
+        let h0_ref = bisect(&|h| reference(h).0, h0 - 0.05, h0 + 0.05);
+        let errors = [
+            (po.separation - h_min).abs() / h_min.abs(),
+            (po.load.value() - p_min).abs() / p_min.abs(),
+            (h0 - h0_ref).abs() / h0_ref.abs(),
+        ];
+        assert!(
+            errors[0] < 1e-11 && errors[1] < 1e-11 && errors[2] < 1e-11,
+            "μ={} ℓ={ell}: pull-off at {} ({h_min}), load {} ({p_min}), h0 {h0} ({h0_ref})",
+            curve.tabor,
+            po.separation,
+            po.load.value()
+        );
+        for (w, e) in worst.iter_mut().zip(errors) {
+            *w = w.max(e);
+        }
+    }
+    eprintln!(
+        "worst h_min, P_min, h0: {:e} {:e} {:e}",
+        worst[0], worst[1], worst[2]
+    );
 }
 
 /// One summit's pull-off from the table (its curves' minima, interpolated in
