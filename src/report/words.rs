@@ -103,13 +103,21 @@ pub fn warning(w: &Warning) -> String {
             sig_exp(*real_area_fraction, 3)
         ),
         Warning::RealAreaExceedsNominal { real_area_fraction } => format!(
-            "the real area would be {}× the nominal area, which is impossible: the load is far beyond what this rough surface can carry as separate asperity contacts (status out_of_range); check the load, nominal area and hardness",
+            "the real area would be {}× the nominal area, which is impossible: the load is {} what this rough surface can carry as separate asperity contacts (status out_of_range); check the load, nominal area and hardness",
             // Enough digits to show it above 1 (a search held at A_r ≤ A_n
             // can end a hair beyond it: 1.000003×, not "1.00×").
             (3..=15)
                 .map(|d| sig_exp(*real_area_fraction, d))
                 .find(|t| t.parse::<f64>().is_ok_and(|v| v > 1.0))
-                .unwrap_or_else(|| sig_exp(*real_area_fraction, 3))
+                .unwrap_or_else(|| sig_exp(*real_area_fraction, 3)),
+            // A hair past A_n is the limit reached, not a load far beyond it.
+            if *real_area_fraction < 1.1 {
+                "at the limit of"
+            } else if *real_area_fraction < 2.0 {
+                "beyond"
+            } else {
+                "far beyond"
+            }
         ),
         Warning::FewContacts { contact_count } => format!(
             "only {} asperities are expected in contact (fewer than 10): the Gaussian statistics of the model do not hold; enlarge the nominal area or check the asperity density",
@@ -315,6 +323,20 @@ pub fn real_area_scale_note(scale: f64) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_real_area_past_the_nominal_one_is_worded_by_how_far() {
+        let words = |f: f64| {
+            warning(&Warning::RealAreaExceedsNominal {
+                real_area_fraction: f,
+            })
+        };
+        let hair = words(1.000003);
+        assert!(hair.contains("1.000003× the nominal area"), "{hair}");
+        assert!(hair.contains("the load is at the limit of what"), "{hair}");
+        assert!(words(1.5).contains("the load is beyond what"));
+        assert!(words(40.0).contains("the load is far beyond what"));
+    }
 
     #[test]
     fn input_notes_are_worded_with_units() {
