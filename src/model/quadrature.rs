@@ -67,7 +67,7 @@ impl Quadrature {
         order: usize,
         log_weight_step: f64,
         log_weight_cut: f64,
-    ) -> Result<Self, super::InputError> {
+    ) -> Result<Self, super::scene::InputError> {
         let q = Quadrature {
             order,
             log_weight_step,
@@ -81,7 +81,7 @@ impl Quadrature {
     /// in [10, 200], and `log_weight_step` giving 1 to 31 panels per side
     /// (`log_weight_cut / log_weight_step` in [1, 31]: at most
     /// [`Quadrature::MAX_PANELS`] breakpoints).
-    pub fn check(&self) -> Result<(), super::InputError> {
+    pub fn check(&self) -> Result<(), super::scene::InputError> {
         use super::scene::check;
         check(
             "order",

@@ -54,7 +54,7 @@ pub enum SensitivityGap {
 }
 
 /// The elasticities of the wear rate with respect to E1, H, γ, σ and R.
-pub fn sensitivities(scene: &Scene, quadrature: super::Quadrature) -> Vec<Sensitivity> {
+pub fn sensitivities(scene: &Scene, quadrature: super::quadrature::Quadrature) -> Vec<Sensitivity> {
     let options = EvaluationOptions {
         pull_off: false,
         quadrature,

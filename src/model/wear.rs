@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use super::capillary::{Capillary, Environment};
+use super::coefficients::Coefficients;
 use super::integrals::Model;
 use super::law::{AdhesionModel, AsperityLaw, AttractionKind};
 use super::quadrature::Quadrature;
@@ -16,7 +17,6 @@ use super::separation::{
 };
 use super::special::SQRT_TWO_PI;
 use super::warnings::{self, Note, Warning};
-use super::Coefficients;
 
 /// What an evaluation computes beyond the separation and areas.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -428,7 +428,7 @@ fn environment_of(scene: &Scene) -> Option<Environment> {
 
 /// The non-dimensional model of a scene: its asperity law, with the capillary term
 /// of docs/model.md §10 where its environment condenses a meniscus.
-pub fn model_of(scene: &Scene, quadrature: super::Quadrature) -> Model {
+pub fn model_of(scene: &Scene, quadrature: super::quadrature::Quadrature) -> Model {
     let law = AsperityLaw::of(
         scene.adhesion_model,
         scene.attraction,
