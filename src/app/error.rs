@@ -233,14 +233,14 @@ impl AppError {
                 format!("{} (element {index})", error.message(vocabulary))
             }
             AppError::AttractionNotTaken => {
-                let (takes, default) = (attraction_law().as_str(), AdhesionModel::default().as_str());
+                let (takes, default) = (AdhesionModel::taking_attraction().as_str(), AdhesionModel::default().as_str());
                 match vocabulary {
                     Vocabulary::Flags => format!("--attraction and --attraction-range apply to --adhesion-model {takes} only (the default is {default})"),
                     Vocabulary::Keywords => format!("attraction and attraction_range apply to adhesion_model=\"{takes}\" only (the default is \"{default}\")"),
                 }
             }
             AppError::AttractionRefused { law } => {
-                let (takes, name) = (attraction_law().as_str(), law.as_str());
+                let (takes, name) = (AdhesionModel::taking_attraction().as_str(), law.as_str());
                 match vocabulary {
                     Vocabulary::Flags => format!("--attraction applies to --adhesion-model {takes} only: the {name} law's attraction is its own (give its range with --attraction-range Z0/σ)"),
                     Vocabulary::Keywords => format!("attraction applies to adhesion_model=\"{takes}\" only: the \"{name}\" law's attraction is its own (give its range with attraction_range = Z0/σ)"),
@@ -372,12 +372,4 @@ impl From<CalibrationError> for AppError {
     fn from(e: CalibrationError) -> Self {
         AppError::Calibration(e)
     }
-}
-
-/// The law that takes the `attraction` option (DMT).
-fn attraction_law() -> AdhesionModel {
-    AdhesionModel::ALL
-        .into_iter()
-        .find(|m| m.takes_attraction())
-        .unwrap_or_default()
 }

@@ -59,6 +59,9 @@ pub struct Model {
     /// The law whose integrals are taken: `law` itself, except where a
     /// closed-form limit stands in for it (see [`Model::stand_in`]).
     effective: AsperityLaw,
+    /// The attraction of asperities out of contact that the effective law
+    /// adds in closed form (DMT's), read from the law once.
+    attraction: Option<Attraction>,
     /// A law's own rough-surface integrals (the Lennard-Jones law's table and
     /// its quadrature nodes over the separations most evaluations ask for),
     /// built once with the model (shared by its clones).
@@ -296,6 +299,10 @@ impl Model {
             s_touch: contact.c_d.cbrt(),
             c_d_cubed: contact.c_d.cbrt().powi(3),
             capillary: None,
+            attraction: prepared
+                .effective
+                .law()
+                .closed_form_attraction(prepared.effective),
             effective: prepared.effective,
             tabulated: prepared.tabulated,
         }
@@ -305,6 +312,12 @@ impl Model {
     /// that stands in for it ([`Model::stand_in`]).
     pub fn effective_law(&self) -> AsperityLaw {
         self.effective
+    }
+
+    /// The attraction of asperities out of contact that the model adds in
+    /// closed form (DMT's; None under the other laws).
+    pub fn closed_form_attraction(&self) -> Option<Attraction> {
+        self.attraction
     }
 
     /// The law's own integrals where it takes them (None for the closed-form
@@ -435,7 +448,7 @@ impl Model {
         if let Some(c) = &self.capillary {
             out.capillary = c.at(h);
         }
-        if let Some(attraction) = self.effective.law().closed_form_attraction(self.effective) {
+        if let Some(attraction) = self.attraction {
             let n: Noncontact = noncontact(attraction, self.coefficients.c_0, h);
             out.load_noncontact = n.load;
             out.dload_dh_noncontact = n.dload_dh;

@@ -58,6 +58,14 @@ impl AdhesionModel {
         self.law().valid_tabor()
     }
 
+    /// The law that takes an attraction (the `attraction` key: DMT).
+    pub fn taking_attraction() -> AdhesionModel {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.takes_attraction())
+            .unwrap_or_default()
+    }
+
     /// The laws exact at φ0 (the registry's order).
     pub fn valid_at(tabor: f64) -> impl Iterator<Item = AdhesionModel> {
         Self::ALL.into_iter().filter(move |m| {

@@ -285,11 +285,7 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
     }
     // The attraction on Δ < 0 under DMT.
     let c_0 = model.coefficients.c_0;
-    let effective = model.effective_law();
-    let attraction = effective
-        .law()
-        .closed_form_attraction(effective)
-        .filter(|_| c_0 > 0.0);
+    let attraction = model.closed_form_attraction().filter(|_| c_0 > 0.0);
     // z0 (van der Waals) or Δ_h (Dugdale).
     let reach = attraction.map_or(0.0, |a| a.range());
     match attraction {

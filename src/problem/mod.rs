@@ -865,10 +865,7 @@ impl Problem {
         let attraction = match &i.attraction {
             None => AttractionKind::default(),
             Some(w) if !adhesion_model.takes_attraction() => {
-                let takes = AdhesionModel::ALL
-                    .into_iter()
-                    .find(|m| m.takes_attraction())
-                    .unwrap_or_default();
+                let takes = AdhesionModel::taking_attraction();
                 return Err(r.invalid(
                     "interface.attraction",
                     &w.span(),

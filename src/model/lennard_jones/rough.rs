@@ -225,14 +225,9 @@ impl RoughLaw {
     /// The log-weight relative to a share's scale, and u = h + Δ.
     #[inline]
     fn weight(h: f64, d: f64, contact: bool) -> f64 {
-        // Contact shares scale by κ(h), non-contact ones by κ(−h): where the
-        // scale is h²/2 the exponent is −Δ(h + Δ/2), exact for large |h|.
+        // Contact shares scale by κ(h), non-contact ones by κ(−h).
         let scaled = if contact { h > 0.0 } else { h < 0.0 };
-        if scaled {
-            (-d * (h + 0.5 * d)).exp()
-        } else {
-            (-0.5 * (h + d) * (h + d)).exp()
-        }
+        log_weight(h, d, scaled).exp()
     }
 
     fn node_at(&self, node: &Node, h: f64) -> Shares {
@@ -344,6 +339,18 @@ impl RoughLaw {
     }
 }
 
+/// The log of φ̄(h + Δ) = e^{−(h+Δ)²/2} relative to a share's scale: e^{κ}
+/// with κ = h²/2 where `scaled` (the exponent is then −Δ(h + Δ/2), exact for
+/// large |h|), else 1.
+#[inline(always)]
+fn log_weight(h: f64, d: f64, scaled: bool) -> f64 {
+    if scaled {
+        -d * (h + 0.5 * d)
+    } else {
+        -0.5 * (h + d) * (h + d)
+    }
+}
+
 /// Adds one node's g = f φ̄ to a share's [P̄, P̄', P̄''] at u = h + Δ
 /// (φ̄' = −u φ̄, φ̄'' = (u² − 1) φ̄).
 #[inline]
@@ -439,15 +446,14 @@ fn window_sums(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
     let mut lanes = [[0.0f64; 3]; LANES];
     for (d, f) in d.chunks(CHUNK).zip(f.chunks(CHUNK)) {
         let weight = &mut weight[..d.len()];
-        // Where the share's scale is h²/2 the exponent is −Δ(h + Δ/2), exact
-        // for large |h| ([`RoughLaw::weight`]).
+        // One loop per scale, so that neither branches.
         if scaled {
             for (w, &d) in weight.iter_mut().zip(d) {
-                *w = -d * (h + 0.5 * d);
+                *w = log_weight(h, d, true);
             }
         } else {
             for (w, &d) in weight.iter_mut().zip(d) {
-                *w = -0.5 * (h + d) * (h + d);
+                *w = log_weight(h, d, false);
             }
         }
         for w in weight.iter_mut() {
