@@ -204,8 +204,25 @@ fn nondimensional_lennard_jones(c: &mut Criterion) {
                 b.iter(|| black_box(model.at(black_box(h))))
             });
         }
+        // Per scene: each curve's layout (cached), its weight and the panel
+        // its Δc cuts.
         g.bench_function(format!("{name} build the grid"), |b| {
             b.iter(|| black_box(law.grid()))
+        });
+        // Once per process and scale: one curve's nodes laid out afresh.
+        let index = law.curves().next().map_or(0, |(c, _, _)| {
+            wearopt::model::lennard_jones::table::curves()
+                .iter()
+                .position(|d| std::ptr::eq(c, d))
+                .unwrap_or(0)
+        });
+        g.bench_function(format!("{name} lay out one curve's nodes (once)"), |b| {
+            b.iter(|| {
+                black_box(wearopt::model::lennard_jones::rough::lay_out_uncached(
+                    index,
+                    black_box(law.ell),
+                ))
+            })
         });
     }
     g.finish();

@@ -25,6 +25,8 @@
 //! inside the contact and a² = Rδ1: §3's cubic. Under DMT the adhesion acts
 //! outside and P_in is Hertz's, a² = Rδ: Δc = c_h².
 
+use std::sync::OnceLock;
+
 use super::table::{curves, Curve};
 use crate::model::gauss;
 use crate::model::special::exp_fast;
@@ -244,98 +246,123 @@ impl RoughLaw {
     }
 
     /// Visits the quadrature nodes of one curve's summits with lo ≤ Δ ≤ hi
-    /// and Δ ≤ Δc (whole panels from anchors that do not depend on the
-    /// window's ends but its lower one): `visit(Δ, f, contact)`, f the load
-    /// times the node's weight in Δ (the Gaussian weight left out), `contact`
-    /// for the contact part at Δ ≥ 0.
+    /// and Δ ≤ Δc ([`visit_curve`] at the scene's ℓ).
     fn visit(&self, node: &Node, lo: f64, hi: f64, visit: &mut dyn FnMut(f64, f64, bool)) {
-        let c = node.curve;
-        let ell = self.ell;
-        let scale = ell.powf(-1.5);
-        let switch = c.switch / ell;
-        let rule = gauss::rule(ORDER);
-        // The approach part, in τ.
-        let top = hi.min(switch);
-        if lo < top {
-            let mut d0 = lo;
-            let mut t0 = c.tau_at(ell * d0);
-            while d0 < top {
-                // At most APPROACH_PANEL wide in Δ and TAU_GROWTH long in τ
-                // (where δ̂ ∝ −τ⁻² bends, near the switch at large ℓ).
-                let (mut d1, mut t1) = ((d0 + APPROACH_PANEL).min(top), f64::NAN);
-                let t_max = TAU_GROWTH * t0;
-                if t_max < c.tau_end() {
-                    let d_max = c.approach_load(t_max).0 / ell;
-                    if d_max < d1 {
-                        (d1, t1) = (d_max, t_max);
-                    }
+        visit_curve(node.curve, self.ell, node.critical, lo, hi, visit);
+    }
+}
+
+/// Visits the quadrature nodes of one curve's summits with lo ≤ Δ ≤ hi and
+/// Δ ≤ `critical`, in Δ = δ̂/ℓ (whole panels from anchors that do not depend
+/// on the window's ends but its lower one): `visit(Δ, f, contact)`, f the
+/// load ℓ^{-3/2} P̂ times the node's weight in Δ (the Gaussian weight left
+/// out), `contact` for the contact part at Δ ≥ 0. Ascending in Δ.
+fn visit_curve(
+    c: &Curve,
+    ell: f64,
+    critical: f64,
+    lo: f64,
+    hi: f64,
+    visit: &mut dyn FnMut(f64, f64, bool),
+) {
+    let scale = ell.powf(-1.5);
+    let switch = c.switch / ell;
+    let rule = gauss::rule(ORDER);
+    // The approach part, in τ.
+    let top = hi.min(switch);
+    if lo < top {
+        let mut d0 = lo;
+        let mut t0 = c.tau_at(ell * d0);
+        while d0 < top {
+            // At most APPROACH_PANEL wide in Δ and TAU_GROWTH long in τ
+            // (where δ̂ ∝ −τ⁻² bends, near the switch at large ℓ).
+            let (mut d1, mut t1) = ((d0 + APPROACH_PANEL).min(top), f64::NAN);
+            let t_max = TAU_GROWTH * t0;
+            if t_max < c.tau_end() {
+                let d_max = c.approach_load(t_max).0 / ell;
+                if d_max < d1 {
+                    (d1, t1) = (d_max, t_max);
                 }
-                if t1.is_nan() {
-                    t1 = if d1 == switch {
-                        c.tau_end()
-                    } else {
-                        c.tau_at(ell * d1)
-                    };
-                }
-                let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
-                let mut taus = [0.0; ORDER];
-                for (t, x) in taus.iter_mut().zip(&rule.nodes) {
-                    *t = mid + half * x;
-                }
-                let loads = c.approach_loads(&taus);
-                for (&(interference, slope, load), w) in loads.iter().zip(&rule.weights) {
-                    visit(
-                        interference / ell,
-                        scale * load * slope / ell * w * half,
-                        false,
-                    );
-                }
-                d0 = d1;
-                t0 = t1;
             }
+            if t1.is_nan() {
+                t1 = if d1 == switch {
+                    c.tau_end()
+                } else {
+                    c.tau_at(ell * d1)
+                };
+            }
+            let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
+            let mut taus = [0.0; ORDER];
+            for (t, x) in taus.iter_mut().zip(&rule.nodes) {
+                *t = mid + half * x;
+            }
+            let loads = c.approach_loads(&taus);
+            for (&(interference, slope, load), w) in loads.iter().zip(&rule.weights) {
+                visit(
+                    interference / ell,
+                    scale * load * slope / ell * w * half,
+                    false,
+                );
+            }
+            d0 = d1;
+            t0 = t1;
         }
-        // The contact part from the switch to Δc, on panels that keep the
-        // table's ends, 0 and Δc, none wider than CONTACT_PANEL.
-        let end = hi.min(node.critical);
-        let start = lo.max(switch);
-        if start < end {
-            // Beyond δ̂_max the tail's branch point C lies just behind: panels
-            // there double in their distance from it.
-            let branch = c.tail_branch() / ell;
-            let mut tail = Vec::new();
-            let mut cut = c.max_interference() / ell;
-            while cut < end && cut > branch {
-                cut = branch + 2.0 * (cut - branch);
-                tail.push(cut);
-            }
-            let mut cuts: Vec<f64> = c
-                .breaks()
-                .iter()
-                .map(|b| b / ell)
-                .chain(tail)
-                .chain([0.0, start, end])
-                .filter(|&d| d >= start && d <= end)
-                .collect();
-            cuts.sort_by(f64::total_cmp);
-            cuts.dedup();
-            for pair in cuts.windows(2) {
-                let width = pair[1] - pair[0];
-                let pieces = (width / CONTACT_PANEL).ceil().max(1.0) as usize;
-                // A table panel much narrower than the weight's scale holds a
-                // polynomial of degree 12 times a nearly constant weight.
-                let rule = gauss::rule(if width <= 0.25 { 12 } else { CONTACT_ORDER });
-                for k in 0..pieces {
-                    let a = pair[0] + (pair[1] - pair[0]) * k as f64 / pieces as f64;
-                    let b = pair[0] + (pair[1] - pair[0]) * (k + 1) as f64 / pieces as f64;
-                    let contact = a >= 0.0;
-                    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-                    for (x, w) in rule.nodes.iter().zip(&rule.weights) {
-                        let d = mid + half * x;
-                        visit(d, scale * c.contact_load(ell * d) * w * half, contact);
-                    }
-                }
-            }
+    }
+    // The contact part from the switch to Δc.
+    for (a, b) in contact_pieces(c, ell, lo.max(switch), hi.min(critical)) {
+        visit_piece(c, ell, a, b, &mut |d, f| visit(d, f, a >= 0.0));
+    }
+}
+
+/// The panels of one curve's contact part over start ≤ Δ ≤ end (Δ = δ̂/ℓ):
+/// they keep the table's own panel ends and Δ = 0, none wider than
+/// CONTACT_PANEL, and beyond δ̂_max double in their distance from the tail's
+/// branch point C. Ascending.
+fn contact_pieces(c: &Curve, ell: f64, start: f64, end: f64) -> Vec<(f64, f64)> {
+    let mut pieces = Vec::new();
+    if start >= end {
+        return pieces;
+    }
+    // Beyond δ̂_max the tail's branch point C lies just behind: panels
+    // there double in their distance from it.
+    let branch = c.tail_branch() / ell;
+    let mut tail = Vec::new();
+    let mut cut = c.max_interference() / ell;
+    while cut < end && cut > branch {
+        cut = branch + 2.0 * (cut - branch);
+        tail.push(cut);
+    }
+    let mut cuts: Vec<f64> = c
+        .breaks()
+        .iter()
+        .map(|b| b / ell)
+        .chain(tail)
+        .chain([0.0, start, end])
+        .filter(|&d| d >= start && d <= end)
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    for pair in cuts.windows(2) {
+        let width = pair[1] - pair[0];
+        let count = (width / CONTACT_PANEL).ceil().max(1.0) as usize;
+        for k in 0..count {
+            let a = pair[0] + width * k as f64 / count as f64;
+            let b = pair[0] + width * (k + 1) as f64 / count as f64;
+            pieces.push((a, b));
         }
+    }
+    pieces
+}
+
+/// The CONTACT_ORDER Gauss–Legendre nodes of one contact panel a ≤ Δ ≤ b:
+/// `visit(Δ, f)`, f as [`visit_curve`]'s.
+fn visit_piece(c: &Curve, ell: f64, a: f64, b: f64, visit: &mut dyn FnMut(f64, f64)) {
+    let scale = ell.powf(-1.5);
+    let rule = gauss::rule(CONTACT_ORDER);
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    for (x, w) in rule.nodes.iter().zip(&rule.weights) {
+        let d = mid + half * x;
+        visit(d, scale * c.contact_load(ell * d) * w * half);
     }
 }
 
@@ -370,26 +397,131 @@ fn add_moments(share: &mut [f64; 3], g: f64, u: f64) {
 pub const GRID_SEPARATIONS: (f64, f64) = (-6.0, 16.0);
 
 /// One scene's quadrature nodes over every summit the separations of
-/// [`GRID_SEPARATIONS`] weigh, with their loads: built once with the law
-/// ([`RoughLaw::grid`]), then the shares at any such h are sums of a
-/// Gaussian over them, with no table to evaluate. The nodes are those of
-/// [`RoughLaw::at`]'s panels, laid out from the grid's ends instead of the
-/// window's.
+/// [`GRID_SEPARATIONS`] weigh, with their loads: then the shares at any such h
+/// are sums of a Gaussian over them, with no table to evaluate.
+///
+/// The nodes do not depend on the scene but through ℓ, and through it only
+/// as a scale: each curve's nodes are laid out once per process in
+/// δ̂ = ℓΔ for the scale s = 2^{k/4} just below ℓ (a layout: [`RoughLaw::at`]'s
+/// panels at ℓ = s, over a range wide enough for any ℓ up to 2^{1/4} s), so that
+/// in the scene's Δ every panel is as narrow as `at`'s rules ask and the range
+/// covers the grid's. A scene's grid is then each curve's layout, the stretch
+/// s/ℓ, and the panel its Δc cuts (whose nodes it lays out itself).
 #[derive(Debug, Clone)]
 pub struct Grid {
     /// The law the nodes are laid out for (and that integrates at h itself
     /// where the grid does not reach).
     law: RoughLaw,
-    /// Each curve's approach part and contact part below Δ = 0, in the
-    /// order of the law's curves.
-    noncontact: Vec<Nodes>,
-    /// Each curve's contact part at Δ ≥ 0 (up to its Δc).
-    contact: Vec<Nodes>,
+    /// Each curve in the law's order (empty where ℓ lies beyond the layouts'
+    /// scales: the law integrates at h itself).
+    curves: Vec<GridCurve>,
+}
+
+/// One curve of a scene's [`Grid`].
+#[derive(Debug, Clone)]
+struct GridCurve {
+    layout: &'static Layout,
+    /// s/ℓ: the scene's Δ is `stretch` times the layout's.
+    stretch: f64,
+    /// The curve's weight times stretch^{5/2} (the layout's loads are
+    /// s^{-5/2} P̂ dδ̂, the scene's ℓ^{-5/2} P̂ dδ̂).
+    factor: f64,
+    /// The layout's contact nodes kept (the panels wholly below Δc).
+    kept: usize,
+    /// The nodes of the panel Δc cuts, from its lower end to Δc (layout units).
+    cut: Nodes,
+}
+
+/// One curve's quadrature nodes for the scale s ([`Grid`]), in Δ' = δ̂/s.
+#[derive(Debug)]
+struct Layout {
+    /// The approach part and the contact part below Δ' = 0.
+    noncontact: Nodes,
+    /// The contact part at Δ' ≥ 0, CONTACT_ORDER nodes per panel.
+    contact: Nodes,
+    /// The contact panels at Δ' ≥ 0, in order.
+    pieces: Vec<(f64, f64)>,
+}
+
+/// The layouts' scales s = 2^{k/4}, k = LEVELS.0 … LEVELS.1: ℓ from 2.4e-4 to
+/// 2.7e8 (ℓ = (θ/π)^{2/3}: θ from 1e-5 to 1.4e13).
+const LEVELS: (i32, i32) = (-48, 112);
+
+/// The layout of `curves()[index]` at level k (built once, on first use).
+fn layout(index: usize, level: i32) -> &'static Layout {
+    static CACHE: OnceLock<Vec<OnceLock<Box<Layout>>>> = OnceLock::new();
+    let count = (LEVELS.1 - LEVELS.0 + 1) as usize;
+    let cache = CACHE.get_or_init(|| {
+        (0..curves().len() * count)
+            .map(|_| OnceLock::new())
+            .collect()
+    });
+    cache[index * count + (level - LEVELS.0) as usize]
+        .get_or_init(|| Box::new(Layout::new(&curves()[index], level_scale(level))))
+}
+
+/// Lays out the nodes of `curves()[index]` for the scale just below ℓ afresh,
+/// without the cache, and counts them (what a scene's first use of that
+/// curve and scale costs, once per process: `cargo bench --bench evaluator`).
+#[doc(hidden)]
+pub fn lay_out_uncached(index: usize, ell: f64) -> usize {
+    level_of(ell).map_or(0, |level| {
+        let layout = Layout::new(&curves()[index], level_scale(level));
+        layout.noncontact.len() + layout.contact.len()
+    })
+}
+
+/// s = 2^{k/4}.
+fn level_scale(level: i32) -> f64 {
+    (0.25 * level as f64).exp2()
+}
+
+/// The level whose scale is the largest at or below ℓ; None beyond LEVELS.
+fn level_of(ell: f64) -> Option<i32> {
+    let mut level = (4.0 * ell.log2()).floor();
+    if !(level >= LEVELS.0 as f64 && level <= LEVELS.1 as f64) {
+        return None;
+    }
+    if level_scale(level as i32) > ell {
+        level -= 1.0;
+    }
+    (level >= LEVELS.0 as f64).then_some(level as i32)
+}
+
+impl Layout {
+    /// The nodes at ℓ = s over every summit that separations in
+    /// [`GRID_SEPARATIONS`] weigh for any ℓ in [s, 2^{1/4} s).
+    fn new(curve: &Curve, s: f64) -> Layout {
+        let (h_lo, h_hi) = GRID_SEPARATIONS;
+        // In the layout's Δ' = Δ ℓ/s the scene's range stretches by up to 2^{1/4}.
+        let wider = 2f64.powf(0.25) * (1.0 + 1e-9);
+        let (lo, hi) = ((-h_hi - REACH) * wider, (-h_lo + REACH) * wider);
+        let (mut noncontact, mut contact) = (Nodes::default(), Nodes::default());
+        visit_curve(curve, s, f64::INFINITY, lo, hi, &mut |d, f, in_contact| {
+            let nodes = if in_contact {
+                &mut contact
+            } else {
+                &mut noncontact
+            };
+            nodes.push(d, f);
+        });
+        let switch = curve.switch / s;
+        let pieces: Vec<(f64, f64)> = contact_pieces(curve, s, lo.max(switch), hi)
+            .into_iter()
+            .filter(|&(a, _)| a >= 0.0)
+            .collect();
+        debug_assert_eq!(pieces.len() * CONTACT_ORDER, contact.len());
+        Layout {
+            noncontact,
+            contact,
+            pieces,
+        }
+    }
 }
 
 /// One curve's quadrature nodes, ascending in Δ (as its panels visit them):
-/// their Δ, and the load times the node's weight and its curve's (two
-/// arrays, so that the loop over a window vectorizes).
+/// their Δ, and the load times the node's weight (two arrays, so that the
+/// loop over a window vectorizes).
 #[derive(Debug, Clone, Default)]
 struct Nodes {
     interference: Vec<f64>,
@@ -406,24 +538,20 @@ impl Nodes {
         self.interference.len()
     }
 
-    /// Adds [P̄, P̄', P̄''] of the nodes with lo ≤ Δ ≤ hi at h, relative to the
-    /// share's scale (`scaled`: e^{κ} with κ = h²/2; else 1), to `sums`.
-    fn add_sums(&self, sums: &mut [f64; 3], lo: f64, hi: f64, h: f64, scaled: bool) {
-        let first = self.interference.partition_point(|&d| d < lo);
-        let end = self.interference.partition_point(|&d| d <= hi).max(first);
-        let (d, f) = (&self.interference[first..end], &self.load[first..end]);
+    /// [P̄, P̄', P̄''] of the first `count` nodes with lo ≤ Δ' ≤ hi at h, Δ =
+    /// `stretch` Δ', relative to the share's scale (`scaled`: e^{κ} with κ =
+    /// h²/2; else 1).
+    fn sums(&self, count: usize, lo: f64, hi: f64, h: f64, stretch: f64, scaled: bool) -> [f64; 3] {
+        let nodes = &self.interference[..count];
+        let first = nodes.partition_point(|&d| d < lo);
+        let end = nodes.partition_point(|&d| d <= hi).max(first);
+        let (d, f) = (&nodes[first..end], &self.load[first..end]);
         #[cfg(target_arch = "x86_64")]
-        let part = if std::arch::is_x86_feature_detected!("avx2") {
+        if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU has AVX2, checked just above.
-            unsafe { window_sums_avx2(d, f, h, scaled) }
-        } else {
-            window_sums(d, f, h, scaled)
-        };
-        #[cfg(not(target_arch = "x86_64"))]
-        let part = window_sums(d, f, h, scaled);
-        for (sum, p) in sums.iter_mut().zip(part) {
-            *sum += p;
+            return unsafe { window_sums_avx2(d, f, h, stretch, scaled) };
         }
+        window_sums(d, f, h, stretch, scaled)
     }
 }
 
@@ -431,15 +559,16 @@ impl Nodes {
 /// multiply–adds, one node per lane, serial sums).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn window_sums_avx2(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
-    window_sums(d, f, h, scaled)
+fn window_sums_avx2(d: &[f64], f: &[f64], h: f64, stretch: f64, scaled: bool) -> [f64; 3] {
+    window_sums(d, f, h, stretch, scaled)
 }
 
-/// Σ g, Σ −g u, Σ g (u² − 1) with g = f φ̄ over nodes at Δ = d, u = h + Δ, in
-/// a fixed order: the log-weights of a chunk, their exponentials (branch-free
-/// [`exp_fast`], which vectorizes), then four partial sums.
+/// Σ g, Σ −g u, Σ g (u² − 1) with g = f φ̄ over nodes at Δ = `stretch` d,
+/// u = h + Δ, in a fixed order: the log-weights of a chunk, their
+/// exponentials (branch-free [`exp_fast`], which vectorizes), then four
+/// partial sums.
 #[inline(always)]
-fn window_sums(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
+fn window_sums(d: &[f64], f: &[f64], h: f64, stretch: f64, scaled: bool) -> [f64; 3] {
     const CHUNK: usize = 64;
     const LANES: usize = 4;
     let mut weight = [0.0f64; CHUNK];
@@ -449,11 +578,11 @@ fn window_sums(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
         // One loop per scale, so that neither branches.
         if scaled {
             for (w, &d) in weight.iter_mut().zip(d) {
-                *w = log_weight(h, d, true);
+                *w = log_weight(h, stretch * d, true);
             }
         } else {
             for (w, &d) in weight.iter_mut().zip(d) {
-                *w = log_weight(h, d, false);
+                *w = log_weight(h, stretch * d, false);
             }
         }
         for w in weight.iter_mut() {
@@ -467,7 +596,7 @@ fn window_sums(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
             .zip(d.chunks_exact(LANES));
         for ((w, f), d) in &mut quads {
             for lane in 0..LANES {
-                add_moments(&mut lanes[lane], f[lane] * w[lane], h + d[lane]);
+                add_moments(&mut lanes[lane], f[lane] * w[lane], h + stretch * d[lane]);
             }
         }
         let rest = weight.len() - weight.len() % LANES;
@@ -477,7 +606,7 @@ fn window_sums(d: &[f64], f: &[f64], h: f64, scaled: bool) -> [f64; 3] {
             .zip(&d[rest..])
             .enumerate()
         {
-            add_moments(&mut lanes[lane], f * w, h + d);
+            add_moments(&mut lanes[lane], f * w, h + stretch * d);
         }
     }
     let mut sums = [0.0; 3];
@@ -501,19 +630,18 @@ impl Grid {
     /// The shares at any h: from the grid where it serves h, else integrated
     /// at h itself ([`RoughLaw::at`]).
     pub fn shares(&self, h: f64) -> Shares {
-        if Self::serves(h) {
+        if Self::serves(h) && !self.curves.is_empty() {
             self.at(h)
         } else {
             self.law.at(h)
         }
     }
 
-    /// The nodes, non-contact and contact.
+    /// The nodes in use, non-contact and contact.
     pub fn len(&self) -> usize {
-        self.noncontact
+        self.curves
             .iter()
-            .chain(&self.contact)
-            .map(Nodes::len)
+            .map(|c| c.layout.noncontact.len() + c.kept + c.cut.len())
             .sum()
     }
 
@@ -525,44 +653,68 @@ impl Grid {
     /// The shares at h (which the grid serves: [`Grid::serves`]), curve by
     /// curve in the law's order.
     pub fn at(&self, h: f64) -> Shares {
-        let (lo, hi) = (-h - REACH, -h + REACH);
         let mut out = Shares {
             noncontact_exponent: 0.5 * (-h).max(0.0).powi(2),
             elastic_exponent: 0.5 * h.max(0.0).powi(2),
             ..Shares::default()
         };
-        for nodes in &self.noncontact {
-            nodes.add_sums(&mut out.noncontact, lo, hi, h, h < 0.0);
-        }
-        for nodes in &self.contact {
-            nodes.add_sums(&mut out.elastic, lo, hi, h, h > 0.0);
+        for curve in &self.curves {
+            // The window in the layout's Δ'.
+            let (lo, hi) = ((-h - REACH) / curve.stretch, (-h + REACH) / curve.stretch);
+            let (stretch, factor) = (curve.stretch, curve.factor);
+            let below = &curve.layout.noncontact;
+            let part = below.sums(below.len(), lo, hi, h, stretch, h < 0.0);
+            for (sum, p) in out.noncontact.iter_mut().zip(part) {
+                *sum += factor * p;
+            }
+            let mut part = curve
+                .layout
+                .contact
+                .sums(curve.kept, lo, hi, h, stretch, h > 0.0);
+            let cut = curve.cut.sums(curve.cut.len(), lo, hi, h, stretch, h > 0.0);
+            for ((sum, p), c) in out.elastic.iter_mut().zip(&mut part).zip(cut) {
+                *p += c;
+                *sum += factor * *p;
+            }
         }
         out
     }
 }
 
 impl RoughLaw {
-    /// The scene's [`Grid`]: every node of every curve in use over the
-    /// summits [`GRID_SEPARATIONS`] weigh, its curve's weight folded in.
+    /// The scene's [`Grid`]: each curve in use with its layout, its weight
+    /// and the panel its Δc cuts.
     pub fn grid(&self) -> Grid {
-        let (h_lo, h_hi) = GRID_SEPARATIONS;
-        let (lo, hi) = (-h_hi - REACH, -h_lo + REACH);
-        let (mut noncontact, mut contact) = (Vec::new(), Vec::new());
-        for node in self.nodes() {
-            let weight = node.weight;
-            let (mut below, mut above) = (Nodes::default(), Nodes::default());
-            self.visit(node, lo, hi, &mut |d, f, in_contact| {
-                let nodes = if in_contact { &mut above } else { &mut below };
-                nodes.push(d, weight * f);
-            });
-            noncontact.push(below);
-            contact.push(above);
-        }
-        Grid {
-            law: *self,
-            noncontact,
-            contact,
-        }
+        let curves = match level_of(self.ell) {
+            Some(level) => {
+                let s = level_scale(level);
+                let stretch = s / self.ell;
+                self.nodes()
+                    .iter()
+                    .map(|node| {
+                        let layout = layout(node.index, level);
+                        // Δc in the layout's Δ'.
+                        let critical = node.critical / stretch;
+                        let first = layout.pieces.partition_point(|&(_, b)| b <= critical);
+                        let mut cut = Nodes::default();
+                        if let Some(&(a, _)) = layout.pieces.get(first) {
+                            if a < critical {
+                                visit_piece(node.curve, s, a, critical, &mut |d, f| cut.push(d, f));
+                            }
+                        }
+                        GridCurve {
+                            layout,
+                            stretch,
+                            factor: node.weight * stretch.powf(2.5),
+                            kept: first * CONTACT_ORDER,
+                            cut,
+                        }
+                    })
+                    .collect()
+            }
+            None => Vec::new(),
+        };
+        Grid { law: *self, curves }
     }
 }
 
