@@ -861,6 +861,54 @@ impl RoughLaw {
     }
 }
 
+/// The ratio P̂_in/â² of a curve of the table (None for another curve) at the
+/// start of its contact part (max(δ̂_s, 0)), at its panel ends beyond it and
+/// at δ̂_max 2^j, j = 1 … 64: ascending in δ̂ and, the contact part being
+/// stiffer the deeper, in the ratio. Computed once per curve.
+fn ratio_samples(curve: &Curve) -> Option<&'static [(f64, f64)]> {
+    type Samples = OnceLock<Vec<(f64, f64)>>;
+    static CACHE: OnceLock<Vec<Samples>> = OnceLock::new();
+    let all = curves();
+    let index = all.iter().position(|c| std::ptr::eq(c, curve))?;
+    let cache = CACHE.get_or_init(|| all.iter().map(|_| OnceLock::new()).collect());
+    Some(cache[index].get_or_init(|| sample_ratios(curve)))
+}
+
+/// [`ratio_samples`], computed afresh.
+fn sample_ratios(curve: &Curve) -> Vec<(f64, f64)> {
+    {
+        let ratio = |d: f64| {
+            let (a, inner) = curve.contact_area(d);
+            if a <= 0.0 {
+                f64::NEG_INFINITY
+            } else {
+                inner / (a * a)
+            }
+        };
+        let start = curve.switch.max(0.0);
+        let max = curve.max_interference();
+        let mut points: Vec<f64> = std::iter::once(start)
+            .chain(curve.breaks().iter().copied().filter(|&b| b > start))
+            .collect();
+        let mut d = max;
+        for _ in 0..64 {
+            d *= 2.0;
+            points.push(d);
+        }
+        let mut samples: Vec<(f64, f64)> = points.into_iter().map(|d| (d, ratio(d))).collect();
+        // A bracket needs the ratio ascending: keep a sample only above the
+        // last one kept (the search's root is then the first crossing, as a
+        // search from the start would find).
+        let mut top = f64::NEG_INFINITY;
+        samples.retain(|&(_, r)| {
+            let keep = r > top || top == f64::NEG_INFINITY && r == top;
+            top = top.max(r);
+            keep
+        });
+        samples
+    }
+}
+
 /// δ̂c of one curve: where P̂_in/â² first reaches `target` = c_h ℓ^{1/2} on
 /// the contact part (regula falsi; ∞ for c_h = ∞; the switch where the ratio
 /// already exceeds it there).
@@ -876,22 +924,42 @@ pub fn critical_interference(curve: &Curve, target: f64) -> f64 {
             inner / (a * a)
         }
     };
-    let mut lo = curve.switch.max(0.0);
-    if ratio(lo) >= target {
-        return lo;
-    }
-    let mut hi = curve.max_interference();
-    while ratio(hi) < target {
-        lo = hi;
-        hi *= 2.0;
-        if hi > 1e300 {
-            return f64::INFINITY;
+    // The bracket from the curve's ratios at its panel ends and at doublings
+    // beyond δ̂_max, computed once per curve (no evaluation here).
+    let owned;
+    let samples = match ratio_samples(curve) {
+        Some(samples) => samples,
+        None => {
+            owned = sample_ratios(curve);
+            &owned[..]
         }
+    };
+    let k = samples.partition_point(|&(_, r)| r < target);
+    if k == 0 {
+        return samples[0].0;
     }
+    let (mut lo, mut hi, mut f_lo, mut f_hi) = match samples.get(k) {
+        Some(&(hi, r_hi)) => {
+            let (lo, r_lo) = samples[k - 1];
+            (lo, hi, r_lo - target, r_hi - target)
+        }
+        None => {
+            // Beyond the last sample: doubling, as far as doubles go.
+            let (mut lo, mut hi) = (samples[k - 1].0, 2.0 * samples[k - 1].0);
+            while ratio(hi) < target {
+                lo = hi;
+                hi *= 2.0;
+                if hi > 1e300 {
+                    return f64::INFINITY;
+                }
+            }
+            (lo, hi, ratio(lo) - target, ratio(hi) - target)
+        }
+    };
     // The Illinois variant of regula falsi on the bracket (the ratio is smooth
-    // and increasing there): ~10 evaluations where bisection took ~50; a
-    // bisection step wherever the secant leaves the bracket.
-    let (mut f_lo, mut f_hi) = (ratio(lo) - target, ratio(hi) - target);
+    // and increasing there): a few evaluations within one of the table's
+    // panels or one doubling; a bisection step wherever the secant leaves the
+    // bracket.
     let mut side = 0;
     for _ in 0..200 {
         let mut x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
@@ -965,5 +1033,51 @@ mod tests {
             clustered >= 8,
             "the hub's curves have dense runs: {clustered}"
         );
+    }
+
+    /// Δc from the cached bracket against plain bisection from the contact
+    /// part's start outwards (the ratio P̂_in/â² is increasing there), on
+    /// curves across the table and targets from the start's ratio to deep in
+    /// the tail: the same root to 1e-12.
+    #[test]
+    fn the_critical_interference_is_the_root_bisection_finds() {
+        for index in [0, 8, 16, 19, 26, 33] {
+            let curve = &curves()[index];
+            let ratio = |d: f64| {
+                let (a, inner) = curve.contact_area(d);
+                if a <= 0.0 {
+                    f64::NEG_INFINITY
+                } else {
+                    inner / (a * a)
+                }
+            };
+            let start = curve.switch.max(0.0);
+            for target in [0.5, 2.0, 7.0, 20.0, 80.0, 400.0, 3e3] {
+                let got = critical_interference(curve, target);
+                if ratio(start) >= target {
+                    assert_eq!(got, start);
+                    continue;
+                }
+                let (mut lo, mut hi) = (start, 1.0f64.max(2.0 * start));
+                while ratio(hi) < target {
+                    (lo, hi) = (hi, 2.0 * hi);
+                }
+                for _ in 0..200 {
+                    let mid = 0.5 * (lo + hi);
+                    if mid <= lo || mid >= hi {
+                        break;
+                    }
+                    if ratio(mid) < target {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                assert!(
+                    (got - hi).abs() <= 1e-12 * hi,
+                    "curve {index} target {target}: {got} against {hi}"
+                );
+            }
+        }
     }
 }
