@@ -58,7 +58,13 @@ impl Chebyshev {
     pub fn interpolate(lo: f64, hi: f64, values: &[f64]) -> Chebyshev {
         let n = values.len() - 1;
         let pi = std::f64::consts::PI;
-        // x_i = −cos(πi/n) = cos(π(n−i)/n): c_k = (2/n) Σ'' f_i T_k(x_i).
+        // x_i = −cos(πi/n) = cos(π(n−i)/n): c_k = (2/n) Σ'' f_i T_k(x_i), with
+        // T_k(x_i) = cos(π m/n), m = k(n−i) mod 2n, from one table of the 2n
+        // cosines (the same numbers as one cosine per term, at 1/n of the cost:
+        // the curves' series are built when a process first reads the table).
+        let cosines: Vec<f64> = (0..2 * n.max(1))
+            .map(|m| (pi * m as f64 / n as f64).cos())
+            .collect();
         let mut coefficients: Vec<f64> = (0..=n)
             .map(|k| {
                 let sum: f64 = values
@@ -66,8 +72,7 @@ impl Chebyshev {
                     .enumerate()
                     .map(|(i, &f)| {
                         let half = if i == 0 || i == n { 0.5 } else { 1.0 };
-                        let angle = pi * ((k * (n - i)) % (2 * n)) as f64 / n as f64;
-                        half * f * angle.cos()
+                        half * f * cosines[(k * (n - i)) % (2 * n)]
                     })
                     .sum();
                 2.0 * sum / n as f64
