@@ -30,6 +30,15 @@ HOW / PRECISION
                P (method 1 everywhere) and (2) the solid part by exchanging the integrals,
                int_{h0}^inf P_solid dh = int p(D) sqrt(pi/2) erfc((h0+D)/sqrt 2) dD, and the
                capillary part by quadrature over h of method (2). Agreement >= 15 digits at mp.dps = 20.
+               Both findroots solve for a root of the function times e^{h^2/2}, scaled to ~1 on the
+               bracket (findroot's test is absolute). Method 1 (Gauss-Legendre) divides P by
+               |P_min| and splits [h0, inf) at unit steps (the attraction's and meniscus's reach),
+               at h_min, and where e^{-h^2/2} has fallen from h0 by e^-0.25 ... e^-138: a far
+               minimum (the weak Dugdale scene, h0 = 153) decays over 1/h0, inside one unit step.
+               Method 2 (tanh-sinh) scales each integral by its largest value at its split points,
+               splits the solid part also where erfc((h0+D)/sqrt 2) falls over 1/h0 and at
+               D = -h0, and works with 10 guard digits: for a far minimum the solid and meniscus
+               parts of G cancel to 1e-3.
 
 USAGE
     python3 scripts/reference_capillary.py --out tests/data
@@ -166,9 +175,27 @@ def points(quick):
 # ------------------------------------------------------------------ extrema and work
 
 # theta, c_h, attraction, range, k, f, p: the polysilicon hub (theta = 184, c_h = 5.12) at about
-# RH = 0.5 and 0.95 (water, theta = 0), a flooding scene (slow: ~40 min). A weak-adhesion scene
-# (theta = 1e4, H = inf, Dugdale 0.01, k = 1e-3) was tried and dropped: its minimum lies far out,
-# where method 1's h-quadrature over [h0, h0 + k + 14] does not reach (the methods disagreed).
+# RH = 0.5 and 0.95 (water, theta = 0), a flooding scene (slow: ~40 min), and a rough
+# polysilicon-like surface with weak adhesion and a small Kelvin length over sigma (the last two).
+#
+# The rough surface: sigma = 1 um, R = 100 um, N = 5e8 /m^2 (sigma R N = 0.05, Greenwood and
+# Williamson's value), the hub's polysilicon (E = 160 GPa, nu = 0.22: K = 112.1 GPa; H = 10 GPa),
+# water at 25 C and RH = 0.5 (r_K = 0.757 nm, Laplace pressure 95.1 MPa):
+#   k = d_K/sigma = 1e-3: d_K = r_K (cos theta_a + cos theta_b) = 1 nm at a contact angle of 48.6
+#       degrees on both bodies (a partly hydrophilic, aged surface; 0 degrees gives k = 1.5e-3);
+#   f = sqrt(2 pi) R N d_K = 1.25e-4, p = sqrt(2 pi) Delta_p / (K N R^(1/2) sigma^(3/2)) = 0.425
+#       (the same formulas give the hub's 0.04 and 1.3);
+#   c_h = 3 pi / (4 psi) = 2.8, psi = (E/H) (sigma/R)^(1/2) = 0.84;
+#   range: van der Waals z0 = Z0/sigma = 3e-4 (Z0 = 0.3 nm), Dugdale z0/1.03;
+#   theta = 1e4: weak adhesion, gamma ~ 1.1 J/m^2 on this surface (the hub's 0.1 J/m^2 gives
+#       theta = 1.1e5, weaker still); the meniscus pulls with p f = 5.3e-5 against c_0 = 6.3e-4.
+# Under van der Waals the attraction's power-law tail holds the minimum at h = 7.07; under
+# Dugdale nothing reaches past the contacts and it lies at h = 153, where P ~ e^-1.2e4: the
+# load there and G underflow a double (the Rust test then checks h_min and h0), and G is 1e-3
+# of its solid and meniscus parts, which cancel. This scene was once dropped: method 1 split
+# [h0, h0 + 14] at unit steps while the load decays over 1/h0 = 0.0065, mpmath.quad and
+# findroot test absolute errors against values of e^-1.2e4, and method 2 lost the cancellation;
+# see work_method1, work_method2 and scaled.
 EXTREMA = [
     ("184", "5.12", "van_der_waals", "0.1", "0.5", "0.04", "1.3"),
     ("184", "5.12", "van_der_waals", "0.1", "6.8", "0.51", "0.095"),
@@ -177,6 +204,9 @@ EXTREMA = [
     # JKR (c_h column: lambda): theta, lambda as scripts/reference.py takes them.
     ("184", "1e5", "jkr", "0", "0.5", "0.04", "1.3"),
     ("10", "1", "jkr", "0", "3", "0.5", "0.1"),
+    # The rough surface above (sigma = 1 um, RH = 0.5), weak adhesion.
+    ("1e4", "2.8", "van_der_waals", "3e-4", "1e-3", "1.25e-4", "0.425"),
+    ("1e4", "2.8", "dugdale", "2.912621359223301e-4", "1e-3", "1.25e-4", "0.425"),
 ]
 
 
@@ -209,15 +239,29 @@ def solid_law(c0, ch, kind, rng, d):
     return 2 * ch * d - c0
 
 
-def work_method1(c0, ch, kind, rng, k, f, p, h0):
-    P = lambda h: total(c0, ch, kind, rng, k, f, p, h, 1)[0]
+def work_method1(c0, ch, kind, rng, k, f, p, h0, hmin, pmin):
+    """G by Gauss-Legendre over h of method 1's P. The integrand is divided by |P_min| (the
+    largest |P| on [h0, inf), where P < 0: mpmath.quad tests an absolute error, and a weak
+    scene's P ~ e^-1e4 would pass unrefined). Split at unit steps from h0 (the attraction's
+    and the meniscus's reach), at h_min, and where e^{-h^2/2} has fallen from its value at h0
+    by the LEVELS: for h0 >> 1 the load decays over 1/h0, inside the first unit step."""
+    m = abs(pmin)
+    P = lambda h: total(c0, ch, kind, rng, k, f, p, h, 1)[0] / m
     reach = max(k, rng if kind == "dugdale" else mpf(0))
     if kind == "jkr":
         reach = k
     pts = [h0 + i for i in range(0, int(reach) + 14)]
-    pts += [pts[-1] * 2 + 10]
+    tail = pts[-1] * 2 + 10
+    inner = set(pts)
+    if h0 < hmin < pts[-1]:
+        inner.add(hmin)
+    for lev in dmt.LEVELS:
+        x = mp.sqrt(max(h0, mpf(0)) ** 2 + 2 * lev)
+        if h0 < x < pts[-1]:
+            inner.add(x)
+    pts = sorted(inner) + [tail]
     body = mp.quad(P, pts, method="gauss-legendre")
-    return -(body + mp.quad(P, [pts[-1], mp.inf]))
+    return -m * (body + mp.quad(P, [tail, mp.inf]))
 
 
 def jkr_solid_work(model, h0):
@@ -237,30 +281,73 @@ def jkr_solid_work(model, h0):
     return el + pl
 
 
+def gq_max_scaled(f, pts):
+    """dmt.gq with the integrand divided by its largest magnitude at the split points
+    (mpmath.quad tests an absolute error; the points include where the integrand peaks)."""
+    m = max(abs(f(x)) for x in pts if mp.isfinite(x))
+    if m == 0:
+        return mpf(0)
+    return m * dmt.gq(lambda x: f(x) / m, pts)
+
+
+def decay_points(h0):
+    """Offsets x > 0 where e^{-(h0+x)^2/2} has fallen from its value at x = 0 by the
+    LEVELS (for h0 > 0; the weight then decays over 1/h0)."""
+    if h0 <= 0:
+        return []
+    return [mp.sqrt(h0 * h0 + 2 * lev) - h0 for lev in dmt.LEVELS]
+
+
+def capillary_work(k, f, p, h0):
+    """int_{h0}^inf P_cap dh by tanh-sinh over h of method (2)'s P_cap, scaled by its value
+    at h0 (|P_cap| falls with h), split at unit steps and at h0 + 4^j / max(1, h0)."""
+    cap = lambda h: capillary(k, f, p, h, 2)[0]
+    top = h0 + int(k) + 13
+    cpts = {h0 + i for i in range(0, int(k) + 14)}
+    cpts |= {h0 + mpf(4) ** j / max(1, h0) for j in range(-2, 4)}
+    return gq_max_scaled(cap, sorted(x for x in cpts if x <= top) + [mp.inf])
+
+
 def work_method2(c0, ch, kind, rng, k, f, p, h0):
+    """G as the solid part by exchanged integrals plus the meniscus part over h, both with
+    10 guard digits: for a far minimum the two nearly cancel (G ~ 1e-3 of either at
+    h0 = 153) and the solid integrand cancels inside (D^(3/2) against c_0 for D ~ 1/h0),
+    while mpmath.quad's error is absolute, ~10^-dps of the integrand's largest value."""
+    with mp.workdps(mp.mp.dps + 10):
+        return work_parts(c0, ch, kind, rng, k, f, p, h0)
+
+
+def work_parts(c0, ch, kind, rng, k, f, p, h0):
     q = mp.sqrt(mp.pi / 2)
     if kind == "jkr":
-        cap = lambda h: capillary(k, f, p, h, 2)[0]
-        cpts = [h0 + i for i in range(0, int(k) + 14)] + [mp.inf]
-        return -(jkr_solid_work(ch, h0) + dmt.gq(cap, cpts))
+        return -(jkr_solid_work(ch, h0) + capillary_work(k, f, p, h0))
     weight = lambda d: solid_law(c0, ch, kind, rng, d) * q * erfc_s(h0 + d)
     dc = ch * ch
     lo = -rng if kind == "dugdale" else -mp.inf
     pts = [lo, mpf(0)]
     if kind == "van_der_waals":
         pts = [-mp.inf, -1000 * rng, -10 * rng, -rng, mpf(0)]
+    # The summit heights that carry the integral: around D = -h0 (where erfc turns), and,
+    # when -h0 < 0, just above D = 0 (where the weight falls over 1/h0).
     peak = -h0
-    for x in [peak - 8, peak - 2, peak, peak + 2, peak + 8, peak + 20]:
-        if x > 0:
+    for x in [peak - 8, peak - 2, peak, peak + 2, peak + 8, peak + 20] + decay_points(h0):
+        if x > lo and x != 0:
             pts.append(x)
     if dc != mp.inf:
         pts.append(dc)
     pts = sorted(set(pts))
     pts.append(max(pts[-1], mpf(0)) + 40 + abs(h0))
-    solid = dmt.gq(weight, pts)
-    cap = lambda h: capillary(k, f, p, h, 2)[0]
-    cpts = [h0 + i for i in range(0, int(k) + 14)] + [mp.inf]
-    return -(solid + dmt.gq(cap, cpts))
+    return -(gq_max_scaled(weight, pts) + capillary_work(k, f, p, h0))
+
+
+def scaled(g, ends, c):
+    """g(x) e^{(x^2 - c^2)/2} over its largest magnitude at the bracket's ends: the same
+    roots, but of size ~1 across the bracket. findroot (anderson) stops once |value| is
+    below its tolerance, an absolute one (~1e-18 at mp.dps = 20): unscaled, the weak Dugdale
+    scene (P ~ e^-1.2e4) stopped at its first step: h_min 1.7e-3 off, h0 = h_min."""
+    e = lambda x: mp.exp((x * x - c * c) / 2)
+    m = max(abs(g(x) * e(x)) for x in ends)
+    return lambda x: g(x) * e(x) / m
 
 
 def extrema(quick, only=None):
@@ -289,7 +376,7 @@ def extrema(quick, only=None):
             h, prev = hn, s
             if h > 200:
                 sys.exit(f"no minimum for {th} {chs} {kind} {rg} {ks_}")
-        hmin = mp.findroot(slope, (h, hn), solver="anderson")
+        hmin = mp.findroot(scaled(slope, (h, hn), hn), (h, hn), solver="anderson")
         pmin1 = total(c0, ch, kind, rng, k, f, p, hmin, 1)[0]
         pmin2 = total(c0, ch, kind, rng, k, f, p, hmin, 2)[0]
         worst = min(worst, agree(pmin1, pmin2))
@@ -298,8 +385,8 @@ def extrema(quick, only=None):
         lo = hmin - 1
         while P(lo) < 0:
             lo -= 1
-        h0 = mp.findroot(P, (lo, hmin), solver="anderson")
-        w1 = work_method1(c0, ch, kind, rng, k, f, p, h0)
+        h0 = mp.findroot(scaled(P, (lo, hmin), hmin), (lo, hmin), solver="anderson")
+        w1 = work_method1(c0, ch, kind, rng, k, f, p, h0, hmin, pmin1)
         w2 = work_method2(c0, ch, kind, rng, k, f, p, h0)
         worst = min(worst, agree(w1, w2))
         print(f"{th} {chs} {kind} {rg} k={ks_}: hmin {mp.nstr(hmin, 12)} Pmin {mp.nstr(pmin1, 12)} "
