@@ -208,10 +208,12 @@ fn integrate(start: &[(Part, f64, f64)], f: &mut dyn FnMut(Part, f64) -> f64) ->
 /// integrals under JKR and DMT, over h under the Lennard-Jones law's table
 /// (module docs).
 pub fn work_of_separation(model: &Model, from: f64) -> (f64, usize) {
-    match model.contact_law() {
+    let (work, evaluations) = match model.contact_law() {
         Some(law) if from.is_finite() => exchanged(model, &law, from),
         _ => work_by_separation(model, from),
-    }
+    };
+    // A work that underflows (a minimum at h ~ 150: e^{-1e4}) is 0, not −0.
+    (work + 0.0, evaluations)
 }
 
 /// The levels of the weight's log at which the contact pieces start split.
