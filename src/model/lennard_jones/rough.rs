@@ -861,6 +861,18 @@ impl RoughLaw {
     }
 }
 
+/// P̂_in/â² of one curve on its contact part at δ̂, the plastic rule's ratio
+/// (in these units proportional to the mean pressure inside the contact
+/// radius; −∞ where there is no contact area).
+fn inner_pressure(curve: &Curve, d: f64) -> f64 {
+    let (a, inner) = curve.contact_area(d);
+    if a <= 0.0 {
+        f64::NEG_INFINITY
+    } else {
+        inner / (a * a)
+    }
+}
+
 /// The ratio P̂_in/â² of a curve of the table (None for another curve) at the
 /// start of its contact part (max(δ̂_s, 0)), at its panel ends beyond it and
 /// at δ̂_max 2^j, j = 1 … 64: ascending in δ̂ and, the contact part being
@@ -877,14 +889,7 @@ fn ratio_samples(curve: &Curve) -> Option<&'static [(f64, f64)]> {
 /// [`ratio_samples`], computed afresh.
 fn sample_ratios(curve: &Curve) -> Vec<(f64, f64)> {
     {
-        let ratio = |d: f64| {
-            let (a, inner) = curve.contact_area(d);
-            if a <= 0.0 {
-                f64::NEG_INFINITY
-            } else {
-                inner / (a * a)
-            }
-        };
+        let ratio = |d: f64| inner_pressure(curve, d);
         let start = curve.switch.max(0.0);
         let max = curve.max_interference();
         let mut points: Vec<f64> = std::iter::once(start)
@@ -916,14 +921,7 @@ pub fn critical_interference(curve: &Curve, target: f64) -> f64 {
     if target.is_infinite() {
         return f64::INFINITY;
     }
-    let ratio = |d: f64| {
-        let (a, inner) = curve.contact_area(d);
-        if a <= 0.0 {
-            f64::NEG_INFINITY
-        } else {
-            inner / (a * a)
-        }
-    };
+    let ratio = |d: f64| inner_pressure(curve, d);
     // The bracket from the curve's ratios at its panel ends and at doublings
     // beyond δ̂_max, computed once per curve (no evaluation here).
     let owned;
@@ -1043,14 +1041,7 @@ mod tests {
     fn the_critical_interference_is_the_root_bisection_finds() {
         for index in [0, 8, 16, 19, 26, 33] {
             let curve = &curves()[index];
-            let ratio = |d: f64| {
-                let (a, inner) = curve.contact_area(d);
-                if a <= 0.0 {
-                    f64::NEG_INFINITY
-                } else {
-                    inner / (a * a)
-                }
-            };
+            let ratio = |d: f64| inner_pressure(curve, d);
             let start = curve.switch.max(0.0);
             for target in [0.5, 2.0, 7.0, 20.0, 80.0, 400.0, 3e3] {
                 let got = critical_interference(curve, target);
