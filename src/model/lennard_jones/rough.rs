@@ -509,10 +509,9 @@ impl Share {
                     moments,
                 });
             } else {
-                for (j, (&dj, &f)) in d.iter().zip(&all.load).enumerate().take(end).skip(first) {
-                    loose.push(dj, f);
-                    loose_index.push(j);
-                }
+                loose.interference.extend_from_slice(&d[first..end]);
+                loose.load.extend_from_slice(&all.load[first..end]);
+                loose_index.extend(first..end);
             }
             first = end;
         }
@@ -888,30 +887,29 @@ fn ratio_samples(curve: &Curve) -> Option<&'static [(f64, f64)]> {
 
 /// [`ratio_samples`], computed afresh.
 fn sample_ratios(curve: &Curve) -> Vec<(f64, f64)> {
-    {
-        let ratio = |d: f64| inner_pressure(curve, d);
-        let start = curve.switch.max(0.0);
-        let max = curve.max_interference();
-        let mut points: Vec<f64> = std::iter::once(start)
-            .chain(curve.breaks().iter().copied().filter(|&b| b > start))
-            .collect();
-        let mut d = max;
-        for _ in 0..64 {
-            d *= 2.0;
-            points.push(d);
-        }
-        let mut samples: Vec<(f64, f64)> = points.into_iter().map(|d| (d, ratio(d))).collect();
-        // A bracket needs the ratio ascending: keep a sample only above the
-        // last one kept (the search's root is then the first crossing, as a
-        // search from the start would find).
-        let mut top = f64::NEG_INFINITY;
-        samples.retain(|&(_, r)| {
-            let keep = r > top || top == f64::NEG_INFINITY && r == top;
-            top = top.max(r);
-            keep
-        });
-        samples
+    let ratio = |d: f64| inner_pressure(curve, d);
+    let start = curve.switch.max(0.0);
+    let max = curve.max_interference();
+    let mut points: Vec<f64> = std::iter::once(start)
+        .chain(curve.breaks().iter().copied().filter(|&b| b > start))
+        .collect();
+    let mut d = max;
+    for _ in 0..64 {
+        d *= 2.0;
+        points.push(d);
     }
+    let mut samples: Vec<(f64, f64)> = points.into_iter().map(|d| (d, ratio(d))).collect();
+    // A bracket needs the ratio ascending: keep a sample only above the
+    // last one kept (the search's root is then the first crossing, as a
+    // search from the start would find), and every −∞ before contact (the
+    // last of them is the nearest lower end).
+    let mut top = f64::NEG_INFINITY;
+    samples.retain(|&(_, r)| {
+        let keep = r > top || top == f64::NEG_INFINITY && r == top;
+        top = top.max(r);
+        keep
+    });
+    samples
 }
 
 /// δ̂c of one curve: where P̂_in/â² first reaches `target` = c_h ℓ^{1/2} on
