@@ -142,6 +142,11 @@ pub trait Tabulated: Send + Sync + std::fmt::Debug {
     /// Each curve's Δc with its weight, the plastic junctions beyond which the
     /// model adds in closed form.
     fn plastic_junctions(&self, visit: &mut dyn FnMut(f64, f64));
+    /// ∫ p(Δ) T_0(h0 + Δ) dΔ, T_0(u) = ∫_u^∞ e^{−x²/2} dx, over the elastic and
+    /// non-contact shares: their part of the work of separation from h0 with
+    /// the integrals exchanged (`model::work`); None where the law cannot
+    /// (the work is then a quadrature over h).
+    fn solid_work(&self, h0: f64) -> Option<f64>;
     /// The elastic–plastic transition at these coefficients.
     fn transition(&self, coefficients: &Coefficients) -> Transition;
     /// One asperity's pull-off in units of πγR (> 0).

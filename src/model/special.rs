@@ -32,6 +32,16 @@ pub fn tail0(u: f64) -> f64 {
     }
 }
 
+/// `T_0(u) = ∫_u^∞ e^{-x²/2} dx = √(π/2) erfc(u/√2)` itself (0 where it underflows).
+#[inline]
+pub fn gaussian_tail(u: f64) -> f64 {
+    if u > 0.0 {
+        tail0(u) * (-0.5 * u * u).exp()
+    } else {
+        tail0(u)
+    }
+}
+
 /// Above this u, [`tail1_given`] uses its asymptotic series; below, `1 - u T_0`
 /// (whose cancellation costs at most u² ulps ≈ 3e-14 relative at u = 12).
 const TAIL1_SERIES_FROM: f64 = 12.0;

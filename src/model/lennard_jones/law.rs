@@ -97,6 +97,9 @@ impl Tabulated for Grid {
     fn shares(&self, h: f64) -> Shares {
         Grid::shares(self, h)
     }
+    fn solid_work(&self, h0: f64) -> Option<f64> {
+        Grid::solid_work(self, h0)
+    }
     fn plastic_junctions(&self, visit: &mut dyn FnMut(f64, f64)) {
         for (dc, weight) in self.law().critical_interferences() {
             visit(dc, weight);

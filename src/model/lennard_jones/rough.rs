@@ -29,7 +29,7 @@ use std::sync::OnceLock;
 
 use super::table::{curves, Curve};
 use crate::model::gauss;
-use crate::model::special::exp_fast;
+use crate::model::special::{exp_fast, gaussian_tail, SQRT_TWO_PI};
 
 /// The half-width in Δ of the weight's range: e^{-u²/2} ≥ e^{-46} inside.
 const REACH: f64 = 9.591_663_046_625_44;
@@ -389,12 +389,15 @@ fn add_moments(share: &mut [f64; 3], g: f64, u: f64) {
 
 /// The separations the per-scene [`Grid`] serves, h ∈ [lo, hi]; outside, the
 /// shares are integrated at h itself. Every evaluation of `eval` on the
-/// shipped Lennard-Jones scenes lies in 1.06…3.9, of `optimize` on the hub's
-/// study in 0.47…11.0, and all but 17 of the 66 356 of an 8-point front on it
-/// in this range; the apparent work of adhesion's quadrature over h reaches
-/// far beyond any grid (its nodes beyond h = 40 were windowed before). From
-/// −12…40 to −6…16: a quarter of the hub's build (90 → 68 µs).
-pub const GRID_SEPARATIONS: (f64, f64) = (-6.0, 16.0);
+/// shipped dry Lennard-Jones scenes lies in 1.06…3.9, of `optimize` on the
+/// hub's study in 0.47…11.0; a meniscus's separation search on the humid hub
+/// steps to h = −9.0 (one windowed evaluation there cost more than the rest of
+/// the solve), hence −12. The layouts are built once per process, so the
+/// range costs a scene nothing. Above 16 the approach part's panels would
+/// start further out and land elsewhere near the switch: at ℓ = 0.59 a grid
+/// for h ≤ 40 missed the adaptive reference by 2e-11 where this one misses
+/// by 5e-13 (`the_stretched_grid_matches_an_adaptive_quadrature`).
+pub const GRID_SEPARATIONS: (f64, f64) = (-12.0, 16.0);
 
 /// One scene's quadrature nodes over every summit the separations of
 /// [`GRID_SEPARATIONS`] weigh, with their loads: then the shares at any such h
@@ -441,6 +444,10 @@ struct Layout {
     contact: Share,
     /// The contact panels at Δ' ≥ 0, in order.
     pieces: Vec<(f64, f64)>,
+    /// The load of every summit below the layout's first node, ∫ f dΔ' over
+    /// Δ' < lo (nodes' units): what the work of separation weighs by the
+    /// whole Gaussian tail √(2π) ([`Grid::solid_work`]).
+    far: f64,
 }
 
 /// The widest cluster, in Δ' (so at most as wide in the scene's Δ).
@@ -548,7 +555,69 @@ impl Share {
     }
 }
 
+impl Share {
+    /// Σ f T_0(h0 + Δ) over the share's first `count` nodes, T_0(u) = ∫_u^∞
+    /// e^{−x²/2} dx (√(2π) below the window lo … hi, 0 above it), the clusters
+    /// by their series ([`Cluster::tail_sum`]), one that `count` cuts node by node.
+    fn tail_sum(&self, count: usize, lo: f64, hi: f64, h0: f64, stretch: f64) -> f64 {
+        let loose = self.loose_index.partition_point(|&j| j < count);
+        let (d, f) = (&self.loose.interference[..loose], &self.loose.load[..loose]);
+        let mut sum = tail_window(d, f, lo, hi, h0, stretch);
+        for cluster in self.clusters.iter().take_while(|c| c.first < count) {
+            sum += if cluster.end > count {
+                let (d, f) = (&self.all.interference, &self.all.load);
+                tail_window(
+                    &d[cluster.first..count],
+                    &f[cluster.first..count],
+                    lo,
+                    hi,
+                    h0,
+                    stretch,
+                )
+            } else if cluster.center < lo {
+                SQRT_TWO_PI * cluster.moments[0]
+            } else if cluster.center <= hi {
+                cluster.tail_sum(h0, stretch)
+            } else {
+                0.0
+            };
+        }
+        sum
+    }
+}
+
+/// Σ f T_0(h0 + s d) over nodes (d, f) ascending, s = `stretch`: √(2π) Σ f
+/// below lo, T_0 itself up to hi, nothing above (T_0 < e^{−46} there).
+fn tail_window(d: &[f64], f: &[f64], lo: f64, hi: f64, h0: f64, stretch: f64) -> f64 {
+    let first = d.partition_point(|&x| x < lo);
+    let end = d.partition_point(|&x| x <= hi).max(first);
+    let below: f64 = f[..first].iter().sum();
+    let mut sum = SQRT_TWO_PI * below;
+    for (&x, &f) in d[first..end].iter().zip(&f[first..end]) {
+        sum += f * gaussian_tail(h0 + stretch * x);
+    }
+    sum
+}
+
 impl Cluster {
+    /// Σ f_j T_0(u_c + y_j) over the cluster's nodes (y = `stretch` x), by
+    /// T_0(u + y) = T_0(u) − ∫_0^y φ̄(u + t) dt = T_0(u) − φ̄(u) Σ_k (−1)^k
+    /// He_k(u) y^{k+1}/(k + 1)!: T_0(u_c) m_0 − φ̄(u_c) Σ_k (−1)^k He_k(u_c)
+    /// stretch^{k+1} m_{k+1} (unscaled).
+    fn tail_sum(&self, h0: f64, stretch: f64) -> f64 {
+        let u = h0 + stretch * self.center;
+        let (mut he0, mut he1) = (1.0, u);
+        let mut scale = stretch;
+        let mut series = 0.0;
+        for (k, &m) in self.moments[1..].iter().enumerate() {
+            series += scale * m * he0;
+            let he2 = u * he1 - (k + 1) as f64 * he0;
+            (he0, he1) = (he1, he2);
+            scale *= -stretch;
+        }
+        gaussian_tail(u) * self.moments[0] - (-0.5 * u * u).exp() * series
+    }
+
     /// [P̄, P̄', P̄''] of the cluster's nodes at h (Δ = `stretch` Δ'), relative
     /// to the share's scale as [`window_sums`].
     fn sums(&self, h: f64, stretch: f64, scaled: bool) -> [f64; 3] {
@@ -645,8 +714,52 @@ impl Layout {
             noncontact: Share::new(noncontact),
             contact: Share::new(contact),
             pieces,
+            far: far_load(curve, s, lo, FAR_GROWTH),
         }
     }
+}
+
+/// The ratio of the far field's panels in τ ([`far_load`]).
+const FAR_GROWTH: f64 = 1.5;
+
+/// ∫ f dΔ' over the summits below Δ' = `lo` at the scale s (f as
+/// [`visit_curve`]'s: s^{-5/2} P̂ dδ̂): the approach part up to the τ where
+/// `visit_curve` starts, Gauss–Legendre in τ on panels whose ends shrink by
+/// `growth` towards τ = 0 (the integrand P̂ dδ̂/dτ ~ −(16/3) ẑ0 τ there, smooth:
+/// the table's series are analytic on [0, τ_end]), and the contact part from
+/// the switch where `lo` lies beyond it.
+fn far_load(c: &Curve, s: f64, lo: f64, growth: f64) -> f64 {
+    let scale = s.powf(-2.5);
+    let rule = gauss::rule(ORDER);
+    let switch = c.switch / s;
+    let top = if lo < switch {
+        c.tau_at(s * lo)
+    } else {
+        c.tau_end()
+    };
+    // Panels [τ/growth, τ] from the top down to 1e-3 of it, then [0, that].
+    let mut ends = vec![top];
+    while *ends.last().unwrap_or(&0.0) > 1e-3 * top {
+        let next = ends[ends.len() - 1] / growth;
+        ends.push(next);
+    }
+    ends.push(0.0);
+    let mut far = 0.0;
+    for pair in ends.windows(2).rev() {
+        let (t0, t1) = (pair[1], pair[0]);
+        let (mid, half) = (0.5 * (t0 + t1), 0.5 * (t1 - t0));
+        let mut taus = [0.0; ORDER];
+        for (t, x) in taus.iter_mut().zip(&rule.nodes) {
+            *t = mid + half * x;
+        }
+        for (&(_, slope, load), w) in c.approach_loads(&taus).iter().zip(&rule.weights) {
+            far += scale * load * slope * w * half;
+        }
+    }
+    for (a, b) in contact_pieces(c, s, switch, lo) {
+        visit_piece(c, s, a, b, &mut |_, f| far += f);
+    }
+    far
 }
 
 /// One curve's quadrature nodes, ascending in Δ (as its panels visit them):
@@ -820,6 +933,43 @@ impl Grid {
             }
         }
         out
+    }
+}
+
+impl Grid {
+    /// ∫ p(Δ) T_0(h0 + Δ) dΔ over the elastic and non-contact shares (every
+    /// summit up to its curve's Δc, attracted ones down to Δ = −∞), T_0(u) =
+    /// ∫_u^∞ e^{−x²/2} dx: the solid load's part of the work of separation
+    /// from h0 with the integrals exchanged (`model::work`). The grid's own
+    /// quadrature sum with the tail T_0 as weight instead of φ̄ (the same
+    /// nodes, so the same accuracy as the shares): T_0 = √(2π) to rounding
+    /// below the window (and over the layout's far field, `Layout::far`), and
+    /// below e^{−46} above it. None where the grid does not serve h0.
+    pub fn solid_work(&self, h0: f64) -> Option<f64> {
+        if !Self::serves(h0) || self.curves.is_empty() {
+            return None;
+        }
+        let mut total = 0.0;
+        for curve in &self.curves {
+            let (lo, hi) = ((-h0 - REACH) / curve.stretch, (-h0 + REACH) / curve.stretch);
+            let layout = curve.layout;
+            let stretch = curve.stretch;
+            let sum = SQRT_TWO_PI * layout.far
+                + layout
+                    .noncontact
+                    .tail_sum(layout.noncontact.all.len(), lo, hi, h0, stretch)
+                + layout.contact.tail_sum(curve.kept, lo, hi, h0, stretch)
+                + tail_window(
+                    &curve.cut.interference,
+                    &curve.cut.load,
+                    lo,
+                    hi,
+                    h0,
+                    stretch,
+                );
+            total += curve.factor * sum;
+        }
+        Some(total)
     }
 }
 
@@ -1029,6 +1179,63 @@ mod tests {
             clustered >= 8,
             "the hub's curves have dense runs: {clustered}"
         );
+    }
+
+    /// The same for the work of separation's sums Σ f T_0(h0 + Δ): the
+    /// clusters' series of T_0 against the nodes one by one (in the same
+    /// window), within 1e-14 of Σ|f| T_0 (rounding), on the same curves,
+    /// stretches and separations.
+    #[test]
+    fn clusters_sum_the_tail_as_their_nodes() {
+        for index in 16..20 {
+            let layout = layout(index, 15);
+            for share in [&layout.noncontact, &layout.contact] {
+                let n = share.all.len();
+                for stretch in [1.0, 0.92, 0.841] {
+                    for h0 in [-6.0, -1.3, 0.0, 0.4, 2.0, 7.5, 16.0] {
+                        let (lo, hi) = ((-h0 - REACH) / stretch, (-h0 + REACH) / stretch);
+                        let got = share.tail_sum(n, lo, hi, h0, stretch);
+                        let (mut want, mut size) = (0.0, 0.0f64);
+                        for (&d, &f) in share.all.interference.iter().zip(&share.all.load) {
+                            // The window's: the whole tail below it, nothing above.
+                            let t = if d < lo {
+                                SQRT_TWO_PI
+                            } else if d <= hi {
+                                gaussian_tail(h0 + stretch * d)
+                            } else {
+                                0.0
+                            };
+                            want += f * t;
+                            size += (f * t).abs();
+                        }
+                        assert!(
+                            (got - want).abs() <= 1e-14 * size.max(1e-300),
+                            "curve {index} stretch {stretch} h0 {h0}: {got} vs {want}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// The far field below a layout's first node, on panels shrinking by 1.5
+    /// against 1.05 in τ (three times as many): the same integral to 5e-13
+    /// (4e-15 but where the layout starts on the contact part, s = 0.01),
+    /// on curves across the table and scales from 0.01 to 300.
+    #[test]
+    fn the_far_field_is_converged() {
+        for index in [0, 8, 16, 19, 26, 33] {
+            for s in [0.01, 1.0, 8.0, 300.0] {
+                let a = far_load(&curves()[index], s, -30.0, FAR_GROWTH);
+                let b = far_load(&curves()[index], s, -30.0, 1.05);
+                assert!(a < 0.0, "curve {index} s {s}: attracted summits pull ({a})");
+                let tol = if s < 0.1 { 5e-13 } else { 4e-15 };
+                assert!(
+                    (a - b).abs() <= tol * b.abs(),
+                    "curve {index} s {s}: {a} vs {b}"
+                );
+            }
+        }
     }
 
     /// Δc from the cached bracket against plain bisection from the contact
