@@ -449,9 +449,14 @@ fn humidity_command_end_to_end() {
     ))
     .unwrap();
     let t = json["threshold_humidity"].as_f64().unwrap();
-    // Γ at the threshold is ten times the dry Γ (bisected to 1e-12 in RH).
+    // Γ at the threshold is ten times the dry Γ (bisected to 1e-12 in RH);
+    // the shipped humid hub takes the Lennard-Jones law.
     let g = |rh: f64| {
-        evaluate(&hub(Some(rh)), &EvaluationOptions::default())
+        let scene = Scene {
+            adhesion_model: wearopt::model::AdhesionModel::LennardJones,
+            ..hub(Some(rh))
+        };
+        evaluate(&scene, &EvaluationOptions::default())
             .humidity
             .unwrap()
             .apparent_work_of_adhesion
