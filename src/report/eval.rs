@@ -565,7 +565,9 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
         vec!["contacts".into(), sig_exp(ev.contact_count, 4)],
         vec![
             "mean real pressure W/A_r".into(),
-            ev.mean_real_pressure.map_or("—".into(), |x| q(x, "Pa")),
+            ev.mean_real_pressure.map_or("—".into(), |x| {
+                format!("{}{}", q(x, "Pa"), pressure_note(x, sc.hardness))
+            }),
         ],
         vec![
             "pull-off force".into(),
@@ -718,6 +720,20 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
         );
     }
     p.finish()
+}
+
+/// Why W/A_r can exceed the hardness (the model's area measure), beside the
+/// number where it does; empty otherwise.
+fn pressure_note(pressure: f64, hardness: f64) -> String {
+    if pressure > hardness {
+        format!(
+            " (above H = {}: A_r counts every contact as πRδ, the model's area, while a plastic \
+             junction carries H over 2πRδ; a nominal pressure, not the pressure inside a contact)",
+            si(hardness, "Pa", 3)
+        )
+    } else {
+        String::new()
+    }
 }
 
 /// A report for people.
@@ -877,7 +893,11 @@ pub fn text(r: &EvalReport) -> String {
         )
     ));
     if let Some(p) = ev.mean_real_pressure {
-        line(format!("  mean real pressure W/A_r = {}", si(p, "Pa", 4)));
+        line(format!(
+            "  mean real pressure W/A_r = {}{}",
+            si(p, "Pa", 4),
+            pressure_note(p, sc.hardness)
+        ));
     }
     let carried =
         ev.elastic_load.abs() + ev.plastic_load.abs() + ev.noncontact_load.map_or(0.0, f64::abs);

@@ -452,7 +452,14 @@ fn shipped_scenes_use_the_law_their_tabor_parameter_calls_for() {
         let phi = ev.indices.tabor_parameter;
         let humid = p.scene.environment.is_some();
         let stem = path.file_stem().unwrap().to_str().unwrap();
-        let want = if ["micro-gear", "micro-gear-humid", "gold-switch", "latch-pareto"].contains(&stem) {
+        let want = if [
+            "micro-gear",
+            "micro-gear-humid",
+            "gold-switch",
+            "latch-pareto",
+        ]
+        .contains(&stem)
+        {
             AdhesionModel::LennardJones
         } else if phi < 0.3 || humid {
             AdhesionModel::Dmt

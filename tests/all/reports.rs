@@ -35,6 +35,46 @@ fn eval_text_units_are_si() {
     assert!(t.contains("Richardson"), "{t}");
 }
 
+/// W/A_r above the hardness is the model's area measure at work (every contact
+/// counted as πRδ, a plastic junction carrying H over 2πRδ): the report says
+/// so beside the number on a stiff, soft-surfaced hub (E 400 GPa, H 1 GPa: 80 %
+/// of the area plastic, W/A_r = 1.54 GPa), and says nothing where W/A_r < H.
+#[test]
+fn a_mean_real_pressure_above_the_hardness_is_explained() {
+    let dir = std::env::temp_dir().join(format!("wearopt-pressure-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let hub = std::fs::read_to_string("problems/micro-gear.toml").unwrap();
+    let stiff = hub
+        .replace(
+            "a = { material = \"polysilicon\" }",
+            "a = { youngs_modulus = \"400 GPa\", poisson_ratio = 0.22 }",
+        )
+        .replace(
+            "work_of_adhesion = \"0.1 J/m^2\"",
+            "work_of_adhesion = \"0.1 J/m^2\"\nhardness = \"1 GPa\"",
+        );
+    let path = dir.join("stiff.toml");
+    std::fs::write(&path, stiff).unwrap();
+    let t = stdout_of(&["eval", path.to_str().unwrap()]);
+    let line = t
+        .lines()
+        .find(|l| l.contains("mean real pressure"))
+        .unwrap();
+    assert!(
+        line.contains("GPa (above H = 1.00 GPa: A_r counts every contact as πRδ"),
+        "{line}"
+    );
+    let html = stdout_of(&["eval", path.to_str().unwrap(), "--format", "html"]);
+    assert!(html.contains("above H = 1.00 GPa"), "{html}");
+    let t = stdout_of(&["eval", "problems/micro-gear.toml"]);
+    let line = t
+        .lines()
+        .find(|l| l.contains("mean real pressure"))
+        .unwrap();
+    assert!(!line.contains("above H"), "{line}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn curve_refuses_negative_indices_in_its_own_words() {
     for (flag, value) in [("--theta", "-1"), ("--lambda", "-2")] {
