@@ -301,6 +301,21 @@ impl Curve {
         ((a * a + 2.0 * a * slope * (d - max)).sqrt(), inner)
     }
 
+    /// [`Curve::contact_area`] with the δ̂-derivatives: (â, dâ/dδ̂) and
+    /// (P̂_in, dP̂_in/dδ̂), the same values.
+    pub fn contact_area_slope(&self, d: f64) -> ((f64, f64), (f64, f64)) {
+        let max = self.max_interference();
+        let k = self.panel(d.min(max));
+        if d <= max {
+            return (self.radius[k].at(d), self.inner[k].at(d));
+        }
+        let (a, slope) = self.radius[k].at(max);
+        let (load, load_slope) = self.contact(d);
+        let inner = self.inner[k].at(max).0 - self.contact(max).0 + load;
+        let radius = (a * a + 2.0 * a * slope * (d - max)).sqrt();
+        ((radius, a * slope / radius), (inner, load_slope))
+    }
+
     /// C of the tail beyond δ̂_max, P̂ = (δ̂ − C)^{3/2} − B: its branch point.
     pub fn tail_branch(&self) -> f64 {
         self.tail.0
