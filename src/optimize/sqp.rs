@@ -110,12 +110,15 @@ pub struct SqpSettings {
     /// evaluation per doubling (default 1.25; infinite: never).
     pub extend_ratio: f64,
     /// Duality-gap tolerance (absolute and relative) of clarabel's solve of
-    /// each subproblem (default 1e-12: near convergence the model's changes
-    /// are ~1e-12).
+    /// each subproblem (default 1e-10). The subproblem is solved normalised,
+    /// its objective O(1) on a step of its own scale (see `qp`), so this is
+    /// relative to the model's change over the step; at 1e-12 clarabel
+    /// often ends `AlmostSolved`.
     pub qp_tolerance: f64,
     /// The same while the gradients are forward differences, far from a
     /// solution, where a step need not be exact (default 1e-8: about two
-    /// interior-point iterations fewer per subproblem).
+    /// interior-point iterations fewer per subproblem; the rows the step
+    /// meets are met exactly all the same, see `qp`).
     pub far_qp_tolerance: f64,
     /// clarabel's interior-point iteration cap per subproblem (default 100; a
     /// well-scaled subproblem takes 10–20).
@@ -172,7 +175,7 @@ impl Default for SqpSettings {
             active_tolerances: vec![1e-10, 1e-7, 1e-4],
             bound_snap: 1e-6,
             extend_ratio: 1.25,
-            qp_tolerance: 1e-12,
+            qp_tolerance: 1e-10,
             far_qp_tolerance: 1e-8,
             qp_max_iterations: 100,
         }
@@ -923,9 +926,18 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             self.stop_stuck();
             return Ok((state.cost(v.objective), Some(self.kv())));
         }
-        // Penalty: above the multipliers by a margin; up when the
-        // linearisation could not be met.
-        let lmax = norm_inf(&step.multipliers);
+        // Penalty: above the multipliers of the rows the step meets by a
+        // margin; up when the linearisation could not be met. A row whose
+        // linearisation the step misses (slack > 0) has multiplier ρ itself
+        // and is left out: with it the margin would double ρ at every such
+        // step, to 1e8-1e10 before the rows are met, and the merit would then
+        // see nothing but the violation.
+        let lmax = step
+            .multipliers
+            .iter()
+            .zip(&step.slack)
+            .filter(|(_, t)| **t == 0.0)
+            .fold(0.0f64, |m, (l, _)| m.max(*l));
         let slack: f64 = step.slack.iter().sum();
         self.penalty = self
             .penalty
