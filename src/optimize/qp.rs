@@ -7,6 +7,8 @@
 //!            ‖p‖₂ ≤ Δ                               (trust region, a second-order cone)
 //! ```
 //!
+//! (The SQP poses it in its trust region's scaled variables, `sqp`.)
+//!
 //! clarabel sees it normalised (`solve`): the step in a unit σ of its own
 //! expected length, each row over its gradient's norm, the objective O(1),
 //! the elastic slacks at cost 1, so that its tolerances mean the same

@@ -1,5 +1,6 @@
 //! A trust-region SQP for any [`NonlinearProgram`], as an argmin [`Solver`]:
-//! quasi-Newton (damped BFGS) subproblems solved by clarabel (`qp`),
+//! quasi-Newton (damped BFGS) subproblems solved by clarabel (`qp`) in a
+//! trust region scaled to the variables' sizes,
 //! elastic mode for inconsistent linearisations, acceptance by the ℓ1 merit
 //! function `φ = f + ρ Σ max(0, g_j)` with a second-order correction, and
 //! convergence on the KKT residual of `multipliers::kkt` measured in
@@ -43,8 +44,14 @@ pub struct SqpSettings {
     pub max_iterations: u64,
     /// Wall-clock limit (default none).
     pub time_limit: Option<Duration>,
-    /// Initial trust radius, relative to max(1, ‖x0‖∞) (default 0.3).
+    /// Initial trust radius (default 0.3): in the units of the scaled trust
+    /// region (`scaled_trust_region`), else relative to max(1, ‖x0‖∞).
     pub initial_radius: f64,
+    /// The trust region bounds ‖D⁻¹p‖₂, D_i = max(|x_i|, scale_i) at the
+    /// current point, instead of ‖p‖₂ (default true): a step may then change
+    /// each variable by the same fraction of its size, so variables of 1e-4
+    /// and 1e3 beside each other (HS 116) both move.
+    pub scaled_trust_region: bool,
     /// A step is accepted when actual/predicted merit reduction exceeds this (default 0.1).
     pub accept_ratio: f64,
     /// The radius grows when the ratio is at least this and the step reached the radius (default 0.5).
@@ -55,7 +62,8 @@ pub struct SqpSettings {
     pub grow_factor: f64,
     /// Factor of shrinking, applied to the step length on rejection (default 0.5).
     pub shrink_factor: f64,
-    /// The run stops (`stalled`) when the radius falls below this times max(1, ‖x‖∞) (default 1e-12).
+    /// The run stops (`stalled`) when the radius falls below this (times
+    /// max(1, ‖x‖∞) without the scaled trust region) (default 1e-12).
     pub min_radius: f64,
     /// The run stops (`stalled`) after this many rejected steps in a row (default 30).
     pub max_rejections: usize,
@@ -155,6 +163,7 @@ impl Default for SqpSettings {
             max_iterations: 200,
             time_limit: None,
             initial_radius: 0.3,
+            scaled_trust_region: true,
             accept_ratio: 0.1,
             grow_ratio: 0.5,
             shrink_ratio: 0.25,
@@ -291,6 +300,9 @@ pub(crate) struct Sqp {
     hessian: DMatrix<f64>,
     radius: f64,
     max_radius: f64,
+    /// D of the trust region at the current point (all 1 without the
+    /// scaled trust region).
+    trust_scale: Vec<f64>,
     penalty: f64,
     qp_multipliers: Vec<f64>,
     kkt: Option<(Kkt, Vec<f64>)>,
@@ -332,6 +344,7 @@ impl Sqp {
             hessian: DMatrix::identity(0, 0),
             radius: settings.initial_radius,
             max_radius: 1.0,
+            trust_scale: Vec::new(),
             penalty: settings.penalty_initial,
             qp_multipliers: Vec::new(),
             kkt: None,
@@ -538,30 +551,91 @@ impl Sqp {
             .unwrap_or(least)
     }
 
-    fn include(&self, rows: &[f64], jacobian: &[Vec<f64>], radius: f64) -> Vec<bool> {
-        rows.iter()
-            .zip(jacobian)
-            .map(|(&g, d)| g + norm2(d) * radius >= -1e-12 * (1.0 + g.abs()))
-            .collect()
+    /// D of the trust region at x.
+    fn trust_scale_at(&self, x: &[f64]) -> Vec<f64> {
+        if self.settings.scaled_trust_region {
+            x.iter()
+                .zip(&self.scale)
+                .map(|(a, s)| a.abs().max(*s).max(f64::MIN_POSITIVE))
+                .collect()
+        } else {
+            vec![1.0; x.len()]
+        }
+    }
+
+    /// ‖D⁻¹p‖₂: a step's length as the trust region measures it.
+    fn trust_length(&self, p: &[f64]) -> f64 {
+        p.iter()
+            .zip(&self.trust_scale)
+            .map(|(a, d)| (a / d) * (a / d))
+            .sum::<f64>()
+            .sqrt()
+    }
+
+    /// What radii relative to the point are relative to: 1 with the scaled
+    /// trust region (it is relative already), max(1, ‖x‖∞) without.
+    fn radius_unit(&self, x: &[f64]) -> f64 {
+        if self.settings.scaled_trust_region {
+            1.0
+        } else {
+            norm_inf(x).max(1.0)
+        }
+    }
+
+    /// The subproblem in the trust region's variables v = D⁻¹p (the Hessian
+    /// DBD, the gradients D∇), its step mapped back to p.
+    fn scaled_subproblem(
+        &self,
+        hessian: &DMatrix<f64>,
+        gradient: &[f64],
+        rows: &[f64],
+        radius: f64,
+        penalty: f64,
+        all_rows: bool,
+    ) -> Result<qp::Step, qp::QpFailure> {
+        let g = self.grads.as_ref().expect("initialised");
+        let d = &self.trust_scale;
+        let n = d.len();
+        let scaled = |v: &[f64]| -> Vec<f64> { v.iter().zip(d).map(|(a, s)| a * s).collect() };
+        let unscaled = |v: &[f64]| -> Vec<f64> { v.iter().zip(d).map(|(a, s)| a / s).collect() };
+        let jacobian: Vec<Vec<f64>> = g.rows.iter().map(|r| scaled(r)).collect();
+        let include = if all_rows {
+            vec![true; rows.len()]
+        } else {
+            rows.iter()
+                .zip(&jacobian)
+                .map(|(&g, dg)| g + norm2(dg) * radius >= -1e-12 * (1.0 + g.abs()))
+                .collect()
+        };
+        let h = DMatrix::from_fn(n, n, |i, j| hessian[(i, j)] * d[i] * d[j]);
+        let mut step = qp::solve(&Subproblem {
+            x: &unscaled(&self.x),
+            lower: &unscaled(&self.lower),
+            upper: &unscaled(&self.upper),
+            include: &include,
+            hessian: &h,
+            gradient: &scaled(gradient),
+            rows,
+            jacobian: &jacobian,
+            radius,
+            penalty,
+            gap_tolerance: self.gap_tolerance(),
+            max_iterations: self.settings.qp_max_iterations,
+        })?;
+        step.p = scaled(&step.p);
+        Ok(step)
     }
 
     fn subproblem(&self, rows: &[f64], radius: f64) -> Result<qp::Step, qp::QpFailure> {
         let g = self.grads.as_ref().expect("initialised");
-        let include = self.include(rows, &g.rows, radius);
-        qp::solve(&Subproblem {
-            x: &self.x,
-            lower: &self.lower,
-            upper: &self.upper,
-            include: &include,
-            hessian: &self.hessian,
-            gradient: &g.objective,
+        self.scaled_subproblem(
+            &self.hessian,
+            &g.objective,
             rows,
-            jacobian: &g.rows,
             radius,
-            penalty: self.penalty,
-            gap_tolerance: self.gap_tolerance(),
-            max_iterations: self.settings.qp_max_iterations,
-        })
+            self.penalty,
+            false,
+        )
     }
 
     /// The subproblem's duality-gap tolerance: loose while the gradients are
@@ -585,33 +659,24 @@ impl Sqp {
 
     /// The least linearised violation any step within `radius` reaches.
     fn least_linear_violation(&self, v: &Values, radius: f64) -> Option<f64> {
-        let g = self.grads.as_ref().expect("initialised");
         let n = self.x.len();
-        let tiny = DMatrix::identity(n, n) * 1e-8;
-        let include = vec![true; v.constraints.len()];
+        // 1e-8 in the trust region's variables.
+        let tiny = DMatrix::from_fn(n, n, |i, j| {
+            if i == j {
+                1e-8 / (self.trust_scale[i] * self.trust_scale[i])
+            } else {
+                0.0
+            }
+        });
         let zero = vec![0.0; n];
-        let sp = Subproblem {
-            x: &self.x,
-            lower: &self.lower,
-            upper: &self.upper,
-            include: &include,
-            hessian: &tiny,
-            gradient: &zero,
-            rows: &v.constraints,
-            jacobian: &g.rows,
-            radius,
-            penalty: 1.0,
-            gap_tolerance: self.gap_tolerance(),
-            max_iterations: self.settings.qp_max_iterations,
-        };
-        qp::solve(&sp)
+        self.scaled_subproblem(&tiny, &zero, &v.constraints, radius, 1.0, true)
             .ok()
             .map(|step| self.linear_violation(&v.constraints, &step.p))
     }
 
     /// Whether no step decreases the linearised violation (a stationary point of it).
     fn violation_stationary(&self, v: &Values) -> bool {
-        let radius = self.settings.initial_radius * norm_inf(&self.x).max(1.0);
+        let radius = self.settings.initial_radius * self.radius_unit(&self.x);
         self.least_linear_violation(v, radius)
             .is_none_or(|least| least >= v.violation() * (1.0 - PROBE_DECREASE))
     }
@@ -655,7 +720,7 @@ impl Sqp {
     fn steps_too_little_to_feasibility(&self, v: &Values, p: &[f64]) -> bool {
         let viol = v.violation();
         let reached = viol - self.linear_violation(&v.constraints, p);
-        match self.least_linear_violation(v, norm2(p).max(1e-300)) {
+        match self.least_linear_violation(v, self.trust_length(p).max(1e-300)) {
             Some(least) => reached < 0.5 * (viol - least),
             None => true,
         }
@@ -691,7 +756,7 @@ impl Sqp {
     fn reject(&mut self, step_length: f64) {
         self.radius = self.settings.shrink_factor * step_length.min(self.radius);
         self.rejections += 1;
-        let floor = self.settings.min_radius * norm_inf(&self.x).max(1.0);
+        let floor = self.settings.min_radius * self.radius_unit(&self.x);
         if self.radius < floor || self.rejections > self.settings.max_rejections {
             self.stop_stuck();
         }
@@ -727,7 +792,7 @@ impl Sqp {
     ) -> (Vec<f64>, Values) {
         loop {
             let s: Vec<f64> = to.iter().zip(x).map(|(a, b)| a - b).collect();
-            let len = norm2(&s);
+            let len = self.trust_length(&s);
             if len >= 0.99 * self.radius || len == 0.0 {
                 break;
             }
@@ -825,15 +890,15 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         self.x = self.project(&x0);
         let n = self.x.len();
         self.hessian = DMatrix::identity(n, n);
-        let xs = norm_inf(&self.x).max(1.0);
-        self.radius = self.settings.initial_radius * xs;
+        self.trust_scale = self.trust_scale_at(&self.x);
+        self.radius = self.settings.initial_radius * self.radius_unit(&self.x);
         let widths: Vec<f64> = self
             .lower
             .iter()
             .zip(&self.upper)
             .map(|(l, u)| u - l)
             .collect();
-        self.max_radius = norm2(&widths).max(self.radius);
+        self.max_radius = self.trust_length(&widths).max(self.radius);
         let x = self.x.clone();
         let values = self.evaluate(prog, &x, &[]);
         let grads = values
@@ -899,7 +964,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         // estimate without the trust region serves only the KKT test: it is
         // solved only where the least-squares one says the point is near a
         // KKT point (residual within the Richardson threshold).
-        let p_len = norm2(&step.p);
+        let p_len = self.trust_length(&step.p);
         let mut extra = vec![step.multipliers.clone()];
         let near = self.settings.richardson_threshold();
         if p_len >= 0.99 * self.radius && least.0.residual <= near {
@@ -920,7 +985,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         let target: Vec<f64> = x_old.iter().zip(&step.p).map(|(a, b)| a + b).collect();
         let mut trial_x = self.project(&target);
         let moved: Vec<f64> = trial_x.iter().zip(&x_old).map(|(a, b)| a - b).collect();
-        if p_len <= self.settings.step_tolerance * xs
+        if p_len <= self.settings.step_tolerance * self.radius_unit(&x_old)
             || norm2(&moved) <= self.settings.step_tolerance * xs
         {
             self.stop_stuck();
@@ -998,7 +1063,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         };
         let s: Vec<f64> = trial_x.iter().zip(&x_old).map(|(a, b)| a - b).collect();
         self.update_hessian(&s, &grads, &new_grads, &step.multipliers);
-        let s_len = norm2(&s);
+        let s_len = self.trust_length(&s);
         if ratio >= self.settings.grow_ratio && s_len >= 0.8 * self.radius {
             self.radius = (self.settings.grow_factor * self.radius).min(self.max_radius);
         } else if ratio < self.settings.shrink_ratio {
@@ -1011,6 +1076,7 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         self.rejections = 0;
         self.qp_multipliers = step.multipliers;
         self.x = trial_x;
+        self.trust_scale = self.trust_scale_at(&self.x);
         let cost = trial.objective;
         let gradient = new_grads.objective.clone();
         self.kkt = None;
