@@ -80,6 +80,26 @@ pub struct SqpSettings {
     pub penalty_growth: f64,
     /// Largest ρ (default 1e10).
     pub penalty_max: f64,
+    /// After an accepted step that did not multiply ρ by the growth, ρ falls towards
+    /// max(initial ρ, margin × the step's largest multiplier) by this factor
+    /// of its excess (default 0.5, as SLSQP's ½(ρ + |λ|); 1: ρ never falls).
+    /// A ρ raised early, far from the solution, to thousands of times the
+    /// multipliers makes the merit see nothing but the violation the rows'
+    /// curvature leaves after each step: the ratio of actual to predicted
+    /// reduction stays low, the radius stays small and the run crawls (HS
+    /// 106, HS 116).
+    pub penalty_decay: f64,
+    /// The merit weighs each row's violation by its own ρ_j, as SLSQP's:
+    /// at least the margin times the row's multiplier, its excess over that
+    /// shrunk by `penalty_decay` at each iteration, at least the initial ρ
+    /// and at most ρ, which stays the subproblem's elastic penalty (default
+    /// true; false: every ρ_j is ρ). With one ρ for all rows, rows whose
+    /// multipliers are 1e5 times apart (HS 106: ~1e3 on its linear rows,
+    /// ~1e-2 on its bilinear ones) weigh the violation the bilinear rows'
+    /// curvature leaves after each step at the linear rows' price: the
+    /// ratio of actual to predicted merit reduction stays below
+    /// `grow_ratio`, the radius small, and the run crawls.
+    pub row_penalties: bool,
     /// Finite-difference step relative to max(|x_i|, scale_i) (default 1e-4).
     pub fd_step: f64,
     /// Gradients are forward differences (one evaluation per variable) until
@@ -180,6 +200,8 @@ impl Default for SqpSettings {
             penalty_margin: 2.0,
             penalty_growth: 10.0,
             penalty_max: 1e10,
+            penalty_decay: 0.5,
+            row_penalties: true,
             fd_step: 1e-4,
             central_below: 1e-3,
             richardson_below: 1e-4,
@@ -309,6 +331,10 @@ pub(crate) struct Sqp {
     /// scaled trust region).
     trust_scale: Vec<f64>,
     penalty: f64,
+    /// The initial ρ: the least ρ falls to ([`SqpSettings::penalty_decay`]).
+    penalty_floor: f64,
+    /// Each row's weight in the merit, at most ρ ([`SqpSettings::row_penalties`]).
+    row_penalty: Vec<f64>,
     qp_multipliers: Vec<f64>,
     kkt: Option<(Kkt, Vec<f64>)>,
     /// The least-squares estimate at the current values and gradients, once
@@ -351,6 +377,8 @@ impl Sqp {
             max_radius: 1.0,
             trust_scale: Vec::new(),
             penalty: settings.penalty_initial,
+            penalty_floor: settings.penalty_initial,
+            row_penalty: Vec::new(),
             qp_multipliers: Vec::new(),
             kkt: None,
             least: None,
@@ -481,7 +509,51 @@ impl Sqp {
     }
 
     fn merit(&self, v: &Values) -> f64 {
-        v.objective + self.penalty * v.violation()
+        v.objective + self.weighted_violation(&v.constraints)
+    }
+
+    /// Σ_j ρ_j max(0, g_j): the merit's share of the rows.
+    fn weighted_violation(&self, rows: &[f64]) -> f64 {
+        rows.iter()
+            .zip(&self.row_penalty)
+            .map(|(g, r)| r * g.max(0.0))
+            .sum()
+    }
+
+    /// Σ_j ρ_j max(0, g_j + ∇g_jᵀp).
+    fn weighted_linear_violation(&self, rows: &[f64], p: &[f64]) -> f64 {
+        let g = self.grads.as_ref().expect("initialised");
+        rows.iter()
+            .zip(&g.rows)
+            .zip(&self.row_penalty)
+            .map(|((&r, d), w)| w * (r + d.iter().zip(p).map(|(a, b)| a * b).sum::<f64>()).max(0.0))
+            .sum()
+    }
+
+    /// The rows' weights after a step whose multipliers are `lambda` (a row
+    /// the step misses, slack > 0, counts as multiplier ρ): each at least
+    /// the margin times its multiplier, falling towards that from above by
+    /// `penalty_decay`, at least the initial ρ and at most ρ.
+    fn update_row_penalties(&mut self, lambda: &[f64], slack: &[f64]) {
+        let m = self.row_penalty.len();
+        for j in 0..m {
+            let t = if self.settings.row_penalties {
+                if slack[j] == 0.0 {
+                    self.settings.penalty_margin * lambda[j]
+                } else {
+                    self.penalty
+                }
+            } else {
+                self.penalty
+            };
+            let r = self.row_penalty[j];
+            let next = if r > t {
+                t + self.settings.penalty_decay * (r - t)
+            } else {
+                t
+            };
+            self.row_penalty[j] = next.max(self.penalty_floor).min(self.penalty);
+        }
     }
 
     fn kkt_data<'a>(&'a self, v: &'a Values, g: &'a Gradients) -> KktData<'a> {
@@ -914,6 +986,8 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             return Ok((state, None));
         };
         self.penalty = self.settings.penalty_initial * norm_inf(&grads.objective).max(1.0);
+        self.penalty_floor = self.penalty;
+        self.row_penalty = vec![self.penalty; values.constraints.len()];
         self.qp_multipliers = vec![0.0; values.constraints.len()];
         let cost = values.objective;
         let gradient = grads.objective.clone();
@@ -1013,8 +1087,9 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
             .penalty
             .max(self.settings.penalty_margin * lmax)
             .min(self.settings.penalty_max);
-        let predicted = -step.objective_change
-            + self.penalty * (v.violation() - self.linear_violation(&v.constraints, &step.p));
+        self.update_row_penalties(&step.multipliers, &step.slack);
+        let predicted = -step.objective_change + self.weighted_violation(&v.constraints)
+            - self.weighted_linear_violation(&v.constraints, &step.p);
         let noise = self.settings.merit_noise * (1.0 + self.merit(&v).abs());
         let mut trial = self.evaluate(prog, &trial_x, &v.warm_start);
         let ratio_of = |s: &Sqp, t: &Option<Values>| match t {
@@ -1077,6 +1152,11 @@ impl<P: NonlinearProgram + Sync + ?Sized> Solver<Program<'_, P>, SqpState> for S
         if slack > 1e-9 && self.steps_too_little_to_feasibility(&v, &step.p) {
             self.penalty =
                 (self.settings.penalty_growth * self.penalty).min(self.settings.penalty_max);
+        } else {
+            let target = self.penalty_floor.max(self.settings.penalty_margin * lmax);
+            if self.penalty > target {
+                self.penalty = target + self.settings.penalty_decay * (self.penalty - target);
+            }
         }
         self.rejections = 0;
         self.qp_multipliers = step.multipliers;

@@ -562,16 +562,7 @@ fn problems() -> Vec<Hs> {
 /// 1e-6 of f* from the standard start with the default settings, and how each
 /// run ends. The test fails when this list is wrong either way: a problem that
 /// starts failing, or one that a change has fixed (then take it off).
-const NOT_YET_SOLVED: &[(u32, &str)] = &[
-    (
-        106,
-        "iteration_limit at f 36 % above f*: variables 10 to 1e4 and rows up to 1e6",
-    ),
-    (
-        116,
-        "iteration_limit at f 60 % above f*: variables 1e-4 to 1e3",
-    ),
-];
+const NOT_YET_SOLVED: &[(u32, &str)] = &[];
 
 /// One problem of the independent Python transcription and its SLSQP runs
 /// (`scripts/hock_schittkowski.py`, `tests/data/hock_schittkowski_slsqp.json`).
@@ -1580,8 +1571,11 @@ fn more_problems() -> Vec<Hs> {
             ],
             |x| x[10] + x[11] + x[12],
             hs116_c,
-            97.5884089805,
-            "HS 116: f* = 97.5884089805",
+            // The book's FEX, 97.5884089805, is 9.2e-6 above a point feasible
+            // to 1e-13 (x7 = 574.07757, not 574.08031); later collections
+            // list this lower value.
+            97.5875095537,
+            "HS 116: f* = 97.5875095537 (FEX 97.5884089805 is 9.2e-6 above)",
         ),
         Hs::new(
             117,
