@@ -795,6 +795,7 @@ fn newton_root(
     let mut steps = [f64::INFINITY; 2];
     let mut newton_taken = false;
     let mut expand = 1.0_f64;
+    let mut pull_step = 1.0_f64;
     loop {
         let contact = |ev: &Counter, at: Integrals| {
             (
@@ -854,7 +855,24 @@ fn newton_root(
         // where Newton is linear): bisect what is known.
         let slow = bracketed && newton.is_some_and(|n| (n - x).abs() > 0.5 * steps[1]);
         let reach = 4.0 * x.abs().max(1.0);
+        // One-sided on a falling piece where a meniscus's pull still outweighs
+        // the contacts, P̄ ≤ 0 < W: the linear Newton step follows the
+        // meniscus's flat plateau far past the root, which lies where the
+        // contacts load up, their load growing like e^{h Δh}. Step one unit
+        // towards it, doubling while P̄ stays ≤ 0 (16 → 9 evaluations on the
+        // humid hub; without a meniscus the solid attraction's slope guides
+        // Newton well enough, and a strong JKR scene took more this way).
+        let pulled = !bracketed
+            && falling
+            && target > 0.0
+            && ev.model.capillary.is_some()
+            && cur.load().signum() <= 0.0;
         let (next, is_newton) = match newton {
+            _ if pulled => {
+                let step = pull_step.min(reach);
+                pull_step *= 2.0;
+                (x - step, false)
+            }
             Some(n) if !slow && (bracketed || (n - x).abs() <= reach) => (n, true),
             // One-sided and far: at most `reach` toward the root.
             Some(n) if !slow => (x + reach.copysign(n - x), false),

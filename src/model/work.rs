@@ -217,8 +217,14 @@ pub fn work_of_separation(model: &Model, from: f64) -> (f64, usize) {
         (_, Some((table, solid))) => exchanged_tabulated(model, table, solid, from),
         _ => work_by_separation(model, from),
     };
-    // A work that underflows (a minimum at h ~ 150: e^{-1e4}) is 0, not −0.
-    (work + 0.0, evaluations)
+    // A work that underflows (a minimum at h ~ 150: e^{-1e4}) is 0, not −0 or
+    // a subnormal of either sign (the rounding of shares that underflowed).
+    let work = if work.abs() < f64::MIN_POSITIVE {
+        0.0
+    } else {
+        work
+    };
+    (work, evaluations)
 }
 
 /// The levels of the weight's log at which the contact pieces start split.

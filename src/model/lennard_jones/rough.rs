@@ -389,15 +389,17 @@ fn add_moments(share: &mut [f64; 3], g: f64, u: f64) {
 
 /// The separations the per-scene [`Grid`] serves, h ∈ [lo, hi]; outside, the
 /// shares are integrated at h itself. Every evaluation of `eval` on the
-/// shipped dry Lennard-Jones scenes lies in 1.06…3.9, of `optimize` on the
-/// hub's study in 0.47…11.0; a meniscus's separation search on the humid hub
-/// steps to h = −9.0 (one windowed evaluation there cost more than the rest of
-/// the solve), hence −12. The layouts are built once per process, so the
-/// range costs a scene nothing. Above 16 the approach part's panels would
-/// start further out and land elsewhere near the switch: at ℓ = 0.59 a grid
-/// for h ≤ 40 missed the adaptive reference by 2e-11 where this one misses
-/// by 5e-13 (`the_stretched_grid_matches_an_adaptive_quadrature`).
-pub const GRID_SEPARATIONS: (f64, f64) = (-12.0, 16.0);
+/// shipped Lennard-Jones scenes lies in 1.06…3.9, of `optimize` on the hub's
+/// study in 0.47…11.0 (a meniscus's separation search no longer steps far
+/// out: `separation::newton_root`). Not wider: above 16 the approach part's
+/// panels would start further out and land elsewhere near the switch (at
+/// ℓ = 0.59 a grid for h ≤ 40 missed the adaptive reference by 2e-11 where
+/// this one misses by 5e-13, `the_stretched_grid_matches_an_adaptive_quadrature`);
+/// below −6 the grid's sums of the few non-contact nodes left in the window
+/// at h ≈ −9.6 differ from the windowed quadrature's in sign at 1e-28 of the
+/// load (the stability suite's million-case run found a positive non-contact
+/// load there).
+pub const GRID_SEPARATIONS: (f64, f64) = (-6.0, 16.0);
 
 /// One scene's quadrature nodes over every summit the separations of
 /// [`GRID_SEPARATIONS`] weigh, with their loads: then the shares at any such h
