@@ -323,7 +323,7 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
         }
         None => {}
     }
-    let cap_scale = model.capillary.map_or(1.0, |c| 1.0 + c.range.min(1e3));
+    let cap_scale = capillary_scale(model);
     let t_end = capillary_end(h0, cap_scale);
     if model.capillary.is_some() {
         start.push((Part::Capillary, t_end, 1.0));
@@ -357,6 +357,11 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
     };
     let integral = integrate(&start, &mut f);
     (-integral, evaluations)
+}
+
+/// L of the meniscus's map h = h0 + L (1 − t)/t: 1 plus its reach (capped).
+fn capillary_scale(model: &Model) -> f64 {
+    model.capillary.map_or(1.0, |c| 1.0 + c.range.min(1e3))
 }
 
 /// The meniscus's load over h at t of the map h = h0 + L (1 − t)/t, times dh/dt.
@@ -399,7 +404,7 @@ fn exchanged_tabulated(model: &Model, table: &dyn Tabulated, solid: f64, h0: f64
         }
     });
     if model.capillary.is_some() {
-        let scale = model.capillary.map_or(1.0, |c| 1.0 + c.range.min(1e3));
+        let scale = capillary_scale(model);
         let mut f = |_: Part, t: f64| {
             evaluations += 1;
             capillary_integrand(model, h0, scale, t)
