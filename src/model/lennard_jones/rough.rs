@@ -34,6 +34,41 @@ use crate::model::special::{exp_fast, gaussian_tail, SQRT_TWO_PI};
 /// The half-width in Δ of the weight's range: e^{-u²/2} ≥ e^{-46} inside.
 const REACH: f64 = 9.591_663_046_625_44;
 
+/// The windows in Δ of the non-contact and the contact share at h (that
+/// order) for the attraction range z0: where a summit's weight, relative to
+/// its share's scale, is at least e^{-46} of what the share holds.
+///
+/// A share scaled by e^{-h²/2} (the contact one at h > 0, the non-contact
+/// one at h < 0) holds its summits nearest Δ = 0 most: its window is where
+/// e^{-(h+Δ)²/2 + h²/2} ≥ e^{-46}, Δ ∈ −h ± √(h² + 92) (REACH
+/// either side of the peak at h = 0, wider beyond: at h = 8.7 the contact
+/// window ran only to Δ = 0.9 with e^{-hΔ} still e^{-8}, and P̄ jumped by 7e-4
+/// of the contact share as a node left it). An unscaled share's window is
+/// REACH either side of its peak Δ = −h; the non-contact one at h > 0 reaches
+/// further towards contact, where its summits pull hardest: the far summits
+/// at the peak pull less by Bradley's (z0/(z0 + h))², so the window grows by
+/// that factor's logarithm.
+fn windows(h: f64, z0: f64) -> [(f64, f64); 2] {
+    let scaled = || {
+        let half = h.mul_add(h, REACH * REACH).sqrt();
+        (-h - half, -h + half)
+    };
+    let unscaled = (-h - REACH, -h + REACH);
+    if h > 0.0 {
+        // ln(1 + h/z0) from above by the binary exponent (a window a little
+        // wider than needed, for no logarithm in the hot path).
+        let octaves = ((1.0 + h / z0).to_bits() >> 52) as f64 - 1022.0;
+        let reach = (4.0 * std::f64::consts::LN_2)
+            .mul_add(octaves, REACH * REACH)
+            .sqrt();
+        [(-h - REACH, -h + reach), scaled()]
+    } else if h < 0.0 {
+        [scaled(), unscaled]
+    } else {
+        [unscaled, unscaled]
+    }
+}
+
 /// The Gauss–Legendre order on each panel (12 on the table's narrow panels).
 const ORDER: usize = 20;
 const CONTACT_ORDER: usize = 12;
@@ -72,6 +107,8 @@ pub struct RoughLaw {
     pub ell: f64,
     /// μ.
     pub tabor: f64,
+    /// z0 = Z0/σ, the attraction's range (ẑ0/ℓ).
+    range: f64,
     nodes: [Node; 4],
     count: usize,
 }
@@ -163,6 +200,7 @@ impl RoughLaw {
         Some(RoughLaw {
             ell,
             tabor,
+            range: z0,
             nodes,
             count: stencil.len(),
         })
@@ -234,14 +272,28 @@ impl RoughLaw {
 
     fn node_at(&self, node: &Node, h: f64) -> Shares {
         let mut out = Shares::default();
-        self.visit(node, -h - REACH, -h + REACH, &mut |d, f, contact| {
+        let [below, above] = windows(h, self.range);
+        // The non-contact share ends where the contact one starts (the
+        // switch, or Δ = 0 where the switch lies below it): each share visits
+        // its own window, cut there (far out, the contact window is a sliver
+        // at Δ ≈ 46/h and the non-contact one ends near −h: one visit over
+        // both would walk the approach part between them).
+        let edge = (node.curve.switch / self.ell).max(0.0);
+        for (contact, (lo, hi)) in [
+            (false, (below.0, below.1.min(edge))),
+            (true, (above.0.max(edge), above.1)),
+        ] {
             let share = if contact {
                 &mut out.elastic
             } else {
                 &mut out.noncontact
             };
-            add_moments(share, f * Self::weight(h, d, contact), h + d);
-        });
+            self.visit(node, lo, hi, &mut |d, f, in_contact| {
+                if in_contact == contact {
+                    add_moments(share, f * Self::weight(h, d, contact), h + d);
+                }
+            });
+        }
         out
     }
 
@@ -913,12 +965,14 @@ impl Grid {
             elastic_exponent: 0.5 * h.max(0.0).powi(2),
             ..Shares::default()
         };
+        let [noncontact, contact] = windows(h, self.law.range);
         for curve in &self.curves {
-            // The window in the layout's Δ'.
-            let (lo, hi) = ((-h - REACH) / curve.stretch, (-h + REACH) / curve.stretch);
             let (stretch, factor) = (curve.stretch, curve.factor);
+            // The windows in the layout's Δ'.
+            let (lo, hi) = (noncontact.0 / stretch, noncontact.1 / stretch);
             let below = &curve.layout.noncontact;
             let part = below.sums(below.all.len(), lo, hi, h, stretch, h < 0.0);
+            let (lo, hi) = (contact.0 / stretch, contact.1 / stretch);
             for (sum, p) in out.noncontact.iter_mut().zip(part) {
                 *sum += factor * p;
             }
