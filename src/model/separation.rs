@@ -138,6 +138,9 @@ pub struct Landscape {
     pub critical_points: Vec<CriticalPoint>,
     /// Model evaluations spent finding them.
     pub evaluations: usize,
+    /// The points evaluated on the way, (h, P̄, P̄') as doubles: where the
+    /// search for P̄ = 0 starts ([`unloaded_hint`]).
+    pub samples: Vec<(f64, f64, f64)>,
 }
 
 /// The pull-off load of the rough surface: the most negative local minimum of P̄.
@@ -156,12 +159,18 @@ pub struct PullOff {
 struct Counter<'a> {
     model: &'a Model,
     evaluations: usize,
+    /// Where the points evaluated go, when they are kept.
+    samples: Option<Vec<(f64, f64, f64)>>,
 }
 
 impl Counter<'_> {
     fn at(&mut self, h: f64) -> Integrals {
         self.evaluations += 1;
-        self.model.at(h)
+        let at = self.model.at(h);
+        if let Some(samples) = &mut self.samples {
+            samples.push((h, at.load().value(), at.dload_dh().value()));
+        }
+        at
     }
 }
 
@@ -186,6 +195,7 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     let mut ev = Counter {
         model,
         evaluations: 0,
+        samples: Some(Vec::new()),
     };
     let c = model.coefficients;
     let jump = model.transition.jump;
@@ -194,6 +204,7 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
         return Landscape {
             critical_points: Vec::new(),
             evaluations: 0,
+            samples: Vec::new(),
         };
     }
     // Right end: P̄' > 0 beyond the point where the increasing terms alone are
@@ -239,6 +250,7 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
                     is_minimum: true,
                 }],
                 evaluations: ev.evaluations,
+                samples: ev.samples.unwrap_or_default(),
             };
         }
     }
@@ -317,6 +329,7 @@ pub fn landscape_from(model: &Model, hint: Option<f64>) -> Landscape {
     Landscape {
         critical_points,
         evaluations: ev.evaluations,
+        samples: ev.samples.unwrap_or_default(),
     }
 }
 
@@ -612,9 +625,26 @@ pub fn solve_separation_at(
     known: Option<&Landscape>,
     hint: Option<f64>,
 ) -> (SeparationOutcome, Option<Integrals>) {
+    solve_separation_within(model, target, known, hint, 0.0)
+}
+
+/// As [`solve_separation_at`], stopping as soon as the next step is at most
+/// `tolerance` in h, or that fraction of the length |P̄'/P̄''| over which P̄
+/// bends where it is shorter (0: to a few ulps): the point returned is the last one
+/// evaluated, within about `tolerance` of the root, for a caller that corrects
+/// for the rest itself from the model there (the apparent work of adhesion:
+/// [`super::work::work_of_separation_near`]).
+pub fn solve_separation_within(
+    model: &Model,
+    target: f64,
+    known: Option<&Landscape>,
+    hint: Option<f64>,
+    tolerance: f64,
+) -> (SeparationOutcome, Option<Integrals>) {
     let mut ev = Counter {
         model,
         evaluations: 0,
+        samples: None,
     };
     if target.is_nan() || target.abs() > MAX_LOAD {
         // Beyond any contact the model describes (h would be below -1e8), or
@@ -642,7 +672,7 @@ pub fn solve_separation_at(
                 1.0 - (target / 2.0).powf(2.0 / 3.0)
             });
         let at = ev.at(start);
-        return newton_root(&mut ev, target, at, None, None, true);
+        return newton_root(&mut ev, target, at, None, None, true, tolerance);
     }
     let computed;
     let land = match known {
@@ -707,7 +737,15 @@ pub fn solve_separation_at(
                 if in_range {
                     let start = ev.at(inside(l.separation, r.separation, hint)
                         .unwrap_or(0.5 * (l.separation + r.separation)));
-                    return newton_root(&mut ev, target, start, Some(end(l)), Some(end(r)), false);
+                    return newton_root(
+                        &mut ev,
+                        target,
+                        start,
+                        Some(end(l)),
+                        Some(end(r)),
+                        false,
+                        tolerance,
+                    );
                 }
             }
             continue;
@@ -728,7 +766,15 @@ pub fn solve_separation_at(
                 (None, None) => 0.0,
             });
             let start = ev.at(start_h);
-            return newton_root(&mut ev, target, start, left.map(end), right.map(end), true);
+            return newton_root(
+                &mut ev,
+                target,
+                start,
+                left.map(end),
+                right.map(end),
+                true,
+                tolerance,
+            );
         }
     }
     (
@@ -738,6 +784,56 @@ pub fn solve_separation_at(
         },
         None,
     )
+}
+
+/// Where P̄ = 0 likely lies left of the pull-off minimum, from what an
+/// evaluation already knows: the points its landscape evaluated, the
+/// operating point (P̄ = W there) and the minimum itself (P̄' = 0). The
+/// nearest of them on either side of the root, h < h_po, bound it: the root
+/// of the cubic that matches P̄ and P̄' at both. Where none is known above
+/// it, Halley's step from the operating point. None where neither applies.
+pub fn unloaded_hint(
+    operating: Option<&Integrals>,
+    land: &Landscape,
+    pull_off: &PullOff,
+) -> Option<f64> {
+    let po = (pull_off.separation, pull_off.load.value(), 0.0);
+    if po.1.is_nan() || po.1 >= 0.0 {
+        return None;
+    }
+    let op = operating.map(|at| (at.separation, at.load().value(), at.dload_dh().value()));
+    let known = land.samples.iter().copied().chain(op).chain([po]);
+    let usable = |s: &(f64, f64, f64)| s.0 <= po.0 && s.1.is_finite() && s.2.is_finite();
+    let above = known
+        .clone()
+        .filter(|s| usable(s) && s.1 > 0.0)
+        .max_by(|a, b| a.0.total_cmp(&b.0));
+    let Some(a) = above else {
+        let at = operating.filter(|at| at.load().signum() < 0.0)?;
+        return newton_step(0.0, at).map(|(d, _)| at.separation - d);
+    };
+    let b = known
+        .filter(|s| usable(s) && s.1 < 0.0 && s.0 > a.0)
+        .min_by(|x, y| x.0.total_cmp(&y.0))?;
+    // Cubic Hermite on t ∈ [0, 1]: H(0) = P̄(a) > 0 > P̄(b) = H(1), bisected.
+    let w = b.0 - a.0;
+    let cubic = |t: f64| {
+        let (t2, t3) = (t * t, t * t * t);
+        (2.0 * t3 - 3.0 * t2 + 1.0) * a.1
+            + (t3 - 2.0 * t2 + t) * w * a.2
+            + (3.0 * t2 - 2.0 * t3) * b.1
+            + (t3 - t2) * w * b.2
+    };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if cubic(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(a.0 + w * 0.5 * (lo + hi))
 }
 
 /// The hint when it lies strictly inside (lo, hi) (a piece's ends).
@@ -781,6 +877,7 @@ fn closer_end(left: Option<End>, right: Option<End>, here: End) -> End {
 /// ln P̄ 1e-7 from a zero of P̄), the point the step reaches is evaluated (its
 /// areas are needed anyway) and returned. Either way the result is the root to
 /// a few ulps, whatever the start: the hint changes only the cost.
+#[allow(clippy::too_many_arguments)]
 fn newton_root(
     ev: &mut Counter,
     target: f64,
@@ -788,6 +885,7 @@ fn newton_root(
     mut left: Option<End>,
     mut right: Option<End>,
     falling: bool,
+    tolerance: f64,
 ) -> (SeparationOutcome, Option<Integrals>) {
     let mut cur = start;
     // Lengths of the last two steps taken, newest first, and whether the last
@@ -845,7 +943,8 @@ fn newton_root(
             Some((d, bend)) => (Some(d), bend),
             None => (None, f64::INFINITY),
         };
-        if step.is_some_and(|d| d.abs() <= tol) {
+        // A caller's tolerance holds on the length over which P̄ bends.
+        if step.is_some_and(|d| d.abs() <= tol.max(tolerance / bend.max(1.0))) {
             return contact(ev, cur);
         }
         let newton = step

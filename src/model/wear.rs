@@ -13,7 +13,8 @@ use super::quadrature::Quadrature;
 use super::scaled::Scaled;
 use super::scene::{Scene, WearArea};
 use super::separation::{
-    landscape_from, pull_off_of, solve_separation_at, PullOff, SeparationOutcome,
+    landscape_from, pull_off_of, solve_separation_at, solve_separation_within, PullOff,
+    SeparationOutcome,
 };
 use super::special::SQRT_TWO_PI;
 use super::warnings::{self, Note, Warning};
@@ -684,13 +685,21 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         let work = if !adhesive {
             Some(0.0)
         } else if options.pull_off && options.work_of_adhesion {
-            match solve_separation_at(&model, 0.0, land.as_ref(), None).0 {
-                SeparationOutcome::Contact { separation, .. } => {
-                    let (w, _) = super::work::work_of_separation(&model, separation);
+            // Started where the operating point and the pull-off put the root,
+            // and stopped near it: Γ̄ is stationary there (`work_of_separation_near`).
+            let hint = land
+                .as_ref()
+                .zip(pull_off)
+                .and_then(|(land, po)| super::separation::unloaded_hint(found.as_ref(), land, &po));
+            let tolerance = super::work::UNLOADED_TOLERANCE;
+            match solve_separation_within(&model, 0.0, land.as_ref(), hint, tolerance) {
+                (SeparationOutcome::Contact { separation, .. }, at) => {
+                    let at = at.unwrap_or_else(|| model.at(separation));
+                    let (w, _) = super::work::work_of_separation_near(&model, &at);
                     Some(w * load_scale / an * s)
                 }
-                SeparationOutcome::Separated { .. } => Some(0.0),
-                SeparationOutcome::NotConverged { .. } => None,
+                (SeparationOutcome::Separated { .. }, _) => Some(0.0),
+                (SeparationOutcome::NotConverged { .. }, _) => None,
             }
         } else {
             None

@@ -653,3 +653,60 @@ fn a_meniscus_plateau_costs_few_evaluations() {
         );
     }
 }
+
+/// Γ starts its search for the unloaded equilibrium (P̄ = 0) where the
+/// landscape's points, the operating point and the pull-off bracket it, and
+/// stops within 1e-3 (in units of the length over which P̄ bends) of the
+/// root, integrating the strip left from P̄ and its derivatives there
+/// (`work::work_of_separation_near`): on the humid hub under the
+/// Lennard-Jones law and DMT, from dry to wet air, the same Γ to 1e-12 as
+/// from the root solved to rounding from the search's own start, in fewer
+/// evaluations (the hub at RH 0.5 under the Lennard-Jones law: 4 against 6).
+#[test]
+fn the_unloaded_equilibrium_is_found_from_what_the_evaluation_knows() {
+    use wearopt::model::separation::{solve_separation_at, solve_separation_within, unloaded_hint};
+    use wearopt::model::work::{work_of_separation, UNLOADED_TOLERANCE};
+    let (mut cheaper, mut cases) = (0, 0);
+    for law in [
+        wearopt::model::AdhesionModel::LennardJones,
+        wearopt::model::AdhesionModel::Dmt,
+    ] {
+        for rh in [0.05, 0.5, 0.9] {
+            let scene = Scene {
+                adhesion_model: law,
+                ..hub(Some(rh))
+            };
+            let ev = evaluate(&scene, &EvaluationOptions::default());
+            let got = ev.humidity.unwrap().apparent_work_of_adhesion.unwrap();
+            let m = wearopt::model::wear::model_of(&scene, Quadrature::default());
+            let land = landscape(&m);
+            let (strict, _) = solve_separation_at(&m, 0.0, Some(&land), None);
+            let SeparationOutcome::Contact {
+                separation,
+                evaluations: slow,
+            } = strict
+            else {
+                panic!("{law:?} RH {rh}: no unloaded equilibrium");
+            };
+            let scale = ev.load_scale / scene.nominal_area * scene.sigma;
+            let want = work_of_separation(&m, separation).0 * scale;
+            assert!(
+                (got - want).abs() <= 1e-12 * want,
+                "{law:?} RH {rh}: Γ {got} against {want}"
+            );
+            let (_, op) = solve_separation_at(&m, ev.nondimensional_load, Some(&land), None);
+            let hint = unloaded_hint(op.as_ref(), &land, &pull_off_of(&land).unwrap());
+            let (near, _) = solve_separation_within(&m, 0.0, Some(&land), hint, UNLOADED_TOLERANCE);
+            let SeparationOutcome::Contact {
+                evaluations: fast, ..
+            } = near
+            else {
+                panic!("{law:?} RH {rh}: {near:?}");
+            };
+            assert!(fast <= slow, "{law:?} RH {rh}: {fast} > {slow} evaluations");
+            cheaper += usize::from(fast < slow);
+            cases += 1;
+        }
+    }
+    assert!(cheaper * 2 >= cases, "cheaper in {cheaper} of {cases}");
+}
