@@ -29,7 +29,7 @@ use std::sync::OnceLock;
 
 use super::table::{curves, Curve};
 use crate::model::gauss;
-use crate::model::special::{exp_fast, gaussian_tail, SQRT_TWO_PI};
+use crate::model::special::{exp_fast, gaussian_tail_fast, SQRT_TWO_PI};
 
 /// The half-width in Δ of the weight's range: e^{-u²/2} ≥ e^{-46} inside.
 const REACH: f64 = 9.591_663_046_625_44;
@@ -648,7 +648,7 @@ fn tail_window(d: &[f64], f: &[f64], lo: f64, hi: f64, h0: f64, stretch: f64) ->
     let below: f64 = f[..first].iter().sum();
     let mut sum = SQRT_TWO_PI * below;
     for (&x, &f) in d[first..end].iter().zip(&f[first..end]) {
-        sum += f * gaussian_tail(h0 + stretch * x);
+        sum += f * gaussian_tail_fast(h0 + stretch * x);
     }
     sum
 }
@@ -669,7 +669,7 @@ impl Cluster {
             (he0, he1) = (he1, he2);
             scale *= -stretch;
         }
-        gaussian_tail(u) * self.moments[0] - (-0.5 * u * u).exp() * series
+        gaussian_tail_fast(u) * self.moments[0] - (-0.5 * u * u).exp() * series
     }
 
     /// [P̄, P̄', P̄''] of the cluster's nodes at h (Δ = `stretch` Δ'), relative
@@ -1271,7 +1271,7 @@ mod tests {
                             let t = if d < lo {
                                 SQRT_TWO_PI
                             } else if d <= hi {
-                                gaussian_tail(h0 + stretch * d)
+                                crate::model::special::gaussian_tail(h0 + stretch * d)
                             } else {
                                 0.0
                             };
