@@ -152,6 +152,10 @@ pub struct Evaluation {
     pub plastic_contact_count: f64,
     /// W / A_r (Pa); None when there is no real area.
     pub mean_real_pressure: Option<f64>,
+    /// (elastic + plastic load)/A_r (Pa): the mean pressure the contacts carry,
+    /// which adhesion (solid and capillary) raises above W/A_r: the contacts
+    /// bear the load and every pull besides. None without contact.
+    pub mean_contact_pressure: Option<f64>,
     /// Share of the load carried by elastic asperities (N).
     pub elastic_load: f64,
     /// Share of the load carried by plastic asperities (N).
@@ -635,6 +639,10 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         contact_count: at.map_or(0.0, |a| a.contacts().scale(count_scale).value()),
         plastic_contact_count: at.map_or(0.0, |a| a.plastic_contacts().scale(count_scale).value()),
         mean_real_pressure: (real_area > 0.0).then(|| scene.load / real_area),
+        mean_contact_pressure: at.filter(|_| real_area > 0.0).map(|a| {
+            let contacts = Scaled::new(a.load_elastic + a.load_plastic, a.scale_exponent);
+            contacts.scale(load_scale).value() / real_area
+        }),
         elastic_load: at.map_or(0.0, |a| {
             Scaled::new(a.load_elastic, a.scale_exponent)
                 .scale(load_scale)

@@ -566,7 +566,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
         vec![
             "mean real pressure W/A_r".into(),
             ev.mean_real_pressure.map_or("—".into(), |x| {
-                format!("{}{}", q(x, "Pa"), pressure_note(x, sc.hardness))
+                format!("{}{}", q(x, "Pa"), pressure_note(ev, x, sc.hardness))
             }),
         ],
         vec![
@@ -724,7 +724,7 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
 
 /// Why W/A_r can exceed the hardness (the model's area measure), beside the
 /// number where it does; empty otherwise.
-fn pressure_note(pressure: f64, hardness: f64) -> String {
+fn pressure_note(ev: &Evaluation, pressure: f64, hardness: f64) -> String {
     if pressure > hardness {
         format!(
             " (above H = {}: A_r counts every contact as πRδ, the model's area, while a plastic \
@@ -732,7 +732,14 @@ fn pressure_note(pressure: f64, hardness: f64) -> String {
             si(hardness, "Pa", 3)
         )
     } else {
-        String::new()
+        match ev.mean_contact_pressure {
+            // Adhesion makes the contacts bear far more than W: say what they carry.
+            Some(c) if c.abs() > 2.0 * pressure.abs() => format!(
+                " (the contacts bear the load and the adhesive pulls besides: {} over A_r)",
+                si(c, "Pa", 4)
+            ),
+            _ => String::new(),
+        }
     }
 }
 
@@ -896,7 +903,7 @@ pub fn text(r: &EvalReport) -> String {
         line(format!(
             "  mean real pressure W/A_r = {}{}",
             si(p, "Pa", 4),
-            pressure_note(p, sc.hardness)
+            pressure_note(ev, p, sc.hardness)
         ));
     }
     let carried =

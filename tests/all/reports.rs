@@ -75,6 +75,71 @@ fn a_mean_real_pressure_above_the_hardness_is_explained() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// Where adhesion makes the contacts bear far more than the load (a
+/// lubricated head–disk pad of 0.5 nm roughness in office air: 5 µN applied,
+/// 62 mN on the contacts against the solid and capillary pulls), W/A_r alone
+/// (27 kPa) would tell a designer the contacts are idle: the report adds what
+/// they bear over A_r, and JSON carries it as `mean_contact_pressure` =
+/// (elastic + plastic load)/A_r. The shipped hub, where the pulls are a tenth
+/// of W, keeps the plain line.
+#[test]
+fn contacts_that_bear_the_adhesive_pull_are_said_to() {
+    let dir = std::env::temp_dir().join(format!("wearopt-contact-pressure-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("head.toml");
+    std::fs::write(
+        &path,
+        r#"name = "Head-disk interface pad"
+[contact]
+load = "5 uN"
+nominal_area = "2500 um^2"
+sliding_distance = "10 km"
+wear_coefficient = 1e-7
+[bodies]
+a = { youngs_modulus = "200 GPa", poisson_ratio = 0.25 }
+b = { youngs_modulus = "200 GPa", poisson_ratio = 0.25 }
+[interface]
+hardness = "20 GPa"
+work_of_adhesion = "0.04 J/m^2"
+adhesion_model = "lennard_jones"
+contact_angle = "70 deg"
+[roughness]
+sigma = "0.5 nm"
+asperity_radius = "5 um"
+asperity_density = "20 um^-2"
+[environment]
+relative_humidity = "40 %"
+"#,
+    )
+    .unwrap();
+    let file = path.to_str().unwrap();
+    let t = stdout_of(&["eval", file]);
+    let line = t
+        .lines()
+        .find(|l| l.contains("mean real pressure"))
+        .unwrap();
+    assert!(
+        line.contains("kPa (the contacts bear the load and the adhesive pulls besides: ")
+            && line.contains("MPa over A_r)"),
+        "{line}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["eval", file, "--format", "json"])).unwrap();
+    let num = |k: &str| json[k].as_f64().unwrap();
+    let contacts = (num("elastic_load") + num("plastic_load")) / num("real_area");
+    assert!((num("mean_contact_pressure") / contacts - 1.0).abs() < 1e-12);
+    assert!(num("mean_contact_pressure") > 1e4 * num("mean_real_pressure"));
+    let html = stdout_of(&["eval", file, "--format", "html"]);
+    assert!(html.contains("the contacts bear the load and the adhesive pulls besides"));
+    let hub = stdout_of(&["eval", "problems/micro-gear.toml"]);
+    let line = hub
+        .lines()
+        .find(|l| l.contains("mean real pressure"))
+        .unwrap();
+    assert!(!line.contains("("), "{line}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn curve_refuses_negative_indices_in_its_own_words() {
     for (flag, value) in [("--theta", "-1"), ("--lambda", "-2")] {
