@@ -733,8 +733,9 @@ fn pressure_note(ev: &Evaluation, pressure: f64, hardness: f64) -> String {
         )
     } else {
         match ev.mean_contact_pressure {
-            // Adhesion makes the contacts bear far more than W: say what they carry.
-            Some(c) if c.abs() > 2.0 * pressure.abs() => format!(
+            // Adhesion makes the contacts bear far more than W, or bear
+            // compression while W pulls: say what they carry.
+            Some(c) if c.abs() > 2.0 * pressure.abs() || (pressure < 0.0 && c > 0.0) => format!(
                 " (the contacts bear the load and the adhesive pulls besides: {} over A_r)",
                 si(c, "Pa", 4)
             ),

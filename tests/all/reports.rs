@@ -80,8 +80,9 @@ fn a_mean_real_pressure_above_the_hardness_is_explained() {
 /// 62 mN on the contacts against the solid and capillary pulls), W/A_r alone
 /// (27 kPa) would tell a designer the contacts are idle: the report adds what
 /// they bear over A_r, and JSON carries it as `mean_contact_pressure` =
-/// (elastic + plastic load)/A_r. The shipped hub, where the pulls are a tenth
-/// of W, keeps the plain line.
+/// (elastic + plastic load)/A_r; so too when the pad is pulled apart by
+/// 20 mN and W/A_r turns negative while the contacts bear compression. The
+/// shipped hub, where the pulls are a tenth of W, keeps the plain line.
 #[test]
 fn contacts_that_bear_the_adhesive_pull_are_said_to() {
     let dir = std::env::temp_dir().join(format!("wearopt-contact-pressure-{}", std::process::id()));
@@ -131,6 +132,24 @@ relative_humidity = "40 %"
     assert!(num("mean_contact_pressure") > 1e4 * num("mean_real_pressure"));
     let html = stdout_of(&["eval", file, "--format", "html"]);
     assert!(html.contains("the contacts bear the load and the adhesive pulls besides"));
+    // Pulled apart by 20 mN, the pad still touches: W/A_r is negative while
+    // the contacts bear compression.
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(
+        &path,
+        text.replace(r#"load = "5 uN""#, r#"load = "-20 mN""#),
+    )
+    .unwrap();
+    let t = stdout_of(&["eval", file]);
+    let line = t
+        .lines()
+        .find(|l| l.contains("mean real pressure"))
+        .unwrap();
+    assert!(
+        line.contains("= -")
+            && line.contains("the contacts bear the load and the adhesive pulls besides"),
+        "{line}"
+    );
     let hub = stdout_of(&["eval", "problems/micro-gear.toml"]);
     let line = hub
         .lines()
