@@ -39,6 +39,15 @@ fn eval_text_units_are_si() {
 /// counted as πRδ, a plastic junction carrying H over 2πRδ): the report says
 /// so beside the number on a stiff, soft-surfaced hub (E 400 GPa, H 1 GPa: 80 %
 /// of the area plastic, W/A_r = 1.54 GPa), and says nothing where W/A_r < H.
+/// The `mean real pressure` line of `wearopt ARGS`' text report.
+fn pressure_line(args: &[&str]) -> String {
+    stdout_of(args)
+        .lines()
+        .find(|l| l.contains("mean real pressure"))
+        .unwrap()
+        .to_string()
+}
+
 #[test]
 fn a_mean_real_pressure_above_the_hardness_is_explained() {
     let dir = std::env::temp_dir().join(format!("wearopt-pressure-{}", std::process::id()));
@@ -55,22 +64,14 @@ fn a_mean_real_pressure_above_the_hardness_is_explained() {
         );
     let path = dir.join("stiff.toml");
     std::fs::write(&path, stiff).unwrap();
-    let t = stdout_of(&["eval", path.to_str().unwrap()]);
-    let line = t
-        .lines()
-        .find(|l| l.contains("mean real pressure"))
-        .unwrap();
+    let line = pressure_line(&["eval", path.to_str().unwrap()]);
     assert!(
         line.contains("GPa (above H = 1.00 GPa: A_r counts every contact as πRδ"),
         "{line}"
     );
     let html = stdout_of(&["eval", path.to_str().unwrap(), "--format", "html"]);
     assert!(html.contains("above H = 1.00 GPa"), "{html}");
-    let t = stdout_of(&["eval", "problems/micro-gear.toml"]);
-    let line = t
-        .lines()
-        .find(|l| l.contains("mean real pressure"))
-        .unwrap();
+    let line = pressure_line(&["eval", "problems/micro-gear.toml"]);
     assert!(!line.contains("above H"), "{line}");
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -114,11 +115,7 @@ relative_humidity = "40 %"
     )
     .unwrap();
     let file = path.to_str().unwrap();
-    let t = stdout_of(&["eval", file]);
-    let line = t
-        .lines()
-        .find(|l| l.contains("mean real pressure"))
-        .unwrap();
+    let line = pressure_line(&["eval", file]);
     assert!(
         line.contains("kPa (the contacts bear the load and the adhesive pulls besides: ")
             && line.contains("MPa over A_r)"),
@@ -140,21 +137,13 @@ relative_humidity = "40 %"
         text.replace(r#"load = "5 uN""#, r#"load = "-20 mN""#),
     )
     .unwrap();
-    let t = stdout_of(&["eval", file]);
-    let line = t
-        .lines()
-        .find(|l| l.contains("mean real pressure"))
-        .unwrap();
+    let line = pressure_line(&["eval", file]);
     assert!(
         line.contains("= -")
             && line.contains("the contacts bear the load and the adhesive pulls besides"),
         "{line}"
     );
-    let hub = stdout_of(&["eval", "problems/micro-gear.toml"]);
-    let line = hub
-        .lines()
-        .find(|l| l.contains("mean real pressure"))
-        .unwrap();
+    let line = pressure_line(&["eval", "problems/micro-gear.toml"]);
     assert!(!line.contains("("), "{line}");
     std::fs::remove_dir_all(&dir).ok();
 }
