@@ -641,9 +641,11 @@ mod tests {
     /// scenes, with and without plasticity and a meniscus, from deep in
     /// contact to far out. The two differ by the far field beyond h = 1e6,
     /// which the quadrature over h takes in closed form as Bradley's
-    /// (P̂/B = 1) and the grid integrates as the table has it (P̂/B within
-    /// 6e-4 of 1 at τ = 1e-3 … 0.1, where the solver's rings leave it): so the
-    /// bound is 1e-9 of Γ̄ plus 2e-3 of that closed-form tail.
+    /// (P̂/B = 1) and the grid integrates as the table has it: so the bound is
+    /// 1e-9 of Γ̄ plus 1e-3 of that closed-form tail (measured: up to 6e-4 of
+    /// it with the table before 2026-11-27, whose rings left P̂/B 6e-4 short
+    /// of 1; 3.1e-4 since, the solver's rigid far field exact — the rest not
+    /// yet traced, some 4e-6 of Γ̄).
     #[test]
     fn the_lennard_jones_work_by_its_grid_matches_the_quadrature_over_h() {
         use crate::model::AsperityLaw;
@@ -677,7 +679,7 @@ mod tests {
                     let (a, _) = work_of_separation(&m, from);
                     let (b, _) = work_by_separation(&m, from);
                     assert!(
-                        (a - b).abs() <= 1e-9 * b.abs() + 2e-3 * far && a.is_finite(),
+                        (a - b).abs() <= 1e-9 * b.abs() + 1e-3 * far && a.is_finite(),
                         "θ={theta} λ={lambda} z0={z0} {cap:?} h0={from}: {a} vs {b} (far {far})"
                     );
                 }

@@ -223,9 +223,12 @@ fn cli_bad_input() {
 
 /// Against the independent solution (`scripts/reference_lennard_jones.py`:
 /// piecewise-quartic traction, exact integration of the log-singular kernel,
-/// converged to ≤ 1e-9): the pull-off and the jumps' interferences of the
-/// default mesh within the 2e-3 (of the load scale 1) its second-order
-/// discretisation leaves, the loads at the jumps within 1e-2. Also the published shape: pull-off from Bradley's 2 towards JKR's 1.5.
+/// converged to ≤ 1e-9): the default mesh's pull-off within the 2e-3 (of the
+/// load scale 1) its second-order discretisation leaves (measured 1.7e-3 at
+/// μ = 2…5, 4e-4 at μ = 0.5, 1e-5 at μ = 0.1), the jumps' interferences within
+/// 1e-3 (7.1e-4), the loads at the jumps within 1e-2 (6.0e-3 at μ = 5: δ̂ is
+/// stationary at a jump). Also the published shape: pull-off from Bradley's 2
+/// towards JKR's 1.5.
 #[test]
 fn matches_the_independent_solution() {
     use crate::common::{num, table};
@@ -259,7 +262,7 @@ fn matches_the_independent_solution() {
             }
             let m = mark.unwrap_or_else(|| panic!("μ = {mu}: no {at}"));
             assert!(
-                (m.interference - num(&row[at])).abs() < 2e-3,
+                (m.interference - num(&row[at])).abs() < 1e-3,
                 "μ = {mu}: {at}"
             );
             // δ̂ is stationary at a jump, so where along the curve it lies (and the

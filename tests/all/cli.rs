@@ -393,8 +393,8 @@ fn every_command_names_the_formats_it_writes() {
 
 /// The text report's single-asperity pull-off follows the scene's law: JKR's
 /// 1.5πγR (the micro-gear under JKR, γ = 0.1 J/m², R = 1 µm: 471 nN), the
-/// Lennard-Jones sphere's at the hub's μ = 0.374 (1.835πγR from its table,
-/// 576 nN) and DMT's 2πγR, 4/3 of JKR's (the DLC contact, γ = 50 mJ/m²,
+/// Lennard-Jones sphere's at the hub's μ = 0.374 (1.836πγR from its table,
+/// 577 nN) and DMT's 2πγR, 4/3 of JKR's (the DLC contact, γ = 50 mJ/m²,
 /// R = 2 µm: 628 nN); the JSON key
 /// `asperity_pull_off_force` keeps JKR's value whatever the law.
 #[test]
@@ -408,7 +408,7 @@ fn eval_text_names_the_single_asperity_pull_off_of_the_law() {
     assert!(gear.contains("one asperity (JKR 1.5πγR): 471 nN"), "{gear}");
     let gear = text("problems/micro-gear");
     assert!(
-        gear.contains("one asperity (Lennard-Jones sphere 1.835πγR): 576 nN"),
+        gear.contains("one asperity (Lennard-Jones sphere 1.836πγR): 577 nN"),
         "{gear}"
     );
     let dlc = text("problems/dlc-contact");

