@@ -1035,7 +1035,7 @@ fn miss(target: f64, at: &Integrals) -> f64 {
 /// bends: Halley's error after a step d is about C d³ with C of order
 /// (f''/f')² (and f'''/f', of the same order where f has a singularity nearby,
 /// e.g. ln P̄ near a zero of P̄).
-fn newton_step(target: f64, at: &Integrals) -> Option<(f64, f64)> {
+pub(crate) fn newton_step(target: f64, at: &Integrals) -> Option<(f64, f64)> {
     let load = at.load();
     let slope = at.dload_dh();
     if slope.mantissa == 0.0 {

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::capillary::{Capillary, Environment};
 use super::coefficients::Coefficients;
-use super::integrals::Model;
+use super::integrals::{Integrals, Model};
 use super::law::{AdhesionModel, AsperityLaw, AttractionKind};
 use super::quadrature::Quadrature;
 use super::scaled::Scaled;
@@ -614,6 +614,17 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
             log10_area: area.scale(area_scale).log10_abs(),
         });
     }
+    let share_load = |load: fn(&Integrals) -> f64| {
+        at.map_or(0.0, |a| {
+            Scaled::new(load(&a), a.scale_exponent)
+                .scale(load_scale)
+                .value()
+        })
+    };
+    let (elastic_load, plastic_load) = (
+        share_load(|a| a.load_elastic),
+        share_load(|a| a.load_plastic),
+    );
     let evaluation = Evaluation {
         status,
         warnings,
@@ -639,20 +650,10 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         contact_count: at.map_or(0.0, |a| a.contacts().scale(count_scale).value()),
         plastic_contact_count: at.map_or(0.0, |a| a.plastic_contacts().scale(count_scale).value()),
         mean_real_pressure: (real_area > 0.0).then(|| scene.load / real_area),
-        mean_contact_pressure: at.filter(|_| real_area > 0.0).map(|a| {
-            let contacts = Scaled::new(a.load_elastic + a.load_plastic, a.scale_exponent);
-            contacts.scale(load_scale).value() / real_area
-        }),
-        elastic_load: at.map_or(0.0, |a| {
-            Scaled::new(a.load_elastic, a.scale_exponent)
-                .scale(load_scale)
-                .value()
-        }),
-        plastic_load: at.map_or(0.0, |a| {
-            Scaled::new(a.load_plastic, a.scale_exponent)
-                .scale(load_scale)
-                .value()
-        }),
+        mean_contact_pressure: (at.is_some() && real_area > 0.0)
+            .then(|| (elastic_load + plastic_load) / real_area),
+        elastic_load,
+        plastic_load,
         pull_off_force,
         log10_pull_off_force,
         pull_off_separation,

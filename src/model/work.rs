@@ -247,17 +247,14 @@ pub fn work_of_separation_near(model: &Model, at: &Integrals) -> (f64, usize) {
         at.dload_dh().value(),
         at.d2load_dh2().value(),
     );
-    let newton = p / p1;
-    let bend = p * p2 / (p1 * p1);
-    let d = if bend.abs() <= 1.0 {
-        newton / (1.0 - 0.5 * bend)
-    } else {
-        newton
+    // Halley's step to P̄ = 0, the one the search itself takes.
+    let Some((d, bend)) = super::separation::newton_step(0.0, at) else {
+        return (work, evaluations);
     };
     let strip = d * (p - d * (0.5 * p1 - d * p2 / 6.0));
     // Where the values underflow or the step is meaningless, h itself (the
     // search stopped within UNLOADED_TOLERANCE of the root either way).
-    if strip.is_finite() && d.abs() * (p2 / p1).abs().max(1.0) <= 2.0 * UNLOADED_TOLERANCE {
+    if strip.is_finite() && d.abs() * bend.max(1.0) <= 2.0 * UNLOADED_TOLERANCE {
         (work - strip, evaluations)
     } else {
         (work, evaluations)
