@@ -27,17 +27,29 @@ const REACH: f64 = 50.0;
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if args.first().map(String::as_str) == Some("check") {
+        // `check plain FILE`: against the trace's own mesh, not extrapolated.
+        let plain = args.get(1).map(String::as_str) == Some("plain");
+        let args = &args[usize::from(plain)..];
         let only: Vec<f64> = args[2..].iter().map(|a| a.parse().expect("MU")).collect();
-        return check(&args[1], &only);
+        return check(&args[1], &only, plain);
     }
+    // `plain`: the trace's own mesh, without the extrapolation.
+    let plain = args.first().map(String::as_str) == Some("plain");
+    let args = &args[usize::from(plain)..];
     let refinement: f64 = args.first().map_or(1.0, |a| a.parse().expect("REFINEMENT"));
     let mus: Vec<f64> = if args.len() > 1 {
         args[1..].iter().map(|a| a.parse().expect("MU")).collect()
     } else {
         grid()
     };
-    let settings = SphereSettings { refinement };
-    println!("# Lennard-Jones loading curves (docs/model.md §11), refinement {refinement}:");
+    let settings = SphereSettings {
+        refinement,
+        extrapolate: !plain,
+    };
+    println!(
+        "# Lennard-Jones loading curves (docs/model.md §11), refinement {refinement}{}:",
+        if plain { "" } else { ", extrapolated" }
+    );
     println!(
         "# written by scripts/lennard_jones_table.sh; read by src/model/lennard_jones/table.rs"
     );
@@ -112,11 +124,13 @@ fn with_shorter_reach<T>(
     }
 }
 
-fn check(path: &str, only: &[f64]) {
+fn check(path: &str, only: &[f64], plain: bool) {
     use wearopt::model::lennard_jones::table::{lobatto, parse, APPROACH_DEGREE, PANEL_DEGREE};
     let text = std::fs::read_to_string(path).expect("read the table");
     let curves = parse(&text).expect("parse the table");
-    println!("tabor,approach_abs,approach_rel,contact_abs,contact_rel,tail_rel");
+    // `bar`: the largest error against max(1e-6 |P̂|, 1e-9), the accuracy the
+    // table is held to (1 = just met), over the approach and contact parts.
+    println!("tabor,approach_abs,approach_rel,contact_abs,contact_rel,tail_rel,bar");
     for c in &curves {
         if !only.is_empty() && !only.iter().any(|m| (m / c.tabor - 1.0).abs() < 1e-3) {
             continue;
@@ -146,7 +160,10 @@ fn check(path: &str, only: &[f64]) {
                 |_| gaps.clone(),
                 |_| with_tail(to),
                 to,
-                SphereSettings::default(),
+                SphereSettings {
+                    extrapolate: !plain,
+                    ..Default::default()
+                },
             )
         });
         let (samples, all) = match traced {
@@ -154,16 +171,18 @@ fn check(path: &str, only: &[f64]) {
             Err(e) => {
                 // Reported, and the other curves still checked.
                 eprintln!("μ = {}: {e:?}: not checked", c.tabor);
-                println!("{},unsolved,,,,", c.tabor);
+                println!("{},unsolved,,,,,", c.tabor);
                 continue;
             }
         };
-        let (mut aa, mut ar) = (0.0f64, 0.0f64);
+        let (mut aa, mut ar, mut bar) = (0.0f64, 0.0f64, 0.0f64);
+        let against = |e: f64, p: f64| e / (1e-6 * p.abs()).max(1e-9);
         for (t, p) in mid_taus.iter().zip(&samples.approach) {
             let q = c.approach(*t);
             let e = (q.load - p.load).abs();
             aa = aa.max(e);
             ar = ar.max(e / p.load.abs().max(1e-300));
+            bar = bar.max(against(e, p.load));
             let ed = (q.interference - p.interference).abs();
             aa = aa.max(ed / (1.0 + p.interference.abs()));
         }
@@ -176,8 +195,12 @@ fn check(path: &str, only: &[f64]) {
             } else {
                 ca = ca.max(e);
                 cr = cr.max(e / p.load.abs().max(1e-300));
+                bar = bar.max(against(e, p.load));
             }
         }
-        println!("{},{aa:.2e},{ar:.2e},{ca:.2e},{cr:.2e},{tr:.2e}", c.tabor);
+        println!(
+            "{},{aa:.2e},{ar:.2e},{ca:.2e},{cr:.2e},{tr:.2e},{bar:.2e}",
+            c.tabor
+        );
     }
 }

@@ -8,7 +8,7 @@
 use serde::Serialize;
 
 use super::lennard_jones::{
-    spacing, NotConverged, Sphere, SpherePoint, SphereSettings, SphereState,
+    spacing, Hold, NotConverged, Sphere, SpherePoint, SphereSettings, SphereState,
 };
 
 /// The asperity laws a single-asperity curve is drawn for (the names of
@@ -292,9 +292,16 @@ fn single_valued(
 pub const SOLVED_TABOR: (f64, f64) = (1e-3, 5.0);
 
 /// The pull-off's relative error of the limit at each end of [`SOLVED_TABOR`],
-/// measured against the solver there (1.999873 at μ = 10⁻³ against Bradley's 2;
-/// 1.52401 at μ = 5 against JKR's 1.5; `tests/all/asperity.rs`).
-pub const LIMIT_PULL_OFF_ERROR: (f64, f64) = (6.4e-5, 1.6e-2);
+/// measured against the converged solver there (1.999967 at μ = 10⁻³ against
+/// Bradley's 2; 1.52572 at μ = 5 against JKR's 1.5; `tests/all/asperity.rs`).
+pub const LIMIT_PULL_OFF_ERROR: (f64, f64) = (1.6e-5, 1.69e-2);
+
+/// What `wearopt asperity` solves with: the trace on the default mesh, the
+/// pull-off and the jumps extrapolated to the converged solution.
+pub const CONVERGED_MARKS: SphereSettings = SphereSettings {
+    refinement: 1.0,
+    extrapolate: true,
+};
 
 /// The closed form the Lennard-Jones law takes outside [`SOLVED_TABOR`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -398,7 +405,7 @@ pub fn asperity_curve(
             }),
         ),
         CurveLaw::LennardJones => (
-            lennard_jones_curve(tabor, from, to, points, SphereSettings::default())?,
+            lennard_jones_curve(tabor, from, to, points, CONVERGED_MARKS)?,
             None,
         ),
     })
@@ -552,9 +559,20 @@ pub fn lennard_jones_at_apex_gaps(
                 .iter()
                 .find(|w| (w.start.point.apex_gap - g) * (w.end.point.apex_gap - g) <= 0.0)
                 .ok_or(CurveError::NotConverged(g))?;
-            Ok(root(&sphere, w, |s| s.point.apex_gap - g)?.0.point)
+            let state = root(&sphere, w, |s| s.point.apex_gap - g)?.0;
+            finish(&sphere, &state, Hold::ApexGap)
         })
         .collect()
+}
+
+/// The point `state` makes, extrapolated to the converged solution where the
+/// sphere's settings ask for it.
+fn finish(sphere: &Sphere, state: &SphereState, hold: Hold) -> Result<SpherePoint, CurveError> {
+    if sphere.settings.extrapolate {
+        Ok(sphere.extrapolated(state, hold)?.0)
+    } else {
+        Ok(state.point)
+    }
 }
 
 /// The Lennard-Jones curve at Tabor parameter μ over interferences
@@ -574,21 +592,22 @@ pub fn lennard_jones_curve(
     for (k, w) in windows.iter().enumerate() {
         if (slope(&w.start) > 0.0) != (slope(&w.end) > 0.0) {
             let (state, at) = root(&sphere, w, slope)?;
-            turns.push((k, at, state.point));
+            turns.push((k, at, state));
         }
     }
     // The most tensile load: the deepest minimum of P̂ along the path.
     let load_slope = |s: &SphereState| s.point.load_slope;
     let mut pull_off = windows
         .iter()
-        .map(|w| w.end.point)
-        .min_by(|a, b| a.load.total_cmp(&b.load))
-        .expect("a trace has a step");
+        .map(|w| &w.end)
+        .min_by(|a, b| a.point.load.total_cmp(&b.point.load))
+        .expect("a trace has a step")
+        .clone();
     for w in &windows {
         if load_slope(&w.start) < 0.0 && load_slope(&w.end) >= 0.0 {
             let (state, _) = root(&sphere, w, load_slope)?;
-            if state.point.load < pull_off.load {
-                pull_off = state.point;
+            if state.point.load < pull_off.point.load {
+                pull_off = state;
             }
         }
     }
@@ -662,17 +681,43 @@ pub fn lennard_jones_curve(
             }
         })
         .collect();
-    let mark = |p: &SpherePoint| CurveMark {
-        interference: p.interference,
-        load: p.load,
+    // The marks extrapolated to the converged solution where the settings
+    // ask: the pull-off holding the apex gap (the load is stationary there,
+    // so the trace's place for it is good to second order), the jumps at the
+    // converged turn.
+    let mark = |state: &SphereState| -> Result<CurveMark, CurveError> {
+        let p = finish(&sphere, state, Hold::ApexGap)?;
+        Ok(CurveMark {
+            interference: p.interference,
+            load: p.load,
+        })
+    };
+    let turn = |state: &SphereState| -> Result<CurveMark, CurveError> {
+        let p = if sphere.settings.extrapolate {
+            sphere.extrapolated_turn(state)?.0
+        } else {
+            state.point
+        };
+        Ok(CurveMark {
+            interference: p.interference,
+            load: p.load,
+        })
+    };
+    let (jump_in, jump_out) = if s_shaped {
+        (
+            Some(turn(&turns[0].2)?),
+            Some(turn(&turns[turns.len() - 1].2)?),
+        )
+    } else {
+        (None, None)
     };
     Ok(AsperityCurve {
         law: CurveLaw::LennardJones,
         tabor,
         points: rows,
-        pull_off: mark(&pull_off),
-        jump_in: s_shaped.then(|| mark(&turns[0].2)),
-        jump_out: s_shaped.then(|| mark(&turns[turns.len() - 1].2)),
+        pull_off: mark(&pull_off)?,
+        jump_in,
+        jump_out,
         path,
     })
 }
@@ -780,34 +825,41 @@ pub fn lennard_jones_loading(
         let (state, _) = root(&sphere, &windows[k], |s| s.point.apex_gap - SPLIT_GAP)?;
         (state, k, k)
     };
-    let end_gap = end_state.point.apex_gap;
-    let switch = end_state.point.interference;
+    // Where the curve jumps, its converged turn (the load there is not
+    // stationary along the path: the trace's turn would carry its error).
+    let end_point = if jumps && sphere.settings.extrapolate {
+        sphere.extrapolated_turn(&end_state)?.0
+    } else {
+        finish(&sphere, &end_state, Hold::ApexGap)?
+    };
+    let end_gap = end_point.apex_gap;
+    let switch = end_point.interference;
     let first_gap = windows[0].start.point.apex_gap;
     let approach = approach_gaps(end_gap)
         .into_iter()
         .map(|g| {
             if g == end_gap {
-                return Ok(end_state.point);
+                return Ok(end_point);
             }
             if g >= first_gap {
-                return Ok(sphere.far(g)?.point);
+                return finish(&sphere, &sphere.far(g)?, Hold::ApexGap);
             }
             let f = |s: &SphereState| s.point.apex_gap - g;
             let w = bracket(&sphere, &windows[..=approach_windows], f, |_| true)?;
-            Ok(root(&sphere, &w, f)?.0.point)
+            finish(&sphere, &root(&sphere, &w, f)?.0, Hold::ApexGap)
         })
         .collect::<Result<Vec<_>, CurveError>>()?;
     let contact = contact_at(switch)
         .into_iter()
         .map(|d| {
             if d == switch && !jumps {
-                return Ok(end_state.point);
+                return Ok(end_point);
             }
             let f = |s: &SphereState| s.point.interference - d;
             let w = bracket(&sphere, &windows[contact_from..], f, |w| {
                 slope(&w.end) > 0.0
             })?;
-            Ok(root(&sphere, &w, f)?.0.point)
+            finish(&sphere, &root(&sphere, &w, f)?.0, Hold::Interference)
         })
         .collect::<Result<Vec<_>, CurveError>>()?;
     Ok(LoadingSamples {

@@ -451,6 +451,6 @@ fn lennard_jones_rows_meet_the_target() {
     assert_eq!(rows[0].samples, 32);
     assert!(rows[0].max_rel_error < 1e-9, "{:?}", rows[0]);
     let (below, above) = accuracy::lennard_jones::stand_in_errors();
-    assert!((below - 5.9e-4).abs() < 1e-4, "{below}");
-    assert!((above - 1.57e-2).abs() < 2e-4, "{above}");
+    assert!((below - 5.2e-4).abs() < 1e-4, "{below}");
+    assert!((above - 1.69e-2).abs() < 2e-4, "{above}");
 }

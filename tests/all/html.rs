@@ -112,7 +112,7 @@ fn eval_page() {
         ],
     );
     assert!(html.contains("pull-off 5.997 µN at d = 11.55 nm"));
-    assert!(html.contains("0.6403 µm²"));
+    assert!(html.contains("0.6404 µm²"));
     renders_in_chromium(&html, "eval");
 }
 

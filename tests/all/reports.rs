@@ -19,14 +19,14 @@ fn stderr_failing(args: &[&str], code: i32) -> String {
     String::from_utf8(out.stderr).unwrap()
 }
 
-/// The micro-gear hub (Lennard-Jones law): A_r = 6.403e-13 m² and wear rate
-/// 6.403e-17 m³/m; the text says so with the prefix on the length, and the line
+/// The micro-gear hub (Lennard-Jones law): A_r = 6.404e-13 m² and wear rate
+/// 6.404e-17 m³/m; the text says so with the prefix on the length, and the line
 /// the contract names stays.
 #[test]
 fn eval_text_units_are_si() {
     let t = stdout_of(&["eval", "problems/micro-gear.toml"]);
-    assert!(t.contains("real area A_r = 0.6403 µm²"), "{t}");
-    assert!(t.contains("wear rate V/L = 64.03 µm³/m"), "{t}");
+    assert!(t.contains("real area A_r = 0.6404 µm²"), "{t}");
+    assert!(t.contains("wear rate V/L = 64.04 µm³/m"), "{t}");
     assert!(t.contains("asperity density N = 10.0 µm⁻²"), "{t}");
     assert!(
         !t.contains("fm²") && !t.contains("am³") && !t.contains(" um"),

@@ -9,4 +9,4 @@ pub mod rough;
 pub mod sphere;
 pub mod table;
 
-pub use sphere::{spacing, NotConverged, Sphere, SpherePoint, SphereSettings, SphereState};
+pub use sphere::{spacing, Hold, NotConverged, Sphere, SpherePoint, SphereSettings, SphereState};

@@ -51,6 +51,21 @@ fn traction(z0: f64, g: f64) -> (f64, f64) {
     (scale * (x9 - x3), scale * (3.0 * x3 - 9.0 * x9) / g)
 }
 
+/// The polynomial through `nodes` (x, y) at x, by Lagrange's formula.
+fn lagrange(nodes: &[(f64, f64)], x: f64) -> f64 {
+    nodes
+        .iter()
+        .enumerate()
+        .map(|(k, &(xk, yk))| {
+            nodes
+                .iter()
+                .enumerate()
+                .filter(|&(m, _)| m != k)
+                .fold(yk, |acc, (_, &(xm, _))| acc * (x - xm) / (xk - xm))
+        })
+        .sum()
+}
+
 /// Twice the work of the traction beyond gap g, 2 ∫_g^∞ p̃ dg = the load of a
 /// rigid annulus whose gap grows as r²/2 from g outwards:
 /// (16/3) [(ẑ0/g)⁸/8 − (ẑ0/g)²/2].
@@ -69,11 +84,18 @@ fn rigid_tail(z0: f64, g: f64) -> (f64, f64) {
 pub struct SphereSettings {
     /// Mesh density relative to the default (1).
     pub refinement: f64,
+    /// Whether the points a curve is sampled at are solved again and
+    /// extrapolated to the converged solution ([`Sphere::extrapolated`]):
+    /// the trace itself stays on the mesh above.
+    pub extrapolate: bool,
 }
 
 impl Default for SphereSettings {
     fn default() -> Self {
-        SphereSettings { refinement: 1.0 }
+        SphereSettings {
+            refinement: 1.0,
+            extrapolate: false,
+        }
     }
 }
 
@@ -116,25 +138,69 @@ struct Mesh {
     finest: f64,
     /// Growth of the spacing with the distance from the centre.
     growth: f64,
+    /// The ring edge from which the rigid sphere's load is taken exactly in
+    /// contact: the first beyond twice the centre (kept by a bisection, so
+    /// that every level of a nested family takes the same annulus).
+    rigid_from: f64,
 }
 
 impl Mesh {
     fn new(z0: f64, centre: f64, settings: SphereSettings) -> Mesh {
+        Mesh::nested(z0, centre, settings, 0)
+    }
+
+    /// The mesh graded at `centre` with every ring cut into 2^`halvings`
+    /// equal parts: a nested family, on which the discretisation error is a
+    /// series in the spacing with the same coefficients at every level
+    /// (Richardson's extrapolation needs the same rings at every level).
+    fn nested(z0: f64, centre: f64, settings: SphereSettings, halvings: u32) -> Mesh {
         // The traction turns over a cohesive zone ~ (3π/4) ẑ0² wide (large μ) or
         // over the apex region ~ √ẑ0 (small μ).
         let feature = (2.4 * z0 * z0).min(0.5 * z0.sqrt());
         let finest = feature / (16.0 * settings.refinement);
         let growth = 0.08 / settings.refinement;
+        // Inside a contact no ring is wider than 2 % of its radius: the
+        // repulsion there is stiff, and rings graded from the edge alone
+        // left the load 3e-2 short at δ̂ = 1.5 (μ = 1).
+        let inside = 0.02 * centre / settings.refinement;
         let outer = 200.0 * (1.0 + centre + (2.0 * z0).sqrt());
         let mut edges = vec![0.0];
         let mut r = 0.0_f64;
         while r < outer {
-            let h = finest + growth * (r - centre).abs();
+            let spacing = |r: f64| {
+                let h = finest + growth * (r - centre).abs();
+                if r < centre {
+                    h.min(inside).max(finest)
+                } else {
+                    h
+                }
+            };
             // Look ahead so that a ring straddling the centre is not coarse.
-            let h = h.min(finest + growth * (r + h - centre).abs());
+            let h = spacing(r);
+            let h = h.min(spacing(r + h));
             r += h;
             edges.push(r);
         }
+        let rigid_from = edges[edges
+            .partition_point(|&b| b < 2.0 * centre)
+            .min(edges.len() - 2)];
+        let parts = 1usize << halvings;
+        let mut cut = Vec::with_capacity(parts * (edges.len() - 1) + 1);
+        for w in edges.windows(2) {
+            cut.extend((0..parts).map(|k| w[0] + (w[1] - w[0]) * k as f64 / parts as f64));
+        }
+        cut.push(edges[edges.len() - 1]);
+        let fraction = 1.0 / parts as f64;
+        Mesh::from_edges(
+            cut,
+            centre,
+            finest * fraction,
+            growth * fraction,
+            rigid_from,
+        )
+    }
+
+    fn from_edges(edges: Vec<f64>, centre: f64, finest: f64, growth: f64, rigid_from: f64) -> Mesh {
         let n = edges.len() - 1;
         let mid: Vec<f64> = (0..n).map(|j| 0.5 * (edges[j] + edges[j + 1])).collect();
         let apex: Vec<f64> = (0..n)
@@ -151,6 +217,7 @@ impl Mesh {
             centre,
             finest,
             growth,
+            rigid_from,
         }
     }
 
@@ -209,6 +276,15 @@ impl SphereState {
     pub fn rings(&self) -> usize {
         self.mesh.len()
     }
+}
+
+/// What [`Sphere::extrapolated`] keeps of the state it solves again.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hold {
+    /// The apex gap (the approach branch, where δ̂ turns at the jump).
+    ApexGap,
+    /// The interference δ̂ (the contact branch: a loading table's nodes).
+    Interference,
 }
 
 /// Why a solve failed (Newton's method did not converge from its guess).
@@ -335,6 +411,226 @@ impl Sphere {
         None
     }
 
+    /// `state` solved again on the mesh graded at `centre` and cut
+    /// 2^`halvings` times ([`Mesh::nested`]), holding what `hold` names: the
+    /// apex gap `gap` (near the state's) or the state's interference. From
+    /// the state's gaps interpolated onto the finer mesh, close to the
+    /// solution: Newton's method with the
+    /// Jacobian factored once (refactored only where a step fails to
+    /// shrink), on the gaps' equations bordered by the held quantity's
+    /// (δ̂ = ẑ0(1 − G) + Σ_j C u_j(0) p̃_j for the interference). The tangent
+    /// (and with it the slopes) is solved for only if `tangent` is true; it is
+    /// the state's interpolated otherwise.
+    fn resolved(
+        &self,
+        state: &SphereState,
+        gap: f64,
+        centre: f64,
+        halvings: u32,
+        hold: Hold,
+        tangent: bool,
+    ) -> Result<SphereState, NotConverged> {
+        let z0 = self.z0;
+        let mesh = Rc::new(Mesh::nested(z0, centre, self.settings, halvings));
+        let old = &state.mesh;
+        let n = mesh.len();
+        let mut x = mesh
+            .interpolate(old, &state.gaps, z0)
+            .insert_row(n, state.apex);
+        let mut t = mesh
+            .interpolate(old, &state.tangent.rows(0, old.len()).into(), 0.0)
+            .insert_row(n, state.tangent[old.len()]);
+        t /= dot(&t, &t).sqrt();
+        let failed = NotConverged {
+            apex_gap: state.apex,
+        };
+        let (target_gap, target_interference) = (gap, state.point.interference);
+        let residual = |x: &DVector<f64>| -> DVector<f64> {
+            let (p, _) = self.tractions(x, n);
+            let mp = &mesh.relative * &p;
+            let mut f = DVector::zeros(n + 1);
+            for i in 0..n {
+                f[i] = x[i] - x[n] - 0.5 * mesh.mid[i] * mesh.mid[i] / z0 - mp[i] / z0;
+            }
+            f[n] = match hold {
+                Hold::ApexGap => x[n] - target_gap,
+                Hold::Interference => {
+                    (z0 * (1.0 - x[n]) + mesh.apex.iter().zip(&p).map(|(a, p)| a * p).sum::<f64>()
+                        - target_interference)
+                        / z0
+                }
+            };
+            f
+        };
+        let factor = |x: &DVector<f64>| {
+            let (_, dp) = self.tractions(x, n);
+            let mut jacobian = DMatrix::zeros(n + 1, n + 1);
+            jacobian.view_mut((0, 0), (n, n)).copy_from(&mesh.relative);
+            for j in 0..n {
+                jacobian.view_mut((0, j), (n, 1)).scale_mut(-dp[j]);
+                jacobian[(j, j)] += 1.0;
+                jacobian[(j, n)] = -1.0;
+                jacobian[(n, j)] = match hold {
+                    Hold::ApexGap => 0.0,
+                    Hold::Interference => mesh.apex[j] * dp[j],
+                };
+            }
+            jacobian[(n, n)] = match hold {
+                Hold::ApexGap => 1.0,
+                Hold::Interference => -1.0,
+            };
+            jacobian.lu()
+        };
+        let mut lu = factor(&x);
+        let mut f = residual(&x);
+        let mut previous = f64::INFINITY;
+        let mut converged = false;
+        for _ in 0..60 {
+            let Some(step) = lu.solve(&f) else {
+                return Err(failed);
+            };
+            // The step against each unknown's size (the outer rings' gaps
+            // are large, and their round-off with them).
+            let size = step
+                .iter()
+                .zip(x.iter())
+                .map(|(d, u)| (d / (1.0 + u.abs())).abs())
+                .fold(0.0, f64::max);
+            if size > 0.5 * previous {
+                if previous <= 1e-12 {
+                    // At the rounding floor.
+                    converged = true;
+                    break;
+                }
+                // The old Jacobian no longer contracts: factor it afresh.
+                lu = factor(&x);
+                previous = f64::INFINITY;
+                continue;
+            }
+            let trial = &x - &step;
+            if !trial.rows(0, n).iter().all(|&u| u > 0.0 && u.is_finite()) {
+                return Err(failed);
+            }
+            x = trial;
+            f = residual(&x);
+            previous = size;
+            if size <= 1e-15 {
+                converged = true;
+                break;
+            }
+        }
+        let norm = (0..n)
+            .map(|i| (f[i] / (1.0 + x[i].abs())).abs())
+            .fold(f[n].abs(), f64::max);
+        if !(converged || norm <= 1e-11 || norm <= 1e3 * self.round_off(&mesh, &x)) {
+            return Err(failed);
+        }
+        if tangent {
+            self.state(mesh, x, &t)
+        } else {
+            Ok(self.measured(mesh, x, t))
+        }
+    }
+
+    /// A turning point of δ̂ along the path (a jump), extrapolated to the
+    /// converged solution: the trace's turning point `state` moves by the
+    /// discretisation's error, and the load there with it (it is δ̂, not P̂,
+    /// that is stationary), so δ̂ is extrapolated at three apex gaps
+    /// G(1 − ε), G, G(1 + ε) (ε = 10⁻⁴) and the parabola through them moves G
+    /// towards the converged turn (again from there while the move exceeds
+    /// εG), where the point is extrapolated again.
+    pub fn extrapolated_turn(
+        &self,
+        state: &SphereState,
+    ) -> Result<(SpherePoint, f64), NotConverged> {
+        let step = 1e-4 * state.apex;
+        let mut g = state.apex;
+        for _ in 0..4 {
+            let [lo, mid, hi] = [g - step, g, g + step].map(|at| {
+                self.extrapolated_at(state, at, Hold::ApexGap)
+                    .map(|(p, _)| p.interference)
+            });
+            let (lo, mid, hi) = (lo?, mid?, hi?);
+            let bend = lo - 2.0 * mid + hi;
+            if bend == 0.0 {
+                break;
+            }
+            let shift = (0.5 * step * (lo - hi) / bend).clamp(-20.0 * step, 20.0 * step);
+            g += shift;
+            if shift.abs() <= step {
+                break;
+            }
+        }
+        self.extrapolated_at(state, g, Hold::ApexGap)
+    }
+
+    /// p̃ and its slope at the gaps (over ẑ0) of `x`'s first `n` entries.
+    fn tractions(&self, x: &DVector<f64>, n: usize) -> (DVector<f64>, Vec<f64>) {
+        let z0 = self.z0;
+        let mut p = DVector::zeros(n);
+        let mut dp = vec![0.0; n];
+        for j in 0..n {
+            let (v, d) = traction(z0, z0 * x[j]);
+            p[j] = v;
+            dp[j] = d;
+        }
+        (p, dp)
+    }
+
+    /// `state`'s point extrapolated to the converged solution, and an
+    /// estimate of what is left. The state is solved again on three meshes
+    /// graded at its contact edge, each ring of one cut in two in the next
+    /// (the same rings at every level), holding its apex gap or its
+    /// interference; the
+    /// discretisation error on such a family is c₂h² + c₃h³ + … (h², and h³
+    /// from the rings inside a contact), and both leading terms are
+    /// eliminated (Richardson twice: (4L₁ − L₀)/3, then (8R₁ − R₀)/7). The
+    /// estimate is the second elimination's change to the load and the
+    /// interference (an estimate, not a bound: docs/model.md §11 gives the
+    /// error measured against an independent solution). The slopes are the
+    /// finest level's.
+    pub fn extrapolated(
+        &self,
+        state: &SphereState,
+        hold: Hold,
+    ) -> Result<(SpherePoint, f64), NotConverged> {
+        self.extrapolated_at(state, state.apex, hold)
+    }
+
+    /// [`Sphere::extrapolated`] at apex gap `gap` (near the state's) where
+    /// the apex gap is held.
+    fn extrapolated_at(
+        &self,
+        state: &SphereState,
+        gap: f64,
+        hold: Hold,
+    ) -> Result<(SpherePoint, f64), NotConverged> {
+        let centre = state.point.contact_radius;
+        let l0 = self.resolved(state, gap, centre, 0, hold, false)?;
+        let l1 = self.resolved(&l0, gap, centre, 1, hold, false)?;
+        let l2 = self.resolved(&l1, gap, centre, 2, hold, true)?;
+        let levels = [l0.point, l1.point, l2.point];
+        let mut change = 0.0f64;
+        let mut value = |f: fn(&SpherePoint) -> f64, estimate: bool| {
+            let [a, b, c] = levels.map(|p| f(&p));
+            let (r0, r1) = (b + (b - a) / 3.0, c + (c - b) / 3.0);
+            let r = r1 + (r1 - r0) / 7.0;
+            if estimate {
+                change = change.max((r - r1).abs());
+            }
+            r
+        };
+        let point = SpherePoint {
+            apex_gap: value(|p| p.apex_gap, false),
+            interference: value(|p| p.interference, true),
+            load: value(|p| p.load, true),
+            contact_radius: value(|p| p.contact_radius, false),
+            inner_load: value(|p| p.inner_load, false),
+            ..levels[2]
+        };
+        Ok((point, change))
+    }
+
     /// Newton's method on F(u, G) = u − G − c²/(2ẑ0) − M p̃(ẑ0 u)/ẑ0 = 0 with the
     /// arclength condition ⟨x − x0, t⟩ = s, damped so that no gap turns
     /// non-positive and the residual falls.
@@ -397,7 +693,10 @@ impl Sphere {
                 break;
             }
         }
-        if norm <= 1e-12 || norm <= 1e3 * self.round_off(mesh, &x) {
+        // Newton stops where no step lowers the residual: its rounding floor,
+        // which the round-off estimate puts up to 1e3 below what the fine
+        // rings inside a large contact reach (1.2e-12 at μ = 0.52, δ̂ = 4).
+        if norm <= 1e-11 || norm <= 1e3 * self.round_off(mesh, &x) {
             Ok(x)
         } else {
             Err(failed)
@@ -448,7 +747,6 @@ impl Sphere {
         x: DVector<f64>,
         previous: &DVector<f64>,
     ) -> Result<SphereState, NotConverged> {
-        let z0 = self.z0;
         let n = mesh.len();
         let apex = x[n];
         let mut rhs = DVector::zeros(n + 1);
@@ -463,6 +761,15 @@ impl Sphere {
         if dot(&tangent, previous) < 0.0 {
             tangent = -tangent;
         }
+        Ok(self.measured(mesh, x, tangent))
+    }
+
+    /// The state of the solution `x` on `mesh` with the path's tangent
+    /// `tangent` (the slopes are along it).
+    fn measured(&self, mesh: Rc<Mesh>, x: DVector<f64>, tangent: DVector<f64>) -> SphereState {
+        let z0 = self.z0;
+        let n = mesh.len();
+        let apex = x[n];
         let gaps: DVector<f64> = x.rows(0, n).into();
         let (p, dp): (Vec<f64>, Vec<f64>) = gaps.iter().map(|&u| traction(z0, z0 * u)).unzip();
         let edges = &mesh.edges;
@@ -482,7 +789,7 @@ impl Sphere {
         // the apex itself out of contact.
         let k = mesh
             .edges
-            .partition_point(|&b| b < 2.0 * mesh.centre)
+            .partition_point(|&b| b < mesh.rigid_from)
             .min(last);
         let (rigid_gap, slope_index) = if k == 0 {
             (z0 * apex, n)
@@ -509,8 +816,10 @@ impl Sphere {
             * ((0..n).map(|j| weight(j) * dp[j] * tangent[j]).sum::<f64>()
                 + tail_slope * tangent[last]
                 + (exact_slope - on_rings_slope) * tangent[slope_index]);
-        // The outermost crossing of the tension gap, interpolated in r² between
-        // the apex (r = 0) and the collocation points.
+        // The outermost crossing of the tension gap, interpolated cubically in
+        // r² through the collocation points around it (and the apex, r = 0):
+        // a linear interpolation's error depends on where in its interval the
+        // crossing falls, which no refinement series can extrapolate.
         let threshold = TENSION_GAP;
         let at = |i: usize| {
             if i == 0 {
@@ -523,17 +832,49 @@ impl Sphere {
             None => 0.0,
             Some(i) if i == n => mesh.mid[last],
             Some(i) => {
-                let ((s0, g0), (s1, g1)) = (at(i), at(i + 1));
-                (s0 + (threshold - g0) / (g1 - g0) * (s1 - s0)).sqrt()
+                let first = i.saturating_sub(1).min(n.saturating_sub(3));
+                let nodes: Vec<(f64, f64)> = (first..(first + 4).min(n + 1)).map(at).collect();
+                let curve = |x: f64| lagrange(&nodes, x) - threshold;
+                let (mut lo, mut hi) = (at(i).0, at(i + 1).0);
+                for _ in 0..200 {
+                    let mid = 0.5 * (lo + hi);
+                    if mid <= lo || mid >= hi {
+                        break;
+                    }
+                    if curve(mid) <= 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                (0.5 * (lo + hi)).sqrt()
             }
         };
-        // The load inside the contact radius: whole rings, and the share of the
-        // ring it cuts by area.
+        // The load inside the contact radius: whole rings, and the part of the
+        // ring it cuts with the traction there quadratic through the three
+        // nearest mid-radii (3-point Gauss in r: exact for p r).
         let inner_load = (0..n)
             .map(|j| {
                 let (b0, b1) = (edges[j], edges[j + 1]);
-                let inside = (contact_radius.min(b1).powi(2) - b0 * b0).max(0.0);
-                p[j] * inside
+                if contact_radius >= b1 {
+                    return p[j] * (b1 * b1 - b0 * b0);
+                }
+                if contact_radius <= b0 {
+                    return 0.0;
+                }
+                let first = j.saturating_sub(1).min(n.saturating_sub(3));
+                let nodes: Vec<(f64, f64)> = (first..(first + 3).min(n))
+                    .map(|k| (mesh.mid[k], p[k]))
+                    .collect();
+                let (centre, half) = (0.5 * (b0 + contact_radius), 0.5 * (contact_radius - b0));
+                let root = (0.6f64).sqrt();
+                [(-root, 5.0 / 9.0), (0.0, 8.0 / 9.0), (root, 5.0 / 9.0)]
+                    .iter()
+                    .map(|&(x, w)| {
+                        let r = centre + half * x;
+                        w * half * 2.0 * r * lagrange(&nodes, r)
+                    })
+                    .sum::<f64>()
             })
             .sum::<f64>();
         let point = SpherePoint {
@@ -545,13 +886,13 @@ impl Sphere {
             interference_slope,
             load_slope,
         };
-        Ok(SphereState {
+        SphereState {
             mesh,
             gaps,
             apex,
             tangent,
             point,
-        })
+        }
     }
 }
 
