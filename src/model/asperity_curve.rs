@@ -296,6 +296,14 @@ pub const SOLVED_TABOR: (f64, f64) = (1e-3, 5.0);
 /// Bradley's 2; 1.52572 at μ = 5 against JKR's 1.5; `tests/all/asperity.rs`).
 pub const LIMIT_PULL_OFF_ERROR: (f64, f64) = (1.6e-5, 1.69e-2);
 
+/// What a solved Lennard-Jones curve's numbers are good to (absolute, in
+/// Maugis units), measured against the independent solution of
+/// `scripts/reference_lennard_jones.py` (docs/model.md §11, `tests/all/asperity.rs`):
+/// the pull-off and the jumps, converged ([`CONVERGED_MARKS`]; the load at
+/// the jump out 9.1e-6); the rows on the default mesh out of contact
+/// (6.0e-4) and in it (4.4e-2 at μ = 3).
+pub const CURVE_ERROR: (f64, f64, f64) = (1e-5, 1e-3, 5e-2);
+
 /// What `wearopt asperity` solves with: the trace on the default mesh, the
 /// pull-off and the jumps extrapolated to the converged solution.
 pub const CONVERGED_MARKS: SphereSettings = SphereSettings {

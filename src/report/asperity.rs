@@ -8,7 +8,9 @@ use super::format::FormatError;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::Format;
 use super::{number, sig};
-use crate::app::asperity::{AsperityDocument, Branch, CurveLaw, CurveMark, CurvePoint, Limit};
+use crate::app::asperity::{
+    AsperityDocument, Branch, CurveLaw, CurveMark, CurvePoint, Limit, CURVE_ERROR,
+};
 
 /// The formats `wearopt asperity` writes (the first is the default).
 pub const FORMATS: &[Format] = &[Format::Text, Format::Csv, Format::Json, Format::Html];
@@ -46,6 +48,18 @@ fn mark_words(m: &CurveMark) -> String {
 }
 
 /// The limit used, in words.
+/// What a solved Lennard-Jones curve's numbers are good to (none for a
+/// closed form, or a limit standing in).
+fn accuracy_words(doc: &AsperityDocument) -> Option<String> {
+    if doc.options.law != CurveLaw::LennardJones || doc.limit.is_some() {
+        return None;
+    }
+    let (marks, out, within) = CURVE_ERROR;
+    Some(format!(
+        "the pull-off and the jumps are converged (solved again on three nested meshes and extrapolated: within {marks:.0e} of an independent solution); the rows are the solver's default mesh, within {out:.0e} out of contact and {within:.0e} in it"
+    ))
+}
+
 fn limit_words(doc: &AsperityDocument) -> Option<String> {
     let l = doc.limit?;
     let (side, name) = match l.limit {
@@ -76,6 +90,9 @@ pub fn text(doc: &AsperityDocument) -> String {
     t.push_str("  units: load P̂ = P/(πγR), interference δ̂ = δ (K²/(π²γ²R))^(1/3), contact radius â = a (K/(πγR²))^(1/3)\n");
     if let Some(l) = limit_words(doc) {
         t.push_str(&format!("  note: {l}\n"));
+    }
+    if let Some(a) = accuracy_words(doc) {
+        t.push_str(&format!("  accuracy: {a}\n"));
     }
     let Some(c) = &doc.curve else {
         t.push_str(&format!(
@@ -244,6 +261,9 @@ pub fn html(doc: &AsperityDocument) -> String {
     );
     if let Some(l) = limit_words(doc) {
         p.paragraph(&format!("{l}."), Some("status"));
+    }
+    if let Some(a) = accuracy_words(doc) {
+        p.paragraph(&format!("Accuracy: {a}."), None);
     }
     match &doc.curve {
         None => p.paragraph(

@@ -352,3 +352,25 @@ fn the_extrapolated_solver_matches_the_independent_points() {
     }
     assert!(checked >= 50, "{checked}");
 }
+
+/// The text says what a solved curve's numbers are good to (converged marks,
+/// the rows on the default mesh), and says nothing of the kind for a closed
+/// form or a limit standing in.
+#[test]
+fn cli_text_states_the_accuracy() {
+    let text = |args: &[&str]| String::from_utf8(stdout(wearopt().args(args), 0)).unwrap();
+    let base = ["asperity", "--from", "-1", "--to", "0", "--points", "2"];
+    let solved = text(&[&base[..], &["--tabor", "0.5"]].concat());
+    assert!(
+        solved.contains("accuracy: the pull-off and the jumps are converged")
+            && solved.contains("within 1e-5 of an independent solution"),
+        "{solved}"
+    );
+    for other in [
+        vec!["--tabor", "0.5", "--adhesion-model", "jkr"],
+        vec!["--tabor", "50"],
+    ] {
+        let t = text(&[&base[..], &other[..]].concat());
+        assert!(!t.contains("accuracy:"), "{t}");
+    }
+}
