@@ -446,12 +446,7 @@ impl Sphere {
         };
         let (target_gap, target_interference) = (gap, state.point.interference);
         let residual = |x: &DVector<f64>| -> DVector<f64> {
-            let (p, _) = self.tractions(x, n);
-            let mp = &mesh.relative * &p;
-            let mut f = DVector::zeros(n + 1);
-            for i in 0..n {
-                f[i] = x[i] - x[n] - 0.5 * mesh.mid[i] * mesh.mid[i] / z0 - mp[i] / z0;
-            }
+            let (mut f, p) = self.gap_residual(&mesh, x);
             f[n] = match hold {
                 Hold::ApexGap => x[n] - target_gap,
                 Hold::Interference => {
@@ -462,23 +457,15 @@ impl Sphere {
             };
             f
         };
+        let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
         let factor = |x: &DVector<f64>| {
-            let (_, dp) = self.tractions(x, n);
-            let mut jacobian = DMatrix::zeros(n + 1, n + 1);
-            jacobian.view_mut((0, 0), (n, n)).copy_from(&mesh.relative);
-            for j in 0..n {
-                jacobian.view_mut((0, j), (n, 1)).scale_mut(-dp[j]);
-                jacobian[(j, j)] += 1.0;
-                jacobian[(j, n)] = -1.0;
-                jacobian[(n, j)] = match hold {
-                    Hold::ApexGap => 0.0,
-                    Hold::Interference => mesh.apex[j] * dp[j],
-                };
+            let mut jacobian = self.bordered(&mesh, x, &apex_only);
+            if hold == Hold::Interference {
+                for j in 0..n {
+                    jacobian[(n, j)] = mesh.apex[j] * traction(z0, z0 * x[j]).1;
+                }
+                jacobian[(n, n)] = -1.0;
             }
-            jacobian[(n, n)] = match hold {
-                Hold::ApexGap => 1.0,
-                Hold::Interference => -1.0,
-            };
             jacobian.lu()
         };
         let mut lu = factor(&x);
@@ -564,17 +551,18 @@ impl Sphere {
         self.extrapolated_at(state, g, Hold::ApexGap)
     }
 
-    /// p̃ and its slope at the gaps (over ẑ0) of `x`'s first `n` entries.
-    fn tractions(&self, x: &DVector<f64>, n: usize) -> (DVector<f64>, Vec<f64>) {
+    /// The gaps' equations F_i = u_i − G − c_i²/(2ẑ0) − (M p̃)_i/ẑ0 at `x` =
+    /// (u, G) (the last entry, the border's, left 0), and the tractions p̃.
+    fn gap_residual(&self, mesh: &Mesh, x: &DVector<f64>) -> (DVector<f64>, DVector<f64>) {
         let z0 = self.z0;
-        let mut p = DVector::zeros(n);
-        let mut dp = vec![0.0; n];
-        for j in 0..n {
-            let (v, d) = traction(z0, z0 * x[j]);
-            p[j] = v;
-            dp[j] = d;
+        let n = mesh.len();
+        let p = DVector::from_iterator(n, x.rows(0, n).iter().map(|&u| traction(z0, z0 * u).0));
+        let mp = &mesh.relative * &p;
+        let mut f = DVector::zeros(n + 1);
+        for i in 0..n {
+            f[i] = x[i] - x[n] - 0.5 * mesh.mid[i] * mesh.mid[i] / z0 - mp[i] / z0;
         }
-        (p, dp)
+        (f, p)
     }
 
     /// `state`'s point extrapolated to the converged solution, and an
@@ -642,16 +630,10 @@ impl Sphere {
         t: &DVector<f64>,
         s: f64,
     ) -> Result<DVector<f64>, NotConverged> {
-        let z0 = self.z0;
         let n = mesh.len();
         let failed = NotConverged { apex_gap: x[n] };
         let residual = |x: &DVector<f64>| -> DVector<f64> {
-            let p = DVector::from_iterator(n, x.rows(0, n).iter().map(|&u| traction(z0, z0 * u).0));
-            let mp = &mesh.relative * &p;
-            let mut f = DVector::zeros(n + 1);
-            for i in 0..n {
-                f[i] = x[i] - x[n] - 0.5 * mesh.mid[i] * mesh.mid[i] / z0 - mp[i] / z0;
-            }
+            let (mut f, _) = self.gap_residual(mesh, x);
             f[n] = dot(&(x - x0), t) - s;
             f
         };
