@@ -145,24 +145,33 @@ struct Mesh {
 }
 
 impl Mesh {
+    /// The trace's mesh: graded from the contact edge alone.
     fn new(z0: f64, centre: f64, settings: SphereSettings) -> Mesh {
-        Mesh::nested(z0, centre, settings, 0)
+        Mesh::graded(z0, centre, settings, f64::INFINITY, 0)
     }
 
-    /// The mesh graded at `centre` with every ring cut into 2^`halvings`
-    /// equal parts: a nested family, on which the discretisation error is a
-    /// series in the spacing with the same coefficients at every level
-    /// (Richardson's extrapolation needs the same rings at every level).
+    /// The mesh graded at `centre`, inside a contact no ring wider than 2 % of
+    /// its radius, with every ring cut into 2^`halvings` equal parts: a
+    /// nested family, on which the discretisation error is a series in the
+    /// spacing with the same coefficients at every level (Richardson's
+    /// extrapolation needs the same rings at every level). The repulsion
+    /// inside a contact is stiff: rings graded from the edge alone left the
+    /// load 3e-2 short at δ̂ = 1.5 (μ = 1), too far from the series' leading
+    /// terms to extrapolate (the trace, which only needs a start for these
+    /// meshes, keeps its own: 35 % fewer rings there).
     fn nested(z0: f64, centre: f64, settings: SphereSettings, halvings: u32) -> Mesh {
+        Mesh::graded(z0, centre, settings, 0.02, halvings)
+    }
+
+    /// Rings graded at `centre` (none inside it wider than `inside` times
+    /// it), each cut into 2^`halvings` equal parts.
+    fn graded(z0: f64, centre: f64, settings: SphereSettings, inside: f64, halvings: u32) -> Mesh {
         // The traction turns over a cohesive zone ~ (3π/4) ẑ0² wide (large μ) or
         // over the apex region ~ √ẑ0 (small μ).
         let feature = (2.4 * z0 * z0).min(0.5 * z0.sqrt());
         let finest = feature / (16.0 * settings.refinement);
         let growth = 0.08 / settings.refinement;
-        // Inside a contact no ring is wider than 2 % of its radius: the
-        // repulsion there is stiff, and rings graded from the edge alone
-        // left the load 3e-2 short at δ̂ = 1.5 (μ = 1).
-        let inside = 0.02 * centre / settings.refinement;
+        let inside = inside * centre / settings.refinement;
         let outer = 200.0 * (1.0 + centre + (2.0 * z0).sqrt());
         let mut edges = vec![0.0];
         let mut r = 0.0_f64;
@@ -413,7 +422,7 @@ impl Sphere {
 
     /// `state` solved again on the mesh graded at `centre` and cut
     /// 2^`halvings` times ([`Mesh::nested`]), holding what `hold` names: the
-    /// apex gap `gap` (near the state's) or the state's interference. From
+    /// apex gap or the interference, at `target` (near the state's). From
     /// the state's gaps interpolated onto the finer mesh, close to the
     /// solution: Newton's method with the
     /// Jacobian factored once (refactored only where a step fails to
@@ -424,7 +433,7 @@ impl Sphere {
     fn resolved(
         &self,
         state: &SphereState,
-        gap: f64,
+        target: f64,
         centre: f64,
         halvings: u32,
         hold: Hold,
@@ -444,14 +453,13 @@ impl Sphere {
         let failed = NotConverged {
             apex_gap: state.apex,
         };
-        let (target_gap, target_interference) = (gap, state.point.interference);
         let residual = |x: &DVector<f64>| -> DVector<f64> {
             let (mut f, p) = self.gap_residual(&mesh, x);
             f[n] = match hold {
-                Hold::ApexGap => x[n] - target_gap,
+                Hold::ApexGap => x[n] - target,
                 Hold::Interference => {
                     (z0 * (1.0 - x[n]) + mesh.apex.iter().zip(&p).map(|(a, p)| a * p).sum::<f64>()
-                        - target_interference)
+                        - target)
                         / z0
                 }
             };
@@ -522,20 +530,37 @@ impl Sphere {
     /// A turning point of δ̂ along the path (a jump), extrapolated to the
     /// converged solution: the trace's turning point `state` moves by the
     /// discretisation's error, and the load there with it (it is δ̂, not P̂,
-    /// that is stationary), so δ̂ is extrapolated at three apex gaps
-    /// G(1 − ε), G, G(1 + ε) (ε = 10⁻⁴) and the parabola through them moves G
-    /// towards the converged turn (again from there while the move exceeds
-    /// εG), where the point is extrapolated again.
+    /// that is stationary). See [`Sphere::extrapolated_extremum`].
     pub fn extrapolated_turn(
         &self,
         state: &SphereState,
     ) -> Result<(SpherePoint, f64), NotConverged> {
-        let step = 1e-4 * state.apex;
-        let mut g = state.apex;
+        self.extrapolated_extremum(state, Hold::ApexGap, |p| p.interference)
+    }
+
+    /// The stationary point of `quantity` along the path near the trace's
+    /// `state`, extrapolated to the converged solution: `quantity` is
+    /// extrapolated at three values of what `hold` names (x − ε, x, x + ε:
+    /// ε = 10⁻⁴ G for the apex gap, 10⁻³ for the interference) and the
+    /// parabola through them moves x towards the converged extremum (again
+    /// from there while the move exceeds ε), where the point is extrapolated
+    /// again. For a jump (δ̂ turns: the stencil in the apex gap) and the
+    /// pull-off (P̂ is least: in the interference, which moves steadily there
+    /// while the apex gap barely does at large μ).
+    pub fn extrapolated_extremum(
+        &self,
+        state: &SphereState,
+        hold: Hold,
+        quantity: fn(&SpherePoint) -> f64,
+    ) -> Result<(SpherePoint, f64), NotConverged> {
+        let (mut x, step) = match hold {
+            Hold::ApexGap => (state.apex, 1e-4 * state.apex),
+            Hold::Interference => (state.point.interference, 1e-3),
+        };
         for _ in 0..4 {
-            let [lo, mid, hi] = [g - step, g, g + step].map(|at| {
-                self.extrapolated_at(state, at, Hold::ApexGap)
-                    .map(|(p, _)| p.interference)
+            let [lo, mid, hi] = [x - step, x, x + step].map(|at| {
+                self.extrapolated_at(state, at, hold)
+                    .map(|(p, _)| quantity(&p))
             });
             let (lo, mid, hi) = (lo?, mid?, hi?);
             let bend = lo - 2.0 * mid + hi;
@@ -543,12 +568,12 @@ impl Sphere {
                 break;
             }
             let shift = (0.5 * step * (lo - hi) / bend).clamp(-20.0 * step, 20.0 * step);
-            g += shift;
+            x += shift;
             if shift.abs() <= step {
                 break;
             }
         }
-        self.extrapolated_at(state, g, Hold::ApexGap)
+        self.extrapolated_at(state, x, hold)
     }
 
     /// The gaps' equations F_i = u_i − G − c_i²/(2ẑ0) − (M p̃)_i/ẑ0 at `x` =
@@ -582,21 +607,25 @@ impl Sphere {
         state: &SphereState,
         hold: Hold,
     ) -> Result<(SpherePoint, f64), NotConverged> {
-        self.extrapolated_at(state, state.apex, hold)
+        let target = match hold {
+            Hold::ApexGap => state.apex,
+            Hold::Interference => state.point.interference,
+        };
+        self.extrapolated_at(state, target, hold)
     }
 
-    /// [`Sphere::extrapolated`] at apex gap `gap` (near the state's) where
-    /// the apex gap is held.
+    /// [`Sphere::extrapolated`] with what `hold` names at `target` (near the
+    /// state's).
     fn extrapolated_at(
         &self,
         state: &SphereState,
-        gap: f64,
+        target: f64,
         hold: Hold,
     ) -> Result<(SpherePoint, f64), NotConverged> {
         let centre = state.point.contact_radius;
-        let l0 = self.resolved(state, gap, centre, 0, hold, false)?;
-        let l1 = self.resolved(&l0, gap, centre, 1, hold, false)?;
-        let l2 = self.resolved(&l1, gap, centre, 2, hold, true)?;
+        let l0 = self.resolved(state, target, centre, 0, hold, false)?;
+        let l1 = self.resolved(&l0, target, centre, 1, hold, false)?;
+        let l2 = self.resolved(&l1, target, centre, 2, hold, true)?;
         let levels = [l0.point, l1.point, l2.point];
         let mut change = 0.0f64;
         let mut value = |f: fn(&SpherePoint) -> f64, estimate: bool| {
