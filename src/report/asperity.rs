@@ -48,10 +48,16 @@ fn mark_words(m: &CurveMark) -> String {
 }
 
 /// The limit used, in words.
+/// Whether the curve is the Lennard-Jones solver's (not a closed form, nor a
+/// limit standing in).
+fn solved(doc: &AsperityDocument) -> bool {
+    doc.options.law == CurveLaw::LennardJones && doc.limit.is_none()
+}
+
 /// What a solved Lennard-Jones curve's numbers are good to (none for a
 /// closed form, or a limit standing in).
 fn accuracy_words(doc: &AsperityDocument) -> Option<String> {
-    if doc.options.law != CurveLaw::LennardJones || doc.limit.is_some() {
+    if !solved(doc) {
         return None;
     }
     let (marks, out, within) = CURVE_ERROR;
@@ -153,6 +159,14 @@ pub fn json(doc: &AsperityDocument) -> String {
         "pull_off": c.map(|c| json!({"load": c.pull_off.load, "interference": c.pull_off.interference})),
         "jump_in": mark_json(&c.and_then(|c| c.jump_in)),
         "jump_out": mark_json(&c.and_then(|c| c.jump_out)),
+        "accuracy": solved(doc).then(|| {
+            let (marks, out, within) = CURVE_ERROR;
+            json!({
+                "marks": marks,
+                "points_out_of_contact": out,
+                "points_in_contact": within,
+            })
+        }),
     }))
 }
 

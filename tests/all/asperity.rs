@@ -371,5 +371,17 @@ fn cli_text_states_the_accuracy() {
     ] {
         let t = text(&[&base[..], &other[..]].concat());
         assert!(!t.contains("accuracy:"), "{t}");
+        let j: serde_json::Value = serde_json::from_str(&text(
+            &[&base[..], &other[..], &["--format", "json"]].concat(),
+        ))
+        .unwrap();
+        assert!(j["accuracy"].is_null(), "{j}");
     }
+    let j: serde_json::Value = serde_json::from_str(&text(
+        &[&base[..], &["--tabor", "0.5", "--format", "json"]].concat(),
+    ))
+    .unwrap();
+    assert_eq!(j["accuracy"]["marks"], 2e-5);
+    assert_eq!(j["accuracy"]["points_out_of_contact"], 1e-3);
+    assert_eq!(j["accuracy"]["points_in_contact"], 5e-2);
 }
