@@ -473,13 +473,25 @@ pub fn approach_gaps(end_gap: f64) -> Vec<f64> {
     gaps
 }
 
-/// The contact panels' ends from δ̂_s to δ̂_max.
+/// The widest contact panel, [`FIRST_PANEL`] doubled 13 times: the doubling
+/// stops there (a last panel 34 wide missed the solver by 2.3e-6 of P̂ at
+/// μ = 0.01, where the repulsion sets in across it).
+pub const WIDEST_PANEL: f64 = 8.192;
+
+/// The contact panels' ends from δ̂_s to δ̂_max: δ̂_s + w for w doubling from
+/// [`FIRST_PANEL`] (each panel as far from δ̂_s as it is wide), then steps of
+/// [`WIDEST_PANEL`]; the last panel between one and two steps.
 pub fn contact_breaks(switch: f64, max_interference: f64) -> Vec<f64> {
     let mut breaks = vec![switch];
     let mut width = FIRST_PANEL;
-    while switch + 2.0 * width < max_interference {
+    while width <= WIDEST_PANEL && switch + 2.0 * width < max_interference {
         breaks.push(switch + width);
         width *= 2.0;
+    }
+    let mut at = breaks[breaks.len() - 1];
+    while at + 2.0 * WIDEST_PANEL < max_interference {
+        at += WIDEST_PANEL;
+        breaks.push(at);
     }
     breaks.push(max_interference);
     breaks
@@ -702,5 +714,18 @@ mod tests {
             assert!(((w[2] - w[1]) / (w[1] - w[0]) - 2.0).abs() < 1e-9 || w[0] == -0.5);
         }
         assert_eq!(contact_nodes(&b).len(), (b.len() - 1) * PANEL_DEGREE + 1);
+        // Far from the switch the panels stop growing at WIDEST_PANEL.
+        let b = contact_breaks(-0.1, 50.0);
+        let widths: Vec<f64> = b.windows(2).map(|w| w[1] - w[0]).collect();
+        assert!(widths.iter().all(|&w| w < 2.0 * WIDEST_PANEL), "{widths:?}");
+        assert!(
+            (widths[widths.len() - 2] - WIDEST_PANEL).abs() < 1e-12,
+            "{widths:?}"
+        );
+        assert!(
+            widths.windows(2).all(|w| w[1] <= 2.0 * w[0] * (1.0 + 1e-9)),
+            "{widths:?}"
+        );
+        assert_eq!(*b.last().unwrap(), 50.0);
     }
 }
