@@ -161,18 +161,12 @@ impl Mesh {
     /// load 3e-2 short at δ̂ = 1.5 (μ = 1), too far from the series' leading
     /// terms to extrapolate.
     fn nested(z0: f64, centre: f64, settings: SphereSettings, halvings: u32) -> Mesh {
-        Mesh::graded(z0, centre, settings, 0.02, halvings)
-    }
-
-    /// Rings graded at `centre` (none inside it wider than `inside` times
-    /// it), each cut into 2^`halvings` equal parts.
-    fn graded(z0: f64, centre: f64, settings: SphereSettings, inside: f64, halvings: u32) -> Mesh {
         // The traction turns over a cohesive zone ~ (3π/4) ẑ0² wide (large μ) or
         // over the apex region ~ √ẑ0 (small μ).
         let feature = (2.4 * z0 * z0).min(0.5 * z0.sqrt());
         let finest = feature / (16.0 * settings.refinement);
         let growth = 0.08 / settings.refinement;
-        let inside = inside * centre / settings.refinement;
+        let inside = 0.02 * centre / settings.refinement;
         let outer = 200.0 * (1.0 + centre + (2.0 * z0).sqrt());
         let mut edges = vec![0.0];
         let mut r = 0.0_f64;
