@@ -112,10 +112,13 @@ fn dimensional(c: &mut Criterion) {
 }
 
 /// Capillary adhesion (docs/model.md §10): P̄ and Ā at one h with a meniscus, and the
-/// humid hub (`problems/micro-gear-humid.toml`, RH = 50 %) against the same scene dry:
-/// the separation solve alone, and the whole evaluation (solve, pull-off and the
-/// apparent work of adhesion Γ, one integral over the summit heights and one
-/// of the meniscus over h).
+/// humid hub (`problems/micro-gear-humid.toml`, RH = 50 %) against the same scene dry,
+/// under its own law (Lennard-Jones) and under DMT: the separation solve alone; solve
+/// and pull-off (what a study asks for); and the whole evaluation `eval` asks for
+/// (and the apparent work of adhesion Γ, one integral over the summit heights and
+/// one of the meniscus over h). Dry, Γ is computed where the file has a cantilever:
+/// "dry with the cantilever" is the humid file without `[environment]` (the same
+/// numbers asked for), "dry" drops the cantilever too (no Γ).
 fn capillary(c: &mut Criterion) {
     let mut g = c.benchmark_group("capillary");
     let m = Model::with_law(
@@ -156,10 +159,42 @@ fn capillary(c: &mut Criterion) {
         pull_off: false,
         ..EvaluationOptions::default()
     };
-    for (name, scene) in [("dry", &dry), ("RH 50 %", &humid)] {
+    // What studies ask for (no Γ), and what `eval` asks for (Γ in humid air).
+    let without_work = EvaluationOptions {
+        work_of_adhesion: false,
+        ..EvaluationOptions::default()
+    };
+    let under_dmt = |scene: &wearopt::model::Scene| wearopt::model::Scene {
+        adhesion_model: wearopt::model::AdhesionModel::Dmt,
+        ..scene.clone()
+    };
+    // The same file without `[environment]`: its cantilever asks for Γ in dry
+    // air too (what `eval` of that file computes).
+    let dry_cantilever = wearopt::model::Scene {
+        environment: None,
+        ..humid.clone()
+    };
+    let (dry_dmt, humid_dmt, dry_cantilever_dmt) = (
+        under_dmt(&dry),
+        under_dmt(&humid),
+        under_dmt(&dry_cantilever),
+    );
+    for (name, scene) in [
+        ("dry", &dry),
+        ("dry with the cantilever", &dry_cantilever),
+        ("RH 50 %", &humid),
+        ("DMT dry", &dry_dmt),
+        ("DMT dry with the cantilever", &dry_cantilever_dmt),
+        ("DMT RH 50 %", &humid_dmt),
+    ] {
         g.bench_function(format!("micro-gear-humid {name}: separation solve"), |b| {
             b.iter(|| black_box(evaluate(black_box(scene), &solve_only)))
         });
+        if scene.environment.is_some() {
+            g.bench_function(format!("micro-gear-humid {name}: solve + pull-off"), |b| {
+                b.iter(|| black_box(evaluate(black_box(scene), &without_work)))
+            });
+        }
         g.bench_function(
             format!("micro-gear-humid {name}: solve + pull-off (+ Γ)"),
             |b| b.iter(|| black_box(evaluate(black_box(scene), &EvaluationOptions::default()))),

@@ -51,7 +51,11 @@
 use super::dmt::noncontact;
 #[cfg(test)]
 use super::law::Attraction;
-use super::special::{gauss_scaled, kappa, tail0, tail1_given, SQRT_HALF_PI, SQRT_TWO_PI};
+#[cfg(test)]
+use super::special::tail0;
+use super::special::{
+    exp_fast, gauss_scaled, kappa, tail0_fast, tail1_given, SQRT_HALF_PI, SQRT_TWO_PI,
+};
 use std::f64::consts::FRAC_1_SQRT_2;
 
 pub use super::environment::{
@@ -106,13 +110,22 @@ impl Capillary {
     /// subtracted; across 0 as √(2π)|a| + T_1(|a|) - T_1(h) and
     /// √(π/2) (erf(h/√2) + erf(|a|/√2)), sums of positive terms.
     pub fn coverage(&self, h: f64) -> [f64; 4] {
+        self.coverage_of::<true>(h)
+    }
+
+    /// [`Capillary::coverage`], J'' (and across 0 J') only where `SLOPES`
+    /// (0 otherwise): J itself is the same to the bit.
+    #[inline]
+    fn coverage_of<const SLOPES: bool>(&self, h: f64) -> [f64; 4] {
         let k = self.range;
         let a = h - k;
         let m = h - 0.5 * k;
         let exponent = kappa(a);
         // (h² - a²)/2 = k m.
         let x = k * m;
-        let d2j = if a >= 0.0 {
+        let d2j = if !SLOPES {
+            0.0
+        } else if a >= 0.0 {
             -(-x).exp_m1() / k
         } else if x > 0.0 {
             (-0.5 * a * a).exp() * -(-x).exp_m1() / k
@@ -139,16 +152,17 @@ impl Capillary {
             // T_0(m) and φ(m) at the scale e^{κ(a)}.
             let (t0, phi) = if a >= 0.0 {
                 let g = (-0.25 * k * (m + a)).exp();
-                (tail0(m) * g, g)
+                (tail0_fast(m) * g, g)
             } else {
                 let g = (-kappa(m)).exp();
-                (tail0(m) * g, gauss_scaled(m) * g)
+                (tail0_fast(m) * g, gauss_scaled(m) * g)
             };
             return [t0 + phi * sum_j, -phi * sum_dj, d2j, exponent];
         }
         let (j, dj) = if a >= 0.0 {
-            let r = (-x).exp();
-            let (t0a, t0h) = (tail0(a), tail0(h));
+            // e^{-k m} (0 where it underflows: exp_fast clamps).
+            let r = if x < 708.0 { exp_fast(-x) } else { 0.0 };
+            let (t0a, t0h) = (tail0_fast(a), tail0_fast(h));
             let (t1a, t1h) = (tail1_given(a, t0a), tail1_given(h, t0h));
             ((t1a - t1h * r) / k, (t0h * r - t0a) / k)
         } else if h <= 0.0 {
@@ -156,7 +170,7 @@ impl Capillary {
             let (b, c) = (-h, -a);
             let rb = (-kappa(b)).exp();
             let r = (-k * (b + 0.5 * k)).exp();
-            let (t0b, t0c) = (tail0(b), tail0(c));
+            let (t0b, t0c) = (tail0_fast(b), tail0_fast(c));
             let (t1b, t1c) = (tail1_given(b, t0b), tail1_given(c, t0c));
             (
                 SQRT_TWO_PI - rb * (t1b - t1c * r) / k,
@@ -164,11 +178,16 @@ impl Capillary {
             )
         } else {
             let c = -a;
-            let (t0c, t0h) = (tail0(c), tail0(h));
+            let (t0c, t0h) = (tail0_fast(c), tail0_fast(h));
             let t1c = tail1_given(c, t0c) * (-kappa(c)).exp();
             let t1h = tail1_given(h, t0h) * (-kappa(h)).exp();
-            let erfs = puruspe::erf(h * FRAC_1_SQRT_2) + puruspe::erf(c * FRAC_1_SQRT_2);
-            ((SQRT_TWO_PI * c + t1c - t1h) / k, -SQRT_HALF_PI * erfs / k)
+            let dj = if SLOPES {
+                let erfs = puruspe::erf(h * FRAC_1_SQRT_2) + puruspe::erf(c * FRAC_1_SQRT_2);
+                -SQRT_HALF_PI * erfs / k
+            } else {
+                0.0
+            };
+            ((SQRT_TWO_PI * c + t1c - t1h) / k, dj)
         };
         [j, dj, d2j, exponent]
     }
@@ -205,6 +224,18 @@ impl Capillary {
         ]
     }
 
+    /// The capillary load alone at separation h, as (mantissa, scale
+    /// exponent): [`Capillary::at`]'s `load` and `exponent` to the bit, without
+    /// the slopes (what the work's quadrature over h takes).
+    pub fn load_at(&self, h: f64) -> (f64, f64) {
+        let [j, _, _, exponent] = self.coverage_of::<false>(h);
+        if exponent >= SMALL_COVERAGE_EXPONENT {
+            return (-self.independent() * j, exponent);
+        }
+        let f = self.wetting * j * exp_fast(-exponent);
+        (self.flooded * (-f).exp_m1(), 0.0)
+    }
+
     /// The capillary load and its h-derivatives at separation h.
     pub fn at(&self, h: f64) -> CapillaryShare {
         let [j, dj, d2j, exponent] = self.coverage(h);
@@ -219,7 +250,7 @@ impl Capillary {
                 wetted_fraction: 0.0,
             };
         }
-        let s = (-exponent).exp();
+        let s = exp_fast(-exponent);
         let (f, df, d2f) = (
             self.wetting * j * s,
             self.wetting * dj * s,
@@ -305,6 +336,31 @@ mod tests {
         assert!((m.kelvin_radius - 0.7568e-9).abs() < 1e-12);
         assert!((m.height - 2.0 * m.kelvin_radius).abs() < 1e-24);
         assert!((m.laplace_pressure * m.height - m.adhesion).abs() < 1e-15 * m.adhesion);
+    }
+
+    /// The load alone is the full evaluation's load, bit for bit (the work's
+    /// quadrature takes it): every branch of the coverage, small and flooding
+    /// wetting, one scale where the coverage underflows.
+    #[test]
+    fn the_load_alone_is_the_loads_value() {
+        let mut checked = 0;
+        for k in [1e-4, 0.3, 1.0, 3.0, 400.0] {
+            for (wetting, flooded) in [(1e-6, 2.0), (0.04, 1.3), (50.0, 0.2)] {
+                let c = Capillary {
+                    range: k,
+                    wetting,
+                    flooded,
+                };
+                for h in [-50.0, -1.2, 0.0, 0.3, 0.9, 2.9, 6.0, 60.0, 420.0] {
+                    let (load, exponent) = c.load_at(h);
+                    let full = c.at(h);
+                    assert_eq!(load.to_bits(), full.load.to_bits(), "k {k} h {h}");
+                    assert_eq!(exponent.to_bits(), full.exponent.to_bits());
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 135);
     }
 
     /// The closed forms and series against the Dugdale quadrature (independent:
