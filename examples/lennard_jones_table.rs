@@ -2,7 +2,8 @@
 //! from the sphere solver: `scripts/lennard_jones_table.sh` runs it.
 //!
 //! Usage: `lennard_jones_table [REFINEMENT] [MU ...]` — the Tabor parameters
-//! default to the table's grid; blocks go to stdout in increasing μ, progress
+//! default to the table's grid (`REACH=R` in the environment: contact parts
+//! to δ̂ = R instead of 50); blocks go to stdout in increasing μ, progress
 //! to stderr. `lennard_jones_table check FILE [MU ...]` compares a table with
 //! the solver between its nodes.
 
@@ -55,7 +56,13 @@ fn main() {
     );
     for mu in mus {
         let start = std::time::Instant::now();
-        let (samples, to) = with_shorter_reach(mu, REACH, 0.93, 0.6 * REACH, |to| {
+        // `REACH=R` in the environment: a contact part to δ̂ = R instead (to
+        // measure the tail beyond the table's reach against the solver).
+        let reach = std::env::var("REACH")
+            .ok()
+            .and_then(|r| r.parse().ok())
+            .unwrap_or(REACH);
+        let (samples, to) = with_shorter_reach(mu, reach, 0.93, 0.6 * reach, |to| {
             lennard_jones_loading(
                 mu,
                 approach_gaps,

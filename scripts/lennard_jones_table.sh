@@ -7,14 +7,28 @@
 #   scripts/lennard_jones_table.sh            # the grid: μ = 0.01 … 5, 12 per decade
 #   scripts/lennard_jones_table.sh check      # only the check of the committed table
 #   scripts/lennard_jones_table.sh check 0.01 1.95   # of the curves at those μ
+#   scripts/lennard_jones_table.sh between    # tests/data/lennard_jones_between.txt
 #
 # Takes about 25 minutes on one core to write (release build) and two hours to
-# check.
+# check. `between` writes seven curves the table does not hold, at the geometric
+# midpoints between six pairs of its curves (where the interpolation in μ errs
+# most) and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
+# measures that interpolation against (about 7 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --example lennard_jones_table
 bin=target/release/examples/lennard_jones_table
 table=src/model/lennard_jones/table.txt
+if [[ "${1:-}" == between ]]; then
+    # μ_i = 0.01 · 500^{i/33} at i = 5.5, 12.5, 19.5, 22.5, 26.5, 31.5, and the
+    # hub's (problems/micro-gear.toml: `wearopt eval --format json`'s tabor_parameter).
+    mus=$(python3 -c 'print(" ".join(repr(0.01 * 500 ** (i / 33)) for i in (5.5, 12.5, 19.5, 22.5, 26.5, 31.5)))')
+    mus="0.37421544616518193 $mus"
+    # shellcheck disable=SC2086
+    "$bin" 1 $mus > tests/data/lennard_jones_between.txt.new
+    mv tests/data/lennard_jones_between.txt.new tests/data/lennard_jones_between.txt
+    exit 0
+fi
 if [[ "${1:-}" != check ]]; then
     "$bin" 1 > "$table.new"
     mv "$table.new" "$table"

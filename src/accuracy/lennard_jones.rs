@@ -9,6 +9,7 @@ use std::time::Instant;
 
 use crate::model::lennard_jones::rough::{stand_in_pull_off_error, RoughLaw};
 use crate::model::lennard_jones::spacing;
+use crate::model::lennard_jones::table::Curve;
 use crate::model::{AsperityLaw, Coefficients, Model, Quadrature};
 
 use super::{rel, stats, Quantity, Row, RowLaw, NEGLIGIBLE};
@@ -100,12 +101,28 @@ fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
 pub fn reference_load(point: &LennardJonesPoint) -> Option<(f64, f64)> {
     let c = point.coefficients;
     let law = RoughLaw::new(c.c_0, c.c_h, point.range)?;
-    let ell = law.ell;
-    let h = point.separation;
+    Some(reference_load_of(
+        law.curves(),
+        law.ell,
+        c,
+        point.separation,
+    ))
+}
+
+/// [`reference_load`] of any curves, each with its weight and Δc, at ℓ = σ/ε,
+/// the coefficients `c` (c_p, c_0 of the plastic branch) and h: also a curve
+/// that is not in the table (one the solver wrote at a μ between the table's,
+/// weight 1, to measure the interpolation in μ).
+pub fn reference_load_of<'a>(
+    curves: impl IntoIterator<Item = (&'a Curve, f64, f64)>,
+    ell: f64,
+    c: Coefficients,
+    h: f64,
+) -> (f64, f64) {
     let (lo, hi) = (-h - 10.0, -h + 10.0);
     let weight = |d: f64| (-0.5 * (h + d) * (h + d)).exp();
     let (mut load, mut size) = (0.0, 0.0);
-    for (curve, w, dc) in law.curves() {
+    for (curve, w, dc) in curves {
         let switch = curve.switch / ell;
         let p = |d: f64| {
             if d >= dc {
@@ -152,7 +169,7 @@ pub fn reference_load(point: &LennardJonesPoint) -> Option<(f64, f64)> {
             size += w.abs() * magnitude;
         }
     }
-    Some((load, size))
+    (load, size)
 }
 
 /// The rows: P̄ at the default setting against the reference, and the time

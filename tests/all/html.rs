@@ -111,7 +111,7 @@ fn eval_page() {
             "sensitivities",
         ],
     );
-    assert!(html.contains("pull-off 5.997 µN at d = 11.55 nm"));
+    assert!(html.contains("pull-off 5.999 µN at d = 11.55 nm"));
     assert!(html.contains("0.6404 µm²"));
     renders_in_chromium(&html, "eval");
 }

@@ -394,7 +394,7 @@ fn optimize_text_says_an_infeasible_baseline_plainly() {
 }
 
 /// The polysilicon hub (φ0 = 0.374, in the transition) with a 2 µN spring: JKR's
-/// pull-off (2.08e-63 N) releases it, the Lennard-Jones law's (5.997 µN; DMT with
+/// pull-off (2.08e-63 N) releases it, the Lennard-Jones law's (5.999 µN; DMT with
 /// van der Waals attraction gives 4.2785 µN, docs/model.md §7's worked scene) makes
 /// it stick. The report gives both and says they disagree.
 #[test]
@@ -411,7 +411,7 @@ fn stiction_under_both_laws_in_the_transition() {
     let t = stdout_of(&["eval", path.to_str().unwrap()]);
     assert!(t.contains("→ releases (margin < 1)"), "{t}");
     assert!(
-        t.contains("under the Lennard-Jones law instead: pull-off force 5.997 µN"),
+        t.contains("under the Lennard-Jones law instead: pull-off force 5.999 µN"),
         "{t}"
     );
     assert!(t.contains("they DISAGREE"), "{t}");
@@ -424,7 +424,7 @@ fn stiction_under_both_laws_in_the_transition() {
     );
     assert_eq!(v["stiction"]["other_model"]["verdict"], "sticks");
     let m = v["stiction"]["other_model"]["margin"].as_f64().unwrap();
-    assert!((m - 5.997e-6 / 2e-6).abs() < 1e-3 * m, "{m}");
+    assert!((m - 5.999e-6 / 2e-6).abs() < 1e-3 * m, "{m}");
 }
 
 /// The reader's notes reach eval JSON as words in `notes` (as before) and as values in
