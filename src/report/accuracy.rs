@@ -8,6 +8,7 @@ use std::fmt::Write;
 use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
+use crate::model::lennard_jones::table::{INTERPOLATION_ERROR, SOLVER_ERROR, TABLE_ERROR};
 use crate::model::AttractionKind;
 
 use super::number;
@@ -78,6 +79,12 @@ pub fn json(wp: &WorkPrecision) -> String {
             "below": num(wp.lennard_jones_stand_in_error.0),
             "above": num(wp.lennard_jones_stand_in_error.1),
         },
+        "lennard_jones_error": {
+            "table_against_solver": TABLE_ERROR,
+            "solver_against_reference": SOLVER_ERROR,
+            "interpolation_in_tabor": INTERPOLATION_ERROR.0,
+            "interpolation_in_tabor_at_cusp": INTERPOLATION_ERROR.1,
+        },
         "scenes": wp.scenes,
         "rows": rows,
     });
@@ -129,8 +136,13 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
             let _ = writeln!(
                 out,
-                "reference: adaptive Simpson in Δ of the same tabulated curves, each with its plastic branch c_p Δ - c_0 beyond its own Δc, weighted as the model interpolates in μ (square-root ends at the jumps removed by Δ = Δ_s ∓ s²), to {:.0e} of ∫|p| φ̄; load errors are relative to ∫|p| φ̄. The table itself is the solver's to 1e-4 (approach) and 6e-4–1.4e-2 absolute (contact), the solver 1e-3 from the converged reference (docs/model.md §11)",
+                "reference: adaptive Simpson in Δ of the same tabulated curves, each with its plastic branch c_p Δ - c_0 beyond its own Δc, weighted as the model interpolates in μ (square-root ends at the jumps removed by Δ = Δ_s ∓ s²), to {:.0e} of ∫|p| φ̄; load errors are relative to ∫|p| φ̄",
                 crate::accuracy::lennard_jones::REFERENCE_TOLERANCE
+            );
+            let (between, cusp) = INTERPOLATION_ERROR;
+            let _ = writeln!(
+                out,
+                "the table against the sphere (docs/model.md §11): one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes, the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} next to the cusp μ ≈ 0.7) — the law's largest error, not in the rows below"
             );
             let _ = writeln!(
                 out,

@@ -457,6 +457,22 @@ pub fn bradley(tau: f64) -> (f64, f64) {
     )
 }
 
+/// What the law is good to, as measured (docs/model.md §11 *Accuracy*), for
+/// the reports to state. P̂ of the table between its nodes against the
+/// converged solver (relative, 1e-9 absolute near P̂ = 0; every μ checked by
+/// `scripts/lennard_jones_table.sh check`).
+pub const TABLE_ERROR: f64 = 1e-6;
+/// The converged solver against an independent discretisation of the same
+/// equation (`scripts/reference_lennard_jones.py`): P̂ within 1.8e-6 at 93
+/// points, μ = 0.05 … 5, the whole curve.
+pub const SOLVER_ERROR: f64 = 1.8e-6;
+/// P̄ between the table's curves (cubic in 1/μ) against P̄ of the solver's
+/// own curve there, relative to ∫|p| φ̄ (`tests/data/lennard_jones_between.txt`,
+/// ℓ = 1 … 100, z0 ≤ 3, h = −1 … 4): at the midpoints between curves, and
+/// next to the cusp μ ≈ 0.7 (between a single-valued curve and an S-shaped
+/// one). The law's largest error against the converged sphere.
+pub const INTERPOLATION_ERROR: (f64, f64) = (6.3e-5, 1.8e-4);
+
 /// The approach part's degree (nodes τ_1 … τ_n; τ_0 = 0 is the far field).
 pub const APPROACH_DEGREE: usize = 32;
 /// Each contact panel's degree.
