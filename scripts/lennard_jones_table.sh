@@ -8,12 +8,16 @@
 #   scripts/lennard_jones_table.sh check      # only the check of the committed table
 #   scripts/lennard_jones_table.sh check 0.01 1.95   # of the curves at those μ
 #   scripts/lennard_jones_table.sh between    # tests/data/lennard_jones_between.txt
+#   scripts/lennard_jones_table.sh far        # tests/data/lennard_jones_far.txt
 #
 # Takes about 25 minutes on one core to write (release build) and two hours to
 # check. `between` writes seven curves the table does not hold, at the geometric
 # midpoints between six pairs of its curves (where the interpolation in μ errs
 # most) and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
-# measures that interpolation against (about 7 minutes).
+# measures that interpolation against (about 7 minutes). `far` writes three
+# curves of the table and between it (μ = 0.01, 0.105, 0.918) with contact parts
+# to δ̂ = 150 instead of 50, which the same tests measure the table's tail beyond
+# δ̂ = 50 against (about 7 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --example lennard_jones_table
@@ -27,6 +31,13 @@ if [[ "${1:-}" == between ]]; then
     # shellcheck disable=SC2086
     "$bin" 1 $mus > tests/data/lennard_jones_between.txt.new
     mv tests/data/lennard_jones_between.txt.new tests/data/lennard_jones_between.txt
+    exit 0
+fi
+if [[ "${1:-}" == far ]]; then
+    # The table's first curve, the midpoint between its 12th and 13th, its 24th.
+    REACH=150 "$bin" 1 0.01 0.10527787805206623 0.9180942678743859 \
+        > tests/data/lennard_jones_far.txt.new
+    mv tests/data/lennard_jones_far.txt.new tests/data/lennard_jones_far.txt
     exit 0
 fi
 if [[ "${1:-}" != check ]]; then

@@ -8,7 +8,9 @@ use std::fmt::Write;
 use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
-use crate::model::lennard_jones::table::{INTERPOLATION_ERROR, SOLVER_ERROR, TABLE_ERROR};
+use crate::model::lennard_jones::table::{
+    INTERPOLATION_ERROR, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR,
+};
 use crate::model::AttractionKind;
 
 use super::number;
@@ -84,6 +86,10 @@ pub fn json(wp: &WorkPrecision) -> String {
             "solver_against_reference": SOLVER_ERROR,
             "interpolation_in_tabor": INTERPOLATION_ERROR.0,
             "interpolation_in_tabor_at_cusp": INTERPOLATION_ERROR.1,
+            "tail": TAIL_ERROR
+                .iter()
+                .map(|(mu, at30, at100)| json!({"tabor": mu, "at_ell_30": at30, "at_ell_100": at100}))
+                .collect::<Vec<_>>(),
         },
         "scenes": wp.scenes,
         "rows": rows,
@@ -142,7 +148,13 @@ pub fn text(wp: &WorkPrecision) -> String {
             let (between, cusp) = INTERPOLATION_ERROR;
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11): one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes, the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} next to the cusp μ ≈ 0.7) — the law's largest error, not in the rows below"
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} next to the cusp μ ≈ 0.7); beyond δ̂ = 50 a shifted Hertz tail stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (to δ̂ = 150) by {}",
+                TAIL_ERROR
+                    .iter()
+                    .map(|(mu, at30, at100)| format!("{at30:.1e} / {at100:.1e} at μ = {mu}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+                    + " (ℓ = 30 / 100)"
             );
             let _ = writeln!(
                 out,

@@ -479,3 +479,49 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     }
     assert!(worst_all < 2.5e-4, "{worst_all:e}");
 }
+
+/// Beyond the table's reach (δ̂ = 50) the tail (δ̂ − C)^{3/2} − B stands in:
+/// P̄ of a curve with that tail against P̄ of the same curve written by the
+/// solver to δ̂ = 150 (`tests/data/lennard_jones_far.txt`,
+/// `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
+/// ℓ = 30 and 100 (where summits that deep weigh), with and without
+/// plasticity, h = −1 … 4: within what `TAIL_ERROR` states (the reports
+/// quote it), and shrinking with μ.
+#[test]
+fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
+    use wearopt::accuracy::lennard_jones::reference_load_of;
+    use wearopt::model::lennard_jones::table::{parse, TAIL_ERROR};
+    use wearopt::model::Coefficients;
+    let read = |name: &str| {
+        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+        parse(&std::fs::read_to_string(path).expect("committed")).expect("parses")
+    };
+    let far = read("lennard_jones_far.txt");
+    let between = read("lennard_jones_between.txt");
+    assert_eq!(far.len(), TAIL_ERROR.len());
+    for (curve, &(mu, at30, at100)) in far.iter().zip(&TAIL_ERROR) {
+        assert!((curve.tabor / mu - 1.0).abs() < 1e-2);
+        let near = curves()
+            .iter()
+            .chain(&between)
+            .find(|c| (c.tabor / curve.tabor - 1.0).abs() < 1e-12)
+            .expect("the same μ in the table or between it");
+        assert!(curve.max_interference() > 140.0 && near.max_interference() <= 50.0);
+        for (ell, stated) in [(30.0f64, at30), (100.0, at100)] {
+            let z0 = spacing(curve.tabor) / ell;
+            assert!(z0 <= 3.0);
+            let mut worst = 0.0f64;
+            for c_h in [5.0, f64::INFINITY] {
+                let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
+                let dc = |k| critical_interference(k, c_h * ell.sqrt()) / ell;
+                for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+                    let (tail, size) = reference_load_of([(near, 1.0, dc(near))], ell, c, h);
+                    let (solver, _) = reference_load_of([(curve, 1.0, dc(curve))], ell, c, h);
+                    worst = worst.max((tail - solver).abs() / size);
+                }
+            }
+            println!("μ = {mu}, ℓ = {ell}: the tail moves P̄ by {worst:.2e} (stated {stated:.1e})");
+            assert!(worst <= 1.05 * stated && worst >= 0.5 * stated, "{worst:e}");
+        }
+    }
+}
