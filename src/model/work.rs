@@ -455,8 +455,8 @@ fn exchanged_tabulated(model: &Model, table: &dyn Tabulated, solid: f64, h0: f64
 /// The meniscus's starting pieces in t of the map h = from + L (1 − t)/t: cut
 /// at t = 1/8, 1/4, 3/8, 1/2, 3/4 (h = from + 7L, 3L, 5L/3, L, L/3), where the
 /// refinement from one piece cut them anyway on the humid hub (its Gaussian
-/// decay beyond the meniscus's reach lies there), without first spending an
-/// estimate on each coarser piece: the same final pieces, 6 instead of 10.
+/// decay beyond the meniscus's reach lies there): the same final pieces,
+/// without first estimating the coarser ones they were cut from.
 /// The farthest, h ≥ from + 7L, is left out where it cannot matter: |P̄_cap| ≤
 /// c_cap J (1 − e^{−F} ≤ F) and ∫_H^∞ J dh = (1/k) ∫_{H−k}^{H} T_1 ≤ T_1(H − k),
 /// so that piece is at most c_cap T_1(H − k) in size; it is dropped where that
