@@ -550,23 +550,34 @@ impl Model {
         // the count and area at the interpolated Δc (the transition's), which
         // keeps them ≥ 0 where the Lagrange weights are not.
         let mut shares = [0.0; 3];
-        let mut signs = (true, true);
+        let (mut lowest, mut highest) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
         table.plastic_junctions(&mut |dc, weight| {
             let p = Plastic::at(&self.coefficients, h, dc);
             shares[0] += weight * p.load;
             shares[1] += weight * p.dload;
             shares[2] += weight * p.d2load;
-            signs = (signs.0 && p.load >= 0.0, signs.1 && p.load <= 0.0);
+            if p.load < lowest[0] {
+                lowest = [p.load, p.dload, p.d2load];
+            }
+            if p.load > highest[0] {
+                highest = [p.load, p.dload, p.d2load];
+            }
         });
-        let plastic = Plastic::at(&self.coefficients, h, self.transition.critical_interference);
-        // Where the junctions lie far out in the weight's tail their shares
-        // change by orders of magnitude from one curve's Δc to the next, and
-        // the Lagrange weights (some < 0) can give a sum of the wrong sign:
-        // there (a share far below the total) the interpolated Δc's stands.
-        let wrong_sign = (signs.0 && shares[0] < 0.0) || (signs.1 && shares[0] > 0.0);
-        if wrong_sign {
-            shares = [plastic.load, plastic.dload, plastic.d2load];
+        // Where the junctions lie far out in the weight's tail, or where the
+        // weight's peak sits among the curves' Δc, their shares change by
+        // orders of magnitude from one curve's Δc to the next, and the
+        // Lagrange weights (some < 0) can carry the sum outside the curves'
+        // own range — even to the wrong sign. It is held to that range (the
+        // nearest curve's share and slopes beyond it): continuous in h, where
+        // switching to another rule at a sign was not (a humid scene at h = −17
+        // jumped by 1 % of its load there and its separation stopped on the
+        // jump, the million-case run found).
+        if shares[0] < lowest[0] {
+            shares = lowest;
+        } else if shares[0] > highest[0] {
+            shares = highest;
         }
+        let plastic = Plastic::at(&self.coefficients, h, self.transition.critical_interference);
         out.load_plastic = shares[0];
         out.dload_dh_plastic = shares[1];
         out.d2load_dh2 += shares[2];

@@ -445,3 +445,75 @@ fn humid_air_adds_to_the_lennard_jones_load() {
         w.elastic_load + w.plastic_load + w.noncontact_load.unwrap() + hum.capillary_load.unwrap();
     assert!((sum / wet.load - 1.0).abs() < 1e-10, "{sum}");
 }
+
+/// The scene the million-case run found (2026-11-27): humid, μ = 3.13, deep in
+/// contact (h ≈ −16.9), where the curves' plastic shares weighted in μ left
+/// their own range and a switch to another rule made P̄ jump by 1 % of the
+/// load; the separation stopped on the jump with its load balance 0.56 % off.
+/// Now: P̄ continuous across a fine grid of h there (no step larger than its
+/// slope allows), and the parts balance the load.
+#[test]
+fn the_plastic_share_between_curves_is_continuous() {
+    use wearopt::model::{
+        evaluate, AdhesionModel, AttractionKind, Environment, EvaluationOptions, Liquid,
+        Requirements, Scene, WearArea,
+    };
+    let scene = Scene {
+        youngs_modulus_a: 16514808950.318605,
+        poisson_ratio_a: 0.3891634196935382,
+        youngs_modulus_b: 244189220264.5358,
+        poisson_ratio_b: 0.32555596290678207,
+        hardness: 134849729.30299535,
+        work_of_adhesion: 0.5530860174720567,
+        interatomic_distance: 3e-10,
+        sigma: 1.1928070289691145e-10,
+        asperity_radius: 8.912177314434484e-7,
+        asperity_density: 24890697020033.754,
+        load: 3.0775436766577374e-14,
+        nominal_area: 0.0001,
+        sliding_distance: 1.0,
+        wear_coefficient: 0.0001,
+        wear_area: WearArea::Total,
+        real_area_scale: 1.0,
+        requirements: Requirements {
+            allowed_wear_depth: None,
+            sliding_per_cycle: None,
+            restoring_force: None,
+            shear_strength: None,
+            cantilever: None,
+        },
+        adhesion_model: AdhesionModel::LennardJones,
+        attraction: AttractionKind::VanDerWaals,
+        environment: Some(Environment {
+            relative_humidity: 0.9587427546493464,
+            temperature: 417.38730563955676,
+            liquid: Liquid::Water,
+            contact_angle_a: 0.6380465330618044,
+            contact_angle_b: 0.27741419295897934,
+            humidity_range: None,
+        }),
+    };
+    let model = wearopt::model::wear::model_of(&scene, Quadrature::default());
+    let (mut previous, step) = (model.at(-16.95).load().value(), 5e-4);
+    for i in 1..=80 {
+        let h = -16.95 + step * i as f64;
+        let at = model.at(h);
+        let p = at.load().value();
+        let slope = at.dload_dh().value().abs();
+        assert!(
+            (p - previous).abs() <= 2.0 * slope * step,
+            "P̄ jumps at h = {h}: {previous} → {p}"
+        );
+        previous = p;
+    }
+    let ev = evaluate(&scene, &EvaluationOptions::default());
+    let cap = ev.humidity.and_then(|h| h.capillary_load).unwrap_or(0.0);
+    let nc = ev.noncontact_load.unwrap_or(0.0);
+    let sum = ev.elastic_load + ev.plastic_load + nc + cap;
+    assert!(
+        (sum - scene.load).abs() <= 1e-9 * (ev.elastic_load.abs() + cap.abs()),
+        "{} + {} + {nc} + {cap} = {sum}",
+        ev.elastic_load,
+        ev.plastic_load
+    );
+}
