@@ -424,17 +424,18 @@ fn the_stretched_grid_matches_an_adaptive_quadrature() {
 /// The interpolation in μ against the solver itself: curves the solver wrote
 /// (the table's generator, `scripts/lennard_jones_table.sh between`) at the
 /// geometric midpoints between six pairs of the table's curves, where cubic
-/// interpolation errs most, and at the shipped hub's μ = 0.37422, none of
-/// them used to build the table. At each,
+/// interpolation errs most, at two more on the S-shaped side of the cusp
+/// (μ = 0.745, 0.836) and at the shipped hub's μ = 0.37422, none of them
+/// used to build the table. At each,
 /// the rough load P̄ of that curve alone against the load the law serves
 /// there (four of the table's curves, weighted as the law weights them), both
 /// by the same independent quadrature (`reference_load_of`, 1e-12), so the
 /// difference is the interpolation's alone: relative to ∫|p| φ̄, over
 /// ℓ = 1 … 100 (where the range z0 = ẑ0/ℓ is at most 3σ), with and without
 /// plasticity, h from −1 to 4. Measured: 1.8e-4 next to the cusp (μ =
-/// 0.692, between a single-valued curve and an S-shaped one), 6.3e-5 at
-/// the other midpoints, 4.3e-5 at the hub (cubic in ln μ, as before
-/// 2026-11-27: 3.5e-4 at the midpoints).
+/// 0.692, between a single-valued curve and an S-shaped one), 7.5e-5 at
+/// the other midpoints (0.836), 1.5e-5 at μ = 0.745, 4.3e-5 at the hub
+/// (cubic in ln μ, as before 2026-11-27: 3.5e-4 at the midpoints).
 #[test]
 fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     use wearopt::accuracy::lennard_jones::reference_load_of;
@@ -445,7 +446,7 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     ))
     .expect("the committed curves between the table's");
     let between = wearopt::model::lennard_jones::table::parse(&text).expect("they parse");
-    assert_eq!(between.len(), 7);
+    assert_eq!(between.len(), 9);
     let mut worst_all = 0.0f64;
     for curve in &between {
         let mut worst = 0.0f64;

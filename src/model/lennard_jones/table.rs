@@ -472,7 +472,7 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// next to the cusp μ ≈ 0.7 (between a single-valued curve and an S-shaped
 /// one). The law's largest error against the converged sphere where ℓ = σ/ε
 /// is small enough for the table's reach (below).
-pub const INTERPOLATION_ERROR: (f64, f64) = (6.3e-5, 1.8e-4);
+pub const INTERPOLATION_ERROR: (f64, f64) = (7.5e-5, 1.8e-4);
 /// Beyond δ̂_max = 50 the tail (δ̂ − C)^{3/2} − B stands in for the solver;
 /// summits that deep weigh where ℓ = σ/ε is large (at h = 0 the window reaches
 /// δ̂ ≈ 10ℓ). P̄ of one curve with that tail against P̄ of the same curve
