@@ -475,13 +475,7 @@ fn the_plastic_share_between_curves_is_continuous() {
         wear_coefficient: 0.0001,
         wear_area: WearArea::Total,
         real_area_scale: 1.0,
-        requirements: Requirements {
-            allowed_wear_depth: None,
-            sliding_per_cycle: None,
-            restoring_force: None,
-            shear_strength: None,
-            cantilever: None,
-        },
+        requirements: Requirements::default(),
         adhesion_model: AdhesionModel::LennardJones,
         attraction: AttractionKind::VanDerWaals,
         environment: Some(Environment {

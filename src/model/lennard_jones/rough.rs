@@ -164,19 +164,19 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
         .unwrap_or(kept.len() - 1);
     let first = above.saturating_sub(2).min(kept.len() - 4);
     let ks = &kept[first..first + 4];
-    let lagrange = |variable: fn(f64) -> f64, i: usize| {
+    // The four weights of cubic Lagrange interpolation in `variable`.
+    let lagrange = |variable: fn(f64) -> f64| -> [f64; 4] {
         let x = variable(tabor);
-        let xs: Vec<f64> = ks.iter().map(|&k| variable(c[k].tabor)).collect();
-        (0..4)
-            .filter(|&j| j != i)
-            .map(|j| (x - xs[j]) / (xs[i] - xs[j]))
-            .product::<f64>()
+        let xs: [f64; 4] = std::array::from_fn(|i| variable(c[ks[i]].tabor));
+        std::array::from_fn(|i| {
+            (0..4)
+                .filter(|&j| j != i)
+                .map(|j| (x - xs[j]) / (xs[i] - xs[j]))
+                .product::<f64>()
+        })
     };
-    Some(
-        (0..4)
-            .map(|i| (ks[i], lagrange(f64::recip, i), lagrange(f64::ln, i)))
-            .collect(),
-    )
+    let (integrals, pull_off) = (lagrange(f64::recip), lagrange(f64::ln));
+    Some((0..4).map(|i| (ks[i], integrals[i], pull_off[i])).collect())
 }
 
 impl RoughLaw {
