@@ -890,49 +890,54 @@ fn window_sums_avx2(d: &[f64], f: &[f64], h: f64, stretch: f64, scaled: bool) ->
 fn window_sums(d: &[f64], f: &[f64], h: f64, stretch: f64, scaled: bool) -> [f64; 3] {
     const CHUNK: usize = 64;
     const LANES: usize = 4;
-    let mut weight = [0.0f64; CHUNK];
-    let mut lanes = [[0.0f64; 3]; LANES];
+    let mut g = [0.0f64; CHUNK];
+    let mut u = [0.0f64; CHUNK];
+    // Moment k of node i in lanes[k][i mod 4].
+    let mut lanes = [[0.0f64; LANES]; 3];
     for (d, f) in d.chunks(CHUNK).zip(f.chunks(CHUNK)) {
-        let weight = &mut weight[..d.len()];
+        let (g, u) = (&mut g[..d.len()], &mut u[..d.len()]);
         // One loop per scale, so that neither branches.
         if scaled {
-            for (w, &d) in weight.iter_mut().zip(d) {
-                *w = log_weight(h, stretch * d, true);
+            for (g, &d) in g.iter_mut().zip(d) {
+                *g = log_weight(h, stretch * d, true);
             }
         } else {
-            for (w, &d) in weight.iter_mut().zip(d) {
-                *w = log_weight(h, stretch * d, false);
+            for (g, &d) in g.iter_mut().zip(d) {
+                *g = log_weight(h, stretch * d, false);
             }
         }
-        for w in weight.iter_mut() {
-            *w = exp_fast(*w);
+        for ((g, u), (&d, &f)) in g.iter_mut().zip(u.iter_mut()).zip(d.iter().zip(f)) {
+            *g = f * exp_fast(*g);
+            *u = h + stretch * d;
         }
-        // Four partial sums, node i into lane i mod 4 (a fixed order, so the
-        // same numbers on every machine), break the chain of dependent adds.
-        let mut quads = weight
-            .chunks_exact(LANES)
-            .zip(f.chunks_exact(LANES))
-            .zip(d.chunks_exact(LANES));
-        for ((w, f), d) in &mut quads {
-            for lane in 0..LANES {
-                add_moments(&mut lanes[lane], f[lane] * w[lane], h + stretch * d[lane]);
-            }
-        }
-        let rest = weight.len() - weight.len() % LANES;
-        for (lane, ((&w, &f), &d)) in weight[rest..]
-            .iter()
-            .zip(&f[rest..])
-            .zip(&d[rest..])
-            .enumerate()
-        {
-            add_moments(&mut lanes[lane], f * w, h + stretch * d);
-        }
+        // Four partial sums per moment, node i into lane i mod 4 (a fixed
+        // order, so the same numbers on every machine), break the chain of
+        // dependent adds; one loop per moment, each a vector of four lanes.
+        moment_lanes(&mut lanes[0], g, u, |g, _| g);
+        moment_lanes(&mut lanes[1], g, u, |g, u| -(g * u));
+        moment_lanes(&mut lanes[2], g, u, |g, u| g * (u * u - 1.0));
     }
     let mut sums = [0.0; 3];
-    for (k, sum) in sums.iter_mut().enumerate() {
-        *sum = (lanes[0][k] + lanes[1][k]) + (lanes[2][k] + lanes[3][k]);
+    for (sum, lanes) in sums.iter_mut().zip(&lanes) {
+        *sum = (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]);
     }
     sums
+}
+
+/// Adds term(g_i, u_i) into lanes[i mod 4] over one chunk (a multiple of four
+/// nodes but for the last chunk).
+#[inline(always)]
+fn moment_lanes(lanes: &mut [f64; 4], g: &[f64], u: &[f64], term: impl Fn(f64, f64) -> f64) {
+    let mut quads = g.chunks_exact(4).zip(u.chunks_exact(4));
+    for (g, u) in &mut quads {
+        for lane in 0..4 {
+            lanes[lane] += term(g[lane], u[lane]);
+        }
+    }
+    let rest = g.len() - g.len() % 4;
+    for (lane, (&g, &u)) in g[rest..].iter().zip(&u[rest..]).enumerate() {
+        lanes[lane] += term(g, u);
+    }
 }
 
 impl Grid {
