@@ -7,17 +7,17 @@ use wearopt::model::lennard_jones::table::{curves, lobatto, APPROACH_DEGREE};
 use wearopt::model::lennard_jones::SphereSettings;
 
 /// The committed table covers the solved range's upper part with a grid dense
-/// enough to interpolate between (at most 1/12 decade apart) and in order.
+/// enough to interpolate between (at most 1/24 decade apart) and in order.
 #[test]
 fn the_table_covers_its_grid() {
     let c = curves();
-    assert!(c.len() >= 30, "{} curves", c.len());
+    assert!(c.len() >= 60, "{} curves", c.len());
     assert!((c[0].tabor - 0.01).abs() < 1e-12);
     assert!((c[c.len() - 1].tabor - SOLVED_TABOR.1).abs() < 1e-9);
     for w in c.windows(2) {
         let ratio = w[1].tabor / w[0].tabor;
         assert!(
-            ratio > 1.0 && ratio <= 10f64.powf(1.0 / 12.0) + 1e-9,
+            ratio > 1.0 && ratio <= 10f64.powf(1.0 / 24.0) + 1e-9,
             "{ratio}"
         );
     }
@@ -25,6 +25,23 @@ fn the_table_covers_its_grid() {
     let first = c.iter().position(|curve| curve.jumps).unwrap();
     assert!(c[first..].iter().all(|curve| curve.jumps));
     assert!(c[first].tabor > 0.6 && c[first - 1].tabor < 1.0);
+}
+
+/// The cusp the interpolation in μ keeps its stencils to one side of
+/// (`CUSP_TABOR`, found by `wearopt asperity`) lies between the table's last
+/// single-valued curve and its first S-shaped one, and the sphere solver finds
+/// no jumps just below it and jumps just above it.
+#[test]
+fn the_cusp_lies_between_the_tables_kinds_of_curve() {
+    use wearopt::model::asperity_curve::{asperity_curve, CurveLaw};
+    use wearopt::model::lennard_jones::rough::CUSP_TABOR;
+    let c = curves();
+    let first = c.iter().position(|curve| curve.jumps).unwrap();
+    assert!(c[first - 1].tabor < CUSP_TABOR && CUSP_TABOR < c[first].tabor);
+    for (mu, s_shaped) in [(CUSP_TABOR - 1e-4, false), (CUSP_TABOR + 1e-4, true)] {
+        let (curve, _) = asperity_curve(CurveLaw::LennardJones, mu, -1.2, 1.0, 3).unwrap();
+        assert_eq!(curve.jump_in.is_some(), s_shaped, "μ = {mu}");
+    }
 }
 
 /// Where the curve is single-valued, the approach part's end and the contact
@@ -108,7 +125,7 @@ const SWITCH_BAR: f64 = 1e-9;
 
 #[test]
 fn the_table_matches_the_solver_between_its_nodes() {
-    for index in [3usize, 21] {
+    for index in [6usize, 42] {
         let c = &curves()[index];
         let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
         let mid_taus: Vec<f64> = [5usize, 20, 29, 31]
