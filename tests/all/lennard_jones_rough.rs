@@ -271,7 +271,7 @@ fn the_interpolation_in_tabor_holds_where_a_node_is_left_out() {
 /// at every h the grid serves, between the table's
 /// curves (four integrated) and at one, weak and strong adhesion, ℓ from 3.5
 /// to 34, at a layout's scale and just below the next. (At ℓ = 0.59 the
-/// windowed quadrature is 2e-11 off in P̄ and 3e-10 in P̄'', the grid 5e-13:
+/// windowed quadrature is 2e-11 off in P̄ and 3e-10 in P̄'', the grid 6.4e-13:
 /// the next test. At ℓ = 700 and h = 6 both shares are of the size of the
 /// window's cut-off error, e^{-46} of the load where the weight ends.)
 #[test]
@@ -351,7 +351,7 @@ fn the_scene_grid_matches_the_windowed_quadrature() {
 /// the same tabulated loads (the square-root end at the switch removed by
 /// Δ = Δ_s ∓ t²), all three moments [P̄, P̄', P̄''] of both shares, four curves
 /// interpolated (μ = 0.374): within 1e-12 of the larger share's size
-/// (measured: 5e-14 at ℓ = 8…9.5 and 30, 5e-13 at ℓ = 0.59).
+/// (measured: 5e-14 at ℓ = 8…9.5 and 30, 6.4e-13 at ℓ = 0.59).
 #[test]
 fn the_stretched_grid_matches_an_adaptive_quadrature() {
     let mut worst = 0.0f64;
