@@ -210,3 +210,18 @@ fn the_approach_part_inverts() {
         }
     }
 }
+
+/// Every curve's numbers are read when first used; every one of the
+/// committed table reads whole, the same when read again, and finite.
+#[test]
+fn every_curve_reads_whole() {
+    use wearopt::model::lennard_jones::table::{parse, TABLE};
+    let again = parse(TABLE).unwrap();
+    assert_eq!(again.len(), curves().len());
+    for (a, b) in again.iter().zip(curves()) {
+        assert!(a == b, "μ = {}", a.tabor);
+        let (load, slope) = a.contact(a.max_interference());
+        assert!(load.is_finite() && slope.is_finite());
+        assert!(a.approach(0.5 * a.tau_end()).load.is_finite());
+    }
+}

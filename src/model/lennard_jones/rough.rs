@@ -125,11 +125,11 @@ pub fn tabor(c_0: f64, z0: f64) -> f64 {
 /// The relative error of the closed-form limit's pull-off (JKR's 1.5 above the
 /// table, Bradley's 2 below) at the table's end where it takes over.
 pub fn stand_in_pull_off_error(above: bool) -> f64 {
-    let pull_offs = super::table::pull_offs();
+    let last = curves().len() - 1;
     let (end, limit) = if above {
-        (pull_offs[pull_offs.len() - 1].1, -1.5)
+        (super::table::pull_off_of(last).1, -1.5)
     } else {
-        (pull_offs[0].1, -2.0)
+        (super::table::pull_off_of(0).1, -2.0)
     };
     ((limit - end) / end).abs()
 }
@@ -270,10 +270,9 @@ impl RoughLaw {
     /// The pull-off of one summit, P̂ (Maugis units, < 0): each curve's,
     /// interpolated cubically in ln μ.
     pub fn asperity_pull_off(&self) -> f64 {
-        let pull_offs = super::table::pull_offs();
         self.nodes()
             .iter()
-            .map(|n| n.pull_off_weight * pull_offs[n.index].1)
+            .map(|n| n.pull_off_weight * super::table::pull_off_of(n.index).1)
             .sum()
     }
 

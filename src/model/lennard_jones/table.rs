@@ -62,19 +62,33 @@ impl Chebyshev {
         // T_k(x_i) = cos(π m/n), m = k(n−i) mod 2n, from one table of the 2n
         // cosines (the same numbers as one cosine per term, at 1/n of the cost:
         // the curves' series are built when a process first reads the table).
-        let cosines: Vec<f64> = (0..2 * n.max(1))
-            .map(|m| (pi * m as f64 / n as f64).cos())
-            .collect();
+        let table = |n: usize| -> Vec<f64> {
+            (0..2 * n.max(1))
+                .map(|m| (pi * m as f64 / n as f64).cos())
+                .collect()
+        };
+        // The table's two degrees' cosines once per process.
+        static APPROACH: OnceLock<Vec<f64>> = OnceLock::new();
+        static PANEL: OnceLock<Vec<f64>> = OnceLock::new();
+        let own;
+        let cosines: &[f64] = match n {
+            APPROACH_DEGREE => APPROACH.get_or_init(|| table(n)),
+            PANEL_DEGREE => PANEL.get_or_init(|| table(n)),
+            _ => {
+                own = table(n);
+                &own
+            }
+        };
         let mut coefficients: Vec<f64> = (0..=n)
             .map(|k| {
-                let sum: f64 = values
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &f)| {
-                        let half = if i == 0 || i == n { 0.5 } else { 1.0 };
-                        half * f * cosines[(k * (n - i)) % (2 * n)]
-                    })
-                    .sum();
+                // m = k(n − i) mod 2n, stepping down by k with i.
+                let mut m = (k * n) % (2 * n).max(1);
+                let mut sum = 0.0;
+                for (i, &f) in values.iter().enumerate() {
+                    let half = if i == 0 || i == n { 0.5 } else { 1.0 };
+                    sum += half * f * cosines[m];
+                    m = if m >= k { m - k } else { m + 2 * n - k };
+                }
                 2.0 * sum / n as f64
             })
             .collect();
@@ -127,7 +141,7 @@ impl Chebyshev {
 }
 
 /// One tabulated Tabor parameter's loading curve.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Curve {
     /// μ.
     pub tabor: f64,
@@ -139,6 +153,31 @@ pub struct Curve {
     pub switch: f64,
     /// True where the load jumps at δ̂_s (an S-shaped curve).
     pub jumps: bool,
+    /// The series, built from `samples` when first used (a process reads
+    /// the whole table, but a scene uses four of its curves).
+    body: OnceLock<Body>,
+    /// The block's sample lines (`approach` … `inner`), checked in shape.
+    samples: Box<str>,
+}
+
+/// What two curves' samples make equal.
+impl PartialEq for Curve {
+    fn eq(&self, other: &Curve) -> bool {
+        (self.tabor, self.z0, self.end_gap, self.switch, self.jumps)
+            == (
+                other.tabor,
+                other.z0,
+                other.end_gap,
+                other.switch,
+                other.jumps,
+            )
+            && self.body() == other.body()
+    }
+}
+
+/// A curve's series.
+#[derive(Debug, Clone, PartialEq)]
+struct Body {
     /// P̂(τ)/B(τ) on the approach part, B Bradley's rigid load at the apex gap.
     approach_load: Chebyshev,
     /// e(τ) on the approach part.
@@ -175,12 +214,12 @@ pub struct ApproachPoint {
 impl Curve {
     /// τ_end = G_end^{-1/2}.
     pub fn tau_end(&self) -> f64 {
-        self.approach_load.hi
+        self.body().approach_load.hi
     }
 
     /// δ̂_max, the end of the last contact panel.
     pub fn max_interference(&self) -> f64 {
-        self.breaks[self.breaks.len() - 1]
+        self.body().breaks[self.body().breaks.len() - 1]
     }
 
     /// The approach part at τ ∈ [0, τ_end].
@@ -194,11 +233,11 @@ impl Curve {
                 load_slope: 0.0,
             };
         }
-        let (ratio, ratio_slope) = self.approach_load.at(tau);
+        let (ratio, ratio_slope) = self.body().approach_load.at(tau);
         let (rigid, rigid_slope) = bradley(tau);
         let load = ratio * rigid;
         let load_slope = ratio_slope * rigid + ratio * rigid_slope;
-        let (e, de) = self.opening.at(tau);
+        let (e, de) = self.body().opening.at(tau);
         let t2 = tau * tau;
         ApproachPoint {
             interference: self.z0 * (1.0 - 1.0 / t2 + e),
@@ -212,8 +251,8 @@ impl Curve {
     /// quadrature in τ needs; [`Curve::approach`] also gives dP̂/dτ).
     #[inline]
     pub fn approach_load(&self, tau: f64) -> (f64, f64, f64) {
-        let x = self.approach_load.x(tau);
-        let [ratio, e, de] = clenshaw3(&self.approach_fused, x);
+        let x = self.body().approach_load.x(tau);
+        let [ratio, e, de] = clenshaw3(&self.body().approach_fused, x);
         let t2 = tau * tau;
         (
             self.z0 * (1.0 - 1.0 / t2 + e),
@@ -226,7 +265,7 @@ impl Curve {
     /// every step updates all N nodes (a quadrature panel's), stored series by
     /// series so the steps vectorise — the same numbers as one at a time.
     pub fn approach_loads<const N: usize>(&self, taus: &[f64; N]) -> [(f64, f64, f64); N] {
-        let xs = taus.map(|t| self.approach_load.x(t));
+        let xs = taus.map(|t| self.body().approach_load.x(t));
         // Clenshaw's b_{k+1} and b_{k+2}: each step overwrites the older with
         // b_k = 2x b_{k+1} − b_{k+2} + c_k.
         let (mut a, mut b) = ([[0.0; N]; 3], [[0.0; N]; 3]);
@@ -239,7 +278,7 @@ impl Curve {
         };
         // Two steps a turn (b_k into `a`, b_{k−1} into `b`), so the roles
         // alternate without a copy; `newer` says which holds b_1 at the end.
-        let mut coefficients = self.approach_fused[1..].iter().rev();
+        let mut coefficients = self.body().approach_fused[1..].iter().rev();
         let mut newer_is_a = false;
         while let Some(c) = coefficients.next() {
             step(&mut a, &b, c);
@@ -250,7 +289,7 @@ impl Curve {
             }
         }
         let (newer, older) = if newer_is_a { (&a, &b) } else { (&b, &a) };
-        let first = self.approach_fused[0];
+        let first = self.body().approach_fused[0];
         std::array::from_fn(|i| {
             let x = xs[i];
             let [ratio, e, de] = [0, 1, 2].map(|j| x * newer[j][i] - older[j][i] + first[j]);
@@ -270,20 +309,20 @@ impl Curve {
         if d >= self.max_interference() {
             return self.contact(d).0;
         }
-        let panel = &self.panels[self.panel(d)];
+        let panel = &self.body().panels[self.panel(d)];
         Chebyshev::clenshaw(&panel.coefficients, panel.x(d))
     }
 
     /// P̂ and dP̂/dδ̂ on the contact part at δ̂ ≥ δ̂_s.
     #[inline]
     pub fn contact(&self, d: f64) -> (f64, f64) {
-        let last = self.breaks.len() - 1;
-        if d >= self.breaks[last] {
-            let (c, b) = self.tail;
+        let last = self.body().breaks.len() - 1;
+        if d >= self.body().breaks[last] {
+            let (c, b) = self.body().tail;
             let r = (d - c).sqrt();
             return ((d - c) * r - b, 1.5 * r);
         }
-        self.panels[self.panel(d)].at(d)
+        self.body().panels[self.panel(d)].at(d)
     }
 
     /// The contact radius â and the load inside it, P̂_in, on the contact part
@@ -294,10 +333,10 @@ impl Curve {
         let max = self.max_interference();
         let k = self.panel(d.min(max));
         if d <= max {
-            return (self.radius[k].at(d).0, self.inner[k].at(d).0);
+            return (self.body().radius[k].at(d).0, self.body().inner[k].at(d).0);
         }
-        let (a, slope) = self.radius[k].at(max);
-        let inner = self.inner[k].at(max).0 - self.contact(max).0 + self.contact(d).0;
+        let (a, slope) = self.body().radius[k].at(max);
+        let inner = self.body().inner[k].at(max).0 - self.contact(max).0 + self.contact(d).0;
         ((a * a + 2.0 * a * slope * (d - max)).sqrt(), inner)
     }
 
@@ -307,29 +346,30 @@ impl Curve {
         let max = self.max_interference();
         let k = self.panel(d.min(max));
         if d <= max {
-            return (self.radius[k].at(d), self.inner[k].at(d));
+            return (self.body().radius[k].at(d), self.body().inner[k].at(d));
         }
-        let (a, slope) = self.radius[k].at(max);
+        let (a, slope) = self.body().radius[k].at(max);
         let (load, load_slope) = self.contact(d);
-        let inner = self.inner[k].at(max).0 - self.contact(max).0 + load;
+        let inner = self.body().inner[k].at(max).0 - self.contact(max).0 + load;
         let radius = (a * a + 2.0 * a * slope * (d - max)).sqrt();
         ((radius, a * slope / radius), (inner, load_slope))
     }
 
     /// C of the tail beyond δ̂_max, P̂ = (δ̂ − C)^{3/2} − B: its branch point.
     pub fn tail_branch(&self) -> f64 {
-        self.tail.0
+        self.body().tail.0
     }
 
     /// The contact panels' ends, δ̂_s … δ̂_max.
     pub fn breaks(&self) -> &[f64] {
-        &self.breaks
+        &self.body().breaks
     }
 
     /// The contact panel holding δ̂ (< δ̂_max).
     fn panel(&self, d: f64) -> usize {
-        let last = self.breaks.len() - 1;
+        let last = self.body().breaks.len() - 1;
         match self
+            .body()
             .breaks
             .binary_search_by(|b| b.partial_cmp(&d).unwrap_or(std::cmp::Ordering::Less))
         {
@@ -377,9 +417,9 @@ impl Curve {
     pub fn pull_off(&self) -> (f64, f64) {
         let end = self.approach(self.tau_end());
         let mut best = (end.interference, end.load);
-        let last = self.breaks.len() - 1;
+        let last = self.body().breaks.len() - 1;
         for k in 0..last {
-            let (a, b) = (self.breaks[k], self.breaks[k + 1]);
+            let (a, b) = (self.body().breaks[k], self.body().breaks[k + 1]);
             let (sa, sb) = (self.contact(a).1, self.contact(b).1);
             if k == 0 && sa >= 0.0 {
                 best = if self.contact(a).0 < best.1 {
@@ -548,7 +588,50 @@ impl Curve {
         contact: [&[f64]; 3],
     ) -> Curve {
         let (tabor, end_gap, switch, jumps) = header;
-        let z0 = super::spacing(tabor);
+        Curve {
+            tabor,
+            z0: super::spacing(tabor),
+            end_gap,
+            switch,
+            jumps,
+            body: OnceLock::from(Body::from_samples(end_gap, approach, breaks, contact)),
+            samples: "".into(),
+        }
+    }
+
+    /// The series, built from the samples on first use.
+    fn body(&self) -> &Body {
+        self.body.get_or_init(|| {
+            let lines: Vec<&str> = self.samples.lines().collect();
+            let numbers = |k: usize| -> Vec<f64> {
+                lines[k]
+                    .split_whitespace()
+                    .skip(1)
+                    .map(|w| {
+                        w.parse::<f64>()
+                            .expect("numbers (checked when the table was read)")
+                    })
+                    .collect()
+            };
+            let (load, opening, breaks) = (numbers(0), numbers(1), numbers(2));
+            let (contact, radius, inner) = (numbers(3), numbers(4), numbers(5));
+            Body::from_samples(
+                self.end_gap,
+                (&load, &opening),
+                breaks,
+                [&contact, &radius, &inner],
+            )
+        })
+    }
+}
+
+impl Body {
+    fn from_samples(
+        end_gap: f64,
+        approach: (&[f64], &[f64]),
+        breaks: Vec<f64>,
+        contact: [&[f64]; 3],
+    ) -> Body {
         let tau_end = end_gap.powf(-0.5);
         let with_far = |v: &[f64]| [&[0.0][..], v].concat();
         // The load over Bradley's at the same apex gap: 1 far away, where both
@@ -598,12 +681,7 @@ impl Curve {
                 ]
             })
             .collect();
-        Curve {
-            tabor,
-            z0,
-            end_gap,
-            switch,
-            jumps,
+        Body {
             approach_load,
             opening,
             approach_fused,
@@ -623,49 +701,67 @@ pub struct TableError(pub String);
 /// Reads the table's text: per curve the lines `curve μ end_gap switch jumps`,
 /// `approach P̂_1 … P̂_n`, `opening e_1 … e_n`, `breaks δ̂_s … δ̂_max`,
 /// `contact P̂ …`, `radius â …`, `inner P̂_in …` (comment lines start with `#`).
+/// The lines' shape is checked here, their numbers read when the curve is
+/// first used (a scene uses four of the table's 67: `wearopt eval` of the hub
+/// reads the table in a tenth of the time); every curve of the committed
+/// table is read whole by `tests/all/lennard_jones_table.rs`.
 pub fn parse(text: &str) -> Result<Vec<Curve>, TableError> {
     let mut lines = text
         .lines()
         .map(str::trim)
         .filter(|l| !l.is_empty() && !l.starts_with('#'));
     let mut curves = Vec::new();
-    let numbers = |line: Option<&str>, key: &str| -> Result<Vec<f64>, TableError> {
+    // A line's key and how many words follow it (its numbers are read when
+    // the curve is first used, [`Curve::body`]).
+    let counted = |line: Option<&str>, key: &str| -> Result<(String, usize), TableError> {
         let line = line.ok_or_else(|| TableError(format!("missing `{key}` line")))?;
-        let mut words = line.split_whitespace();
+        let mut words = line.split_ascii_whitespace();
         if words.next() != Some(key) {
             return Err(TableError(format!("expected `{key}`, found `{line}`")));
         }
-        words
-            .map(|w| {
-                w.parse::<f64>()
-                    .map_err(|_| TableError(format!("`{w}` in `{key}` is not a number")))
-            })
-            .collect()
+        Ok((line.to_string(), words.count()))
     };
     while let Some(first) = lines.next() {
-        let head = numbers(Some(first), "curve")?;
+        let mut words = first.split_whitespace();
+        if words.next() != Some("curve") {
+            return Err(TableError(format!("expected `curve`, found `{first}`")));
+        }
+        let head: Vec<f64> = words
+            .map(|w| {
+                w.parse::<f64>()
+                    .map_err(|_| TableError(format!("`{w}` in `curve` is not a number")))
+            })
+            .collect::<Result<_, _>>()?;
         if head.len() != 4 {
             return Err(TableError(format!("`{first}`: expected 4 numbers")));
         }
-        let load = numbers(lines.next(), "approach")?;
-        let opening = numbers(lines.next(), "opening")?;
-        let breaks = numbers(lines.next(), "breaks")?;
-        let contact = numbers(lines.next(), "contact")?;
-        let radius = numbers(lines.next(), "radius")?;
-        let inner = numbers(lines.next(), "inner")?;
-        if load.len() != APPROACH_DEGREE || opening.len() != APPROACH_DEGREE {
+        let mut samples = String::new();
+        let mut counts = Vec::new();
+        for key in [
+            "approach", "opening", "breaks", "contact", "radius", "inner",
+        ] {
+            let (line, count) = counted(lines.next(), key)?;
+            samples.push_str(&line);
+            samples.push('\n');
+            counts.push(count);
+        }
+        if counts[0] != APPROACH_DEGREE || counts[1] != APPROACH_DEGREE {
             return Err(TableError(format!("μ = {}: approach length", head[0])));
         }
-        let nodes = (breaks.len().max(2) - 1) * PANEL_DEGREE + 1;
-        if breaks.len() < 2 || [&contact, &radius, &inner].iter().any(|v| v.len() != nodes) {
+        let nodes = (counts[2].max(2) - 1) * PANEL_DEGREE + 1;
+        if counts[2] < 2 || counts[3..].iter().any(|&n| n != nodes) {
             return Err(TableError(format!("μ = {}: contact length", head[0])));
         }
-        curves.push(Curve::from_samples(
-            (head[0], head[1], head[2], head[3] != 0.0),
-            (&load, &opening),
-            breaks,
-            [&contact, &radius, &inner],
-        ));
+        let (tabor, end_gap, switch) = (head[0], head[1], head[2]);
+        curves.push(Curve {
+            tabor,
+            z0: super::spacing(tabor),
+            end_gap,
+            switch,
+            jumps: head[3] != 0.0,
+            body: OnceLock::new(),
+            samples: samples.into(),
+        });
     }
     if curves.windows(2).any(|w| w[0].tabor >= w[1].tabor) {
         return Err(TableError("curves not in increasing μ".into()));
@@ -676,10 +772,11 @@ pub fn parse(text: &str) -> Result<Vec<Curve>, TableError> {
 /// The committed table.
 pub const TABLE: &str = include_str!("table.txt");
 
-/// Each tabulated curve's [`Curve::pull_off`], in the table's order.
-pub fn pull_offs() -> &'static [(f64, f64)] {
-    static PULL_OFFS: OnceLock<Vec<(f64, f64)>> = OnceLock::new();
-    PULL_OFFS.get_or_init(|| curves().iter().map(Curve::pull_off).collect())
+/// The tabulated curve `index`'s [`Curve::pull_off`] (found once).
+pub fn pull_off_of(index: usize) -> (f64, f64) {
+    static PULL_OFFS: OnceLock<Vec<OnceLock<(f64, f64)>>> = OnceLock::new();
+    let all = PULL_OFFS.get_or_init(|| curves().iter().map(|_| OnceLock::new()).collect());
+    *all[index].get_or_init(|| curves()[index].pull_off())
 }
 
 /// The committed table's curves, in increasing μ (read once).
