@@ -526,7 +526,18 @@ pub struct Grid {
     /// loads there summed, each times its curve's factor; and the stretch.
     shared: Nodes,
     stretch: f64,
+    /// Clusters of every curve in use within MERGE_GAP of each other, merged
+    /// (their moments about the first curve's centre, each times its
+    /// factor), per share (non-contact, contact): one series instead of one
+    /// per curve.
+    merged: [Vec<Cluster>; 2],
 }
+
+/// How far apart (Δ') clusters of the curves in use may lie to be merged:
+/// the merged cluster then spans at most CLUSTER_WIDTH/2 + MERGE_GAP either
+/// side of its centre, and its series' first term left out is (9.6 · 0.145)^20
+/// / 20! ≈ 3e-16 of its sum at the window's edge (|u| ≤ 9.6).
+const MERGE_GAP: f64 = 0.02;
 
 /// One curve of a scene's [`Grid`].
 #[derive(Debug, Clone)]
@@ -541,6 +552,9 @@ struct GridCurve {
     kept: usize,
     /// The nodes of the panel Δc cuts, from its lower end to Δc (layout units).
     cut: Nodes,
+    /// The clusters (bits by index, non-contact and contact share) summed
+    /// in the grid's merged ones instead.
+    skip: [u64; 2],
 }
 
 /// One curve's quadrature nodes for the scale s ([`Grid`]), in Δ' = δ̂/s.
@@ -644,12 +658,27 @@ impl Share {
     /// [P̄, P̄', P̄''] of the share's first `count` nodes with lo ≤ Δ' ≤ hi (a
     /// cluster by its centre) at h, as [`Nodes::sums`]; a cluster that `count`
     /// cuts is summed node by node.
+    /// The clusters whose bit is set in `skip` are left out (a scene's grid
+    /// sums them merged with the other curves': [`Grid`]).
     #[allow(clippy::too_many_arguments)]
-    fn sums(&self, count: usize, lo: f64, hi: f64, h: f64, stretch: f64, scaled: bool) -> [f64; 3] {
+    fn sums(
+        &self,
+        count: usize,
+        lo: f64,
+        hi: f64,
+        h: f64,
+        stretch: f64,
+        scaled: bool,
+        skip: u64,
+    ) -> [f64; 3] {
         let loose = self.loose_index.partition_point(|&j| j < count);
         let mut sums = self.loose.sums(0, loose, lo, hi, h, stretch, scaled);
-        for cluster in &self.clusters {
-            if cluster.first >= count || cluster.center < lo || cluster.center > hi {
+        for (i, cluster) in self.clusters.iter().enumerate() {
+            if cluster.first >= count
+                || cluster.center < lo
+                || cluster.center > hi
+                || (i < 64 && skip >> i & 1 == 1)
+            {
                 continue;
             }
             let part = if cluster.end <= count {
@@ -670,11 +699,20 @@ impl Share {
     /// Σ f T_0(h0 + Δ) over the share's first `count` nodes, T_0(u) = ∫_u^∞
     /// e^{−x²/2} dx (√(2π) below the window lo … hi, 0 above it), the clusters
     /// by their series ([`Cluster::tail_sum`]), one that `count` cuts node by node.
-    fn tail_sum(&self, count: usize, lo: f64, hi: f64, h0: f64, stretch: f64) -> f64 {
+    #[allow(clippy::too_many_arguments)]
+    fn tail_sum(&self, count: usize, lo: f64, hi: f64, h0: f64, stretch: f64, skip: u64) -> f64 {
         let loose = self.loose_index.partition_point(|&j| j < count);
         let (d, f) = (&self.loose.interference[..loose], &self.loose.load[..loose]);
         let mut sum = tail_window(d, f, lo, hi, h0, stretch);
-        for cluster in self.clusters.iter().take_while(|c| c.first < count) {
+        for (i, cluster) in self
+            .clusters
+            .iter()
+            .enumerate()
+            .take_while(|(_, c)| c.first < count)
+        {
+            if i < 64 && skip >> i & 1 == 1 {
+                continue;
+            }
             sum += if cluster.end > count {
                 let (d, f) = (&self.all.interference, &self.all.load);
                 tail_window(
@@ -711,6 +749,50 @@ fn tail_window(d: &[f64], f: &[f64], lo: f64, hi: f64, h0: f64, stretch: f64) ->
 }
 
 impl Cluster {
+    /// [`Cluster::tail_sum`] as a window lo … hi (Δ', by the centre) takes it:
+    /// √(2π) m_0 below it, nothing above.
+    fn tail_in(&self, lo: f64, hi: f64, h0: f64, stretch: f64) -> f64 {
+        if self.center < lo {
+            SQRT_TWO_PI * self.moments[0]
+        } else if self.center <= hi {
+            self.tail_sum(h0, stretch)
+        } else {
+            0.0
+        }
+    }
+
+    /// The moments about `center` instead, times `factor`: m'_k = Σ_{i≤k}
+    /// m_i δ^{k−i}/(k−i)!, δ = the old centre − the new (exact: each depends
+    /// on the lower moments only).
+    fn moments_about(&self, center: f64, factor: f64) -> [f64; CLUSTER_TERMS] {
+        let delta = self.center - center;
+        // δ^j/j!, then each m'_k a dot product.
+        // δ^j/j! by one chain of products; the powers behind K zeros, so that m_i's terms are one
+        // slice of fixed length: out[k] += m_i p[K + k − i] (zero for k < i).
+        const K: usize = CLUSTER_TERMS;
+        const RECIPROCALS: [f64; K] = {
+            let mut r = [1.0; K];
+            let mut j = 2;
+            while j < K {
+                r[j] = 1.0 / j as f64;
+                j += 1;
+            }
+            r
+        };
+        let mut padded = [0.0; 2 * K];
+        padded[K] = 1.0;
+        for j in 1..K {
+            padded[K + j] = padded[K + j - 1] * (delta * RECIPROCALS[j]);
+        }
+        let mut out = [0.0; K];
+        for (i, &m) in self.moments.iter().enumerate() {
+            for (slot, &p) in out.iter_mut().zip(&padded[K - i..2 * K - i]) {
+                *slot += m * p;
+            }
+        }
+        out.map(|x| factor * x)
+    }
+
     /// Σ f_j T_0(u_c + y_j) over the cluster's nodes (y = `stretch` x), by
     /// T_0(u + y) = T_0(u) − ∫_0^y φ̄(u + t) dt = T_0(u) − φ̄(u) Σ_k (−1)^k
     /// He_k(u) y^{k+1}/(k + 1)!: T_0(u_c) m_0 − φ̄(u_c) Σ_k (−1)^k He_k(u_c)
@@ -1106,20 +1188,42 @@ impl Grid {
                 .sums(0, self.shared.len(), lo, hi, h, stretch, h < 0.0);
             out.noncontact = part;
         }
+        // The merged clusters, each by its centre in its share's window.
+        for (share, (window, scaled)) in [(noncontact, h < 0.0), (contact, h > 0.0)]
+            .into_iter()
+            .enumerate()
+        {
+            let (lo, hi) = (window.0 / self.stretch, window.1 / self.stretch);
+            for cluster in &self.merged[share] {
+                if cluster.center < lo || cluster.center > hi {
+                    continue;
+                }
+                let part = cluster.sums(h, self.stretch, scaled);
+                let sums = if share == 0 {
+                    &mut out.noncontact
+                } else {
+                    &mut out.elastic
+                };
+                for (sum, p) in sums.iter_mut().zip(part) {
+                    *sum += p;
+                }
+            }
+        }
         for curve in &self.curves {
             let (stretch, factor) = (curve.stretch, curve.factor);
             // The windows in the layout's Δ'.
             let (lo, hi) = (noncontact.0 / stretch, noncontact.1 / stretch);
             let below = &curve.layout.noncontact;
-            let part = below.sums(below.all.len(), lo, hi, h, stretch, h < 0.0);
+            let part = below.sums(below.all.len(), lo, hi, h, stretch, h < 0.0, curve.skip[0]);
             let (lo, hi) = (contact.0 / stretch, contact.1 / stretch);
             for (sum, p) in out.noncontact.iter_mut().zip(part) {
                 *sum += factor * p;
             }
-            let mut part = curve
-                .layout
-                .contact
-                .sums(curve.kept, lo, hi, h, stretch, h > 0.0);
+            let mut part =
+                curve
+                    .layout
+                    .contact
+                    .sums(curve.kept, lo, hi, h, stretch, h > 0.0, curve.skip[1]);
             let cut = curve
                 .cut
                 .sums(0, curve.cut.len(), lo, hi, h, stretch, h > 0.0);
@@ -1154,15 +1258,25 @@ impl Grid {
             h0,
             self.stretch,
         );
+        for cluster in self.merged.iter().flatten() {
+            total += cluster.tail_in(lo, hi, h0, self.stretch);
+        }
         for curve in &self.curves {
             let (lo, hi) = ((-h0 - REACH) / curve.stretch, (-h0 + REACH) / curve.stretch);
             let layout = curve.layout;
             let stretch = curve.stretch;
             let sum = SQRT_TWO_PI * layout.far
+                + layout.noncontact.tail_sum(
+                    layout.noncontact.all.len(),
+                    lo,
+                    hi,
+                    h0,
+                    stretch,
+                    curve.skip[0],
+                )
                 + layout
-                    .noncontact
-                    .tail_sum(layout.noncontact.all.len(), lo, hi, h0, stretch)
-                + layout.contact.tail_sum(curve.kept, lo, hi, h0, stretch)
+                    .contact
+                    .tail_sum(curve.kept, lo, hi, h0, stretch, curve.skip[1])
                 + tail_window(
                     &curve.cut.interference,
                     &curve.cut.load,
@@ -1182,7 +1296,7 @@ impl RoughLaw {
     /// and the panel its Δc cuts.
     pub fn grid(&self) -> Grid {
         let level = level_of(self.ell);
-        let curves: Vec<GridCurve> = match level {
+        let mut curves: Vec<GridCurve> = match level {
             Some(level) => {
                 let s = level_scale(level);
                 let stretch = s / self.ell;
@@ -1205,6 +1319,7 @@ impl RoughLaw {
                             factor: node.weight * stretch.powf(2.5),
                             kept: first * CONTACT_ORDER,
                             cut,
+                            skip: [0; 2],
                         }
                     })
                     .collect()
@@ -1225,13 +1340,80 @@ impl RoughLaw {
                 }
             }
         }
+        let merged = merge_clusters(&mut curves);
         Grid {
             law: *self,
             curves,
             shared,
             stretch,
+            merged,
         }
     }
+}
+
+/// The clusters that every curve in use has within MERGE_GAP of the first
+/// curve's (whole: not cut by Δc), merged per share; each member's bit set
+/// in its curve's `skip`.
+fn merge_clusters(curves: &mut [GridCurve]) -> [Vec<Cluster>; 2] {
+    let mut merged: [Vec<Cluster>; 2] = [Vec::new(), Vec::new()];
+    if curves.len() < 2 || curves.len() > 8 {
+        return merged;
+    }
+    for (share, out) in merged.iter_mut().enumerate() {
+        let of = |c: &GridCurve| -> (&'static Share, usize) {
+            if share == 0 {
+                (&c.layout.noncontact, c.layout.noncontact.all.len())
+            } else {
+                (&c.layout.contact, c.kept)
+            }
+        };
+        let (first, count) = of(&curves[0]);
+        for (i0, c0) in first.clusters.iter().enumerate().take(64) {
+            if c0.end > count {
+                continue;
+            }
+            // Each curve's nearest such cluster not merged already (the
+            // first curve's own is c0); the clusters ascend in centre.
+            let mut members = [usize::MAX; 8];
+            for (slot, c) in members.iter_mut().zip(curves.iter()) {
+                let (s, count) = of(c);
+                let clusters = &s.clusters[..s.clusters.len().min(64)];
+                let from = clusters.partition_point(|x| x.center < c0.center - MERGE_GAP);
+                let mut best = f64::INFINITY;
+                for (k, x) in clusters.iter().enumerate().skip(from) {
+                    if x.center > c0.center + MERGE_GAP {
+                        break;
+                    }
+                    let gap = (x.center - c0.center).abs();
+                    if c.skip[share] >> k & 1 == 0 && x.end <= count && gap < best {
+                        (*slot, best) = (k, gap);
+                    }
+                }
+            }
+            let members = &members[..curves.len()];
+            if members[0] != i0 || members.contains(&usize::MAX) {
+                continue;
+            }
+            let mut moments = [0.0; CLUSTER_TERMS];
+            for (c, &k) in curves.iter_mut().zip(members) {
+                let (s, _) = of(c);
+                for (m, x) in moments
+                    .iter_mut()
+                    .zip(s.clusters[k].moments_about(c0.center, c.factor))
+                {
+                    *m += x;
+                }
+                c.skip[share] |= 1 << k;
+            }
+            out.push(Cluster {
+                first: 0,
+                end: 0,
+                center: c0.center,
+                moments,
+            });
+        }
+    }
+    merged
 }
 
 /// P̂_in/â² of one curve on its contact part at δ̂, the plastic rule's ratio
@@ -1392,7 +1574,7 @@ mod tests {
                     for h in [-6.0, -1.3, 0.0, 0.4, 2.0, 7.5, 16.0] {
                         for scaled in [false, true] {
                             let (lo, hi) = ((-h - REACH) / stretch, (-h + REACH) / stretch);
-                            let got = share.sums(n, lo, hi, h, stretch, scaled);
+                            let got = share.sums(n, lo, hi, h, stretch, scaled, 0);
                             let first = share.all.interference.partition_point(|&d| d < lo);
                             let end = share.all.interference.partition_point(|&d| d <= hi);
                             let (mut want, mut size) = ([0.0; 3], 0.0f64);
@@ -1432,7 +1614,7 @@ mod tests {
                 for stretch in [1.0, 0.92, 0.841] {
                     for h0 in [-6.0, -1.3, 0.0, 0.4, 2.0, 7.5, 16.0] {
                         let (lo, hi) = ((-h0 - REACH) / stretch, (-h0 + REACH) / stretch);
-                        let got = share.tail_sum(n, lo, hi, h0, stretch);
+                        let got = share.tail_sum(n, lo, hi, h0, stretch, 0);
                         let (mut want, mut size) = (0.0, 0.0f64);
                         for (&d, &f) in share.all.interference.iter().zip(&share.all.load) {
                             // The window's: the whole tail below it, nothing above.
@@ -1507,6 +1689,49 @@ mod tests {
             }
         }
         assert!(compared >= 60, "{compared}");
+    }
+
+    /// A scene's merged clusters (the curves' clusters near one another
+    /// re-expanded about one centre and summed once) against the same grid
+    /// summing each curve's own: the same shares and work of separation to
+    /// 1e-14 of their size (times 1 + h² for the shares), on the hub (four curves), at a plastic scene
+    /// whose Δc cuts panels, and between curves elsewhere in the table.
+    #[test]
+    fn merged_clusters_sum_what_each_curves_sum() {
+        let mut merged_any = 0;
+        for (c_0, c_h, z0) in [
+            (2.0 * std::f64::consts::PI / 184.0, 10.0, 0.1),
+            (0.3, 1.5, 0.05),
+            (0.01, 3.0, 0.3),
+            (0.05, f64::INFINITY, 1.0),
+        ] {
+            let law = RoughLaw::new(c_0, c_h, z0).expect("in the table");
+            let grid = law.grid();
+            merged_any += grid.merged[0].len() + grid.merged[1].len();
+            let mut plain = grid.clone();
+            plain.merged = [Vec::new(), Vec::new()];
+            for c in &mut plain.curves {
+                c.skip = [0; 2];
+            }
+            for h in [-6.0, -2.0, 0.0, 0.5, 2.0, 4.0, 9.0, 16.0] {
+                let (a, b) = (grid.at(h), plain.at(h));
+                for (x, y) in [(a.noncontact, b.noncontact), (a.elastic, b.elastic)] {
+                    // As `clusters_sum_what_their_nodes_sum` measures:
+                    // against the share's size times 1 + u² (the series
+                    // lose digits as |u| grows: at h = 16, 2.7e-14 of P̄'').
+                    let size = y.iter().fold(1e-300f64, |m, v| m.max(v.abs())) * (1.0 + h * h);
+                    for k in 0..3 {
+                        assert!(
+                            (x[k] - y[k]).abs() <= 1e-14 * size,
+                            "c_0 {c_0} h {h}: {x:?} vs {y:?}"
+                        );
+                    }
+                }
+                let (wa, wb) = (grid.solid_work(h).unwrap(), plain.solid_work(h).unwrap());
+                assert!((wa - wb).abs() <= 1e-14 * wb.abs(), "h {h}: {wa} vs {wb}");
+            }
+        }
+        assert!(merged_any >= 2, "the hub's clusters merge: {merged_any}");
     }
 
     /// The far field below a layout's first node, on panels shrinking by 1.5
