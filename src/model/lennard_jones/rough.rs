@@ -522,9 +522,11 @@ pub struct Grid {
     /// Each curve in the law's order (empty where ℓ lies beyond the layouts'
     /// scales: the law integrates at h itself).
     curves: Vec<GridCurve>,
-    /// The level's shared approach nodes ([`Shared`]), with the curves'
-    /// loads there summed, each times its curve's factor; and the stretch.
-    shared: Nodes,
+    /// The level's shared approach nodes' Δ' ([`Shared`]; empty without
+    /// curves), the curves' loads there summed, each times its curve's
+    /// factor, and the stretch.
+    shared: &'static [f64],
+    shared_loads: Vec<f64>,
     stretch: f64,
     /// Clusters of every curve in use within MERGE_GAP of each other, merged
     /// (their moments about the first curve's centre, each times its
@@ -723,12 +725,8 @@ impl Share {
                     h0,
                     stretch,
                 )
-            } else if cluster.center < lo {
-                SQRT_TWO_PI * cluster.moments[0]
-            } else if cluster.center <= hi {
-                cluster.tail_sum(h0, stretch)
             } else {
-                0.0
+                cluster.tail_in(lo, hi, h0, stretch)
             };
         }
         sum
@@ -766,7 +764,6 @@ impl Cluster {
     /// on the lower moments only).
     fn moments_about(&self, center: f64, factor: f64) -> [f64; CLUSTER_TERMS] {
         let delta = self.center - center;
-        // δ^j/j!, then each m'_k a dot product.
         // δ^j/j! by one chain of products; the powers behind K zeros, so that m_i's terms are one
         // slice of fixed length: out[k] += m_i p[K + k − i] (zero for k < i).
         const K: usize = CLUSTER_TERMS;
@@ -849,7 +846,7 @@ fn layout(index: usize, level: i32) -> &'static Layout {
             .collect()
     });
     cache[index * count + (level - LEVELS.0) as usize]
-        .get_or_init(|| Box::new(Layout::new(&curves()[index], level_scale(level))))
+        .get_or_init(|| Box::new(Layout::new(&curves()[index], level)))
 }
 
 /// Lays out the nodes of `curves()[index]` for the scale just below ℓ afresh,
@@ -858,7 +855,7 @@ fn layout(index: usize, level: i32) -> &'static Layout {
 #[doc(hidden)]
 pub fn lay_out_uncached(index: usize, ell: f64) -> usize {
     level_of(ell).map_or(0, |level| {
-        let layout = Layout::new(&curves()[index], level_scale(level));
+        let layout = Layout::new(&curves()[index], level);
         layout.noncontact.all.len() + layout.shared.len() + layout.contact.all.len()
     })
 }
@@ -882,8 +879,8 @@ fn level_of(ell: f64) -> Option<i32> {
 
 /// The approach part's nodes far below every curve's switch, the same for
 /// every curve at one scale s: Gauss–Legendre panels of ORDER nodes, as wide
-/// as APPROACH_PANEL, from the layouts' lower end up to 2.5 (in Δ') below
-/// the table's lowest switch. A scene's grid sums its curves' loads there once,
+/// as APPROACH_PANEL, from the layouts' lower end up to SHARED_MARGIN (in
+/// Δ') below the table's lowest switch. A scene's grid sums its curves' loads there once,
 /// weighted, instead of each curve's own nodes (three quarters of the
 /// approach part's nodes in a window where four curves are interpolated).
 /// So far from the switch (the load's nearest singularity lies at or beyond
@@ -903,9 +900,7 @@ const SHARED_MARGIN: f64 = 1.0;
 
 impl Shared {
     fn new(s: f64) -> Shared {
-        // The layouts' lower end ([`Layout::new`]).
-        let wider = 2f64.powf(0.25) * (1.0 + 1e-9);
-        let lo = (-GRID_SEPARATIONS.1 - REACH) * wider;
+        let (lo, _) = layout_range();
         let lowest = curves()
             .iter()
             .map(|c| c.switch)
@@ -926,25 +921,31 @@ impl Shared {
         Shared { nodes, end }
     }
 
-    /// The shared nodes at the scale s = 2^{k/4} (built once).
-    fn at(s: f64) -> &'static Shared {
+    /// The shared nodes at level k, the scale s = 2^{k/4} (built once).
+    fn at(level: i32) -> &'static Shared {
         static CACHE: OnceLock<Vec<OnceLock<Shared>>> = OnceLock::new();
         let count = (LEVELS.1 - LEVELS.0 + 1) as usize;
         let cache = CACHE.get_or_init(|| (0..count).map(|_| OnceLock::new()).collect());
-        let level = (4.0 * s.log2()).round() as i32;
-        cache[(level - LEVELS.0) as usize].get_or_init(|| Shared::new(s))
+        cache[(level - LEVELS.0) as usize].get_or_init(|| Shared::new(level_scale(level)))
     }
+}
+
+/// The range in Δ' every layout covers: the summits that separations in
+/// [`GRID_SEPARATIONS`] weigh, for any ℓ in [s, 2^{1/4} s) (in the layout's
+/// Δ' = Δ ℓ/s the scene's range stretches by up to 2^{1/4}).
+fn layout_range() -> (f64, f64) {
+    let (h_lo, h_hi) = GRID_SEPARATIONS;
+    let wider = 2f64.powf(0.25) * (1.0 + 1e-9);
+    ((-h_hi - REACH) * wider, (-h_lo + REACH) * wider)
 }
 
 impl Layout {
     /// The nodes at ℓ = s over every summit that separations in
     /// [`GRID_SEPARATIONS`] weigh for any ℓ in [s, 2^{1/4} s).
-    fn new(curve: &Curve, s: f64) -> Layout {
-        let (h_lo, h_hi) = GRID_SEPARATIONS;
-        // In the layout's Δ' = Δ ℓ/s the scene's range stretches by up to 2^{1/4}.
-        let wider = 2f64.powf(0.25) * (1.0 + 1e-9);
-        let (lo, hi) = ((-h_hi - REACH) * wider, (-h_lo + REACH) * wider);
-        let shared = Shared::at(s);
+    fn new(curve: &Curve, level: i32) -> Layout {
+        let s = level_scale(level);
+        let (lo, hi) = layout_range();
+        let shared = Shared::at(level);
         let scale = s.powf(-1.5);
         let shared_loads = (shared.nodes.interference.iter().zip(&shared.nodes.load))
             .map(|(&d, &w)| scale * curve.load(s * d) * w)
@@ -1057,17 +1058,37 @@ impl Nodes {
         stretch: f64,
         scaled: bool,
     ) -> [f64; 3] {
-        let nodes = &self.interference[from..to];
-        let first = from + nodes.partition_point(|&d| d < lo);
-        let end = (from + nodes.partition_point(|&d| d <= hi)).max(first);
-        let (d, f) = (&self.interference[first..end], &self.load[first..end]);
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU has AVX2, checked just above.
-            return unsafe { window_sums_avx2(d, f, h, stretch, scaled) };
-        }
-        window_sums(d, f, h, stretch, scaled)
+        window_of(
+            &self.interference[from..to],
+            &self.load[from..to],
+            lo,
+            hi,
+            h,
+            stretch,
+            scaled,
+        )
     }
+}
+
+/// [`Nodes::sums`] of the nodes (d, f) ascending in d.
+fn window_of(
+    d: &[f64],
+    f: &[f64],
+    lo: f64,
+    hi: f64,
+    h: f64,
+    stretch: f64,
+    scaled: bool,
+) -> [f64; 3] {
+    let first = d.partition_point(|&x| x < lo);
+    let end = d.partition_point(|&x| x <= hi).max(first);
+    let (d, f) = (&d[first..end], &f[first..end]);
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU has AVX2, checked just above.
+        return unsafe { window_sums_avx2(d, f, h, stretch, scaled) };
+    }
+    window_sums(d, f, h, stretch, scaled)
 }
 
 /// [`window_sums`] compiled for AVX2: the same numbers bit for bit (no fused
@@ -1180,13 +1201,11 @@ impl Grid {
             ..Shares::default()
         };
         let [noncontact, contact] = windows(h, self.law.range);
-        if !self.shared.interference.is_empty() {
+        if !self.shared.is_empty() {
             let stretch = self.stretch;
             let (lo, hi) = (noncontact.0 / stretch, noncontact.1 / stretch);
-            let part = self
-                .shared
-                .sums(0, self.shared.len(), lo, hi, h, stretch, h < 0.0);
-            out.noncontact = part;
+            out.noncontact =
+                window_of(self.shared, &self.shared_loads, lo, hi, h, stretch, h < 0.0);
         }
         // The merged clusters, each by its centre in its share's window.
         for (share, (window, scaled)) in [(noncontact, h < 0.0), (contact, h > 0.0)]
@@ -1250,14 +1269,7 @@ impl Grid {
             return None;
         }
         let (lo, hi) = ((-h0 - REACH) / self.stretch, (-h0 + REACH) / self.stretch);
-        let mut total = tail_window(
-            &self.shared.interference,
-            &self.shared.load,
-            lo,
-            hi,
-            h0,
-            self.stretch,
-        );
+        let mut total = tail_window(self.shared, &self.shared_loads, lo, hi, h0, self.stretch);
         for cluster in self.merged.iter().flatten() {
             total += cluster.tail_in(lo, hi, h0, self.stretch);
         }
@@ -1327,15 +1339,13 @@ impl RoughLaw {
             None => Vec::new(),
         };
         // The shared nodes' loads, each curve's times its factor.
-        let (mut shared, mut stretch) = (Nodes::default(), 1.0);
+        let (mut shared, mut shared_loads, mut stretch): (&[f64], _, _) = (&[], Vec::new(), 1.0);
         if let (Some(level), Some(first)) = (level, curves.first()) {
-            let s = level_scale(level);
             stretch = first.stretch;
-            let nodes = &Shared::at(s).nodes;
-            shared.interference = nodes.interference.clone();
-            shared.load = vec![0.0; nodes.len()];
+            shared = &Shared::at(level).nodes.interference;
+            shared_loads = vec![0.0; shared.len()];
             for curve in &curves {
-                for (sum, &f) in shared.load.iter_mut().zip(&curve.layout.shared) {
+                for (sum, &f) in shared_loads.iter_mut().zip(&curve.layout.shared) {
                     *sum += curve.factor * f;
                 }
             }
@@ -1345,6 +1355,7 @@ impl RoughLaw {
             law: *self,
             curves,
             shared,
+            shared_loads,
             stretch,
             merged,
         }
@@ -1651,13 +1662,12 @@ mod tests {
             let curve = &curves()[index];
             for level in [-3, 0, 12, 33] {
                 let s = level_scale(level);
-                let shared = Shared::at(s);
+                let shared = Shared::at(level);
                 let loads = &layout(index, level).shared;
                 if loads.is_empty() {
                     continue;
                 }
-                // The layouts' lower end.
-                let lo = (-GRID_SEPARATIONS.1 - REACH) * 2f64.powf(0.25) * (1.0 + 1e-9);
+                let (lo, _) = layout_range();
                 let mut own = Nodes::default();
                 visit_curve(curve, s, f64::INFINITY, lo, shared.end, &mut |d, f, _| {
                     own.push(d, f)
