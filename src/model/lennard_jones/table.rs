@@ -609,7 +609,7 @@ impl Curve {
                     .skip(1)
                     .map(|w| {
                         w.parse::<f64>()
-                            .expect("numbers (checked when the table was read)")
+                            .expect("a number (the committed table is read whole by the test `every_curve_reads_whole`)")
                     })
                     .collect()
             };
