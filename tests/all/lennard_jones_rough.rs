@@ -499,7 +499,7 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     }
 }
 
-/// Beyond the table's reach (δ̂ = 50) the tail (δ̂ − C)^{3/2} − B stands in:
+/// Beyond the table's reach (δ̂ = 50) the tail (the shifted Hertz load) stands in:
 /// P̄ of a curve with that tail against P̄ of the same curve written by the
 /// solver to δ̂ = 150 (`tests/data/lennard_jones_far.txt`,
 /// `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
