@@ -13,13 +13,23 @@ use wearopt::model::lennard_jones::table::{
 };
 use wearopt::model::lennard_jones::{spacing, SphereSettings};
 
-/// The table's grid: μ from 0.01 to 5, geometric in 66 steps (24.4 per
-/// decade; the first table's 33 steps halved, so that the cubic
-/// interpolation in μ between its curves errs about 16 times less).
+/// The table's grid: μ from 0.01 to 5, geometric in 132 steps (49 per
+/// decade; the first table's 33 steps halved twice, so that the cubic
+/// interpolation in μ between its curves errs about 16 times less each time),
+/// but for one: at step 91, μ = 0.7255, just above the cusp (0.7093), the
+/// loading trace does not converge (nor at 0.700, 0.703, 0.7241 or 0.7253,
+/// where the S-shape's two turns lie within a few thousandths of δ̂; it does
+/// at 0.696 and from 0.7275), and the curve at μ = 0.7275 stands in for it.
 fn grid() -> Vec<f64> {
-    let (lo, hi, steps) = (0.01f64, 5.0f64, 66);
+    let (lo, hi, steps) = (0.01f64, 5.0f64, 132);
     (0..=steps)
-        .map(|i| lo * (hi / lo).powf(i as f64 / steps as f64))
+        .map(|i| {
+            if i == 91 {
+                0.7275
+            } else {
+                lo * (hi / lo).powf(i as f64 / steps as f64)
+            }
+        })
         .collect()
 }
 

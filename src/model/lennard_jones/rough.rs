@@ -137,7 +137,7 @@ pub fn stand_in_pull_off_error(above: bool) -> f64 {
 /// The Tabor parameter where the sphere's loading curve turns S-shaped:
 /// `wearopt asperity` finds no jumps at μ = 0.7092 and jumps at 0.7094 (the
 /// table's last single-valued curve is at 0.692, its first S-shaped one at
-/// 0.760: test `the_cusp_lies_between_the_tables_kinds_of_curve`).
+/// 0.7275: test `the_cusp_lies_between_the_tables_kinds_of_curve`).
 pub const CUSP_TABOR: f64 = 0.7093;
 
 /// The Lagrange weights of the four nodes around μ, cubic in 1/μ (∝ ẑ0, the
