@@ -439,7 +439,8 @@ fn the_stretched_grid_matches_an_adaptive_quadrature() {
 /// range z0 = ẑ0/ℓ is at most 3σ), with and without plasticity, h from −1 to
 /// 4. Measured: 2.5e-7 at the midpoints away from the cusp (5.3e-8 at the
 /// hub), 2.7e-6 beside it (at μ = 0.735; 1.2e-6 at 0.745, 3.4e-7 at 0.779,
-/// 2.9e-7 at 0.696): `INTERPOLATION_ERROR`. On the table of 67 curves 4.0e-6
+/// 2.9e-7 at 0.696): `INTERPOLATION_ERROR`; dP̄/dh (central differences of
+/// each, h = −1, 0.5, 1, 2, 4) within 2.1e-7 and 3.0e-6. On the table of 67 curves 4.0e-6
 /// and 9.2e-6, on that of 34 with stencils across the cusp 7.5e-5 and 1.8e-4.
 #[test]
 fn the_interpolation_in_tabor_against_curves_between_the_tables() {
@@ -455,8 +456,9 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     use wearopt::model::lennard_jones::table::INTERPOLATION_ERROR;
     // The midpoints away from the cusp, and the three beside it.
     let (mut midpoints, mut cusp) = (0.0f64, 0.0f64);
+    let (mut midpoint_slopes, mut cusp_slopes) = (0.0f64, 0.0f64);
     for curve in &between {
-        let mut worst = 0.0f64;
+        let (mut worst, mut slopes) = (0.0f64, 0.0f64);
         for ell in [1.0f64, 3.0, 10.0, 30.0, 100.0] {
             let z0 = spacing(curve.tabor) / ell;
             if z0 > 3.0 {
@@ -476,19 +478,41 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
                         println!("  ℓ {ell} c_h {c_h} h {h}: {err:.2e}");
                     }
                     worst = worst.max(err);
+                    if h == 0.0 || h == 3.0 {
+                        continue;
+                    }
+                    // dP̄/dh by central differences of each (the
+                    // reference's 1e-12 makes them good to 1e-9 of the size).
+                    let e = 1e-3;
+                    let served = reference_load_of(law.curves(), ell, c, h + e).0
+                        - reference_load_of(law.curves(), ell, c, h - e).0;
+                    let own = reference_load_of([(curve, 1.0, dc)], ell, c, h + e).0
+                        - reference_load_of([(curve, 1.0, dc)], ell, c, h - e).0;
+                    slopes = slopes.max((served - own).abs() / (2.0 * e) / size);
                 }
             }
         }
         println!(
-            "μ = {:.5}: P̄ interpolated within {worst:.2e} of ∫|p| φ̄",
+            "μ = {:.5}: P̄ interpolated within {worst:.2e} of ∫|p| φ̄, dP̄/dh within {slopes:.2e}",
             curve.tabor
         );
         if curve.tabor > 0.6 && curve.tabor < 0.8 {
             cusp = cusp.max(worst);
+            cusp_slopes = cusp_slopes.max(slopes);
         } else {
             midpoints = midpoints.max(worst);
+            midpoint_slopes = midpoint_slopes.max(slopes);
         }
     }
+    // dP̄/dh as closely (measured 2.1e-7 and 3.0e-6).
+    assert!(
+        midpoint_slopes <= 1.2 * INTERPOLATION_ERROR.0,
+        "{midpoint_slopes:e}"
+    );
+    assert!(
+        cusp_slopes <= 1.2 * INTERPOLATION_ERROR.1,
+        "{cusp_slopes:e}"
+    );
     // What the reports state (`wearopt accuracy`), to the measurement.
     for (worst, stated) in [
         (midpoints, INTERPOLATION_ERROR.0),
