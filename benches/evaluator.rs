@@ -216,7 +216,7 @@ fn nondimensional_lennard_jones(c: &mut Criterion) {
         (
             "one curve mu=0.358",
             wearopt::model::lennard_jones::spacing(
-                wearopt::model::lennard_jones::table::curves()[38].tabor,
+                wearopt::model::lennard_jones::table::curves()[76].tabor,
             ) / ell,
         ),
     ] {

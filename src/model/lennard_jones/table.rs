@@ -19,7 +19,8 @@
 //!   lies just below δ̂_s near the cusp μ ≈ 0.7);
 //! * beyond δ̂_max, P̂ = P̂(δ̂_max) + ∫ 1.5 (x − C(x))^{1/2} dx: a Hertz load
 //!   shifted by the squeezed gap, C(x) = ẑ0 − (ẑ0 − C_m)(x/δ̂_max)^{−β}
-//!   matched to the last panel's value, slope and curvature (JKR's curve has
+//!   matched to the contact part's value and slope at δ̂_max and to how its
+//!   shift rises over the last 30 % of the reach (JKR's curve has
 //!   the form (δ̂ − C)^{3/2} − B to O(1): its δ̂^{3/4} terms cancel; the gap
 //!   under a contact closes as a power of its pressure).
 //!
@@ -221,14 +222,15 @@ struct Body {
 ///   P̂(δ̂) = P̂_m + ∫_{δ̂_max}^{δ̂} 1.5 (x − C(x))^{1/2} dx,
 ///   C(x) = ẑ0 − (ẑ0 − C_m)(x/δ̂_max)^{−β},
 ///
-/// C_m, β from the last panel's value, slope and curvature at δ̂_max (so P̂,
-/// P̂' and P̂'' run on continuously there). Under a contact's rising pressure
+/// C_m from the last panel's slope at δ̂_max (so P̂ and P̂' run on
+/// continuously there), β from how the shift rises over [0.7, 1] δ̂_max
+/// ([`Tail::new`]; P̂'' then runs on within 0.6 %). Under a contact's rising pressure
 /// the gap between the surfaces closes as a power of it (as p^{-1/9} where
 /// the repulsion dominates), so the shift C_eff = δ̂ − (P̂'/1.5)² tends to ẑ0
 /// as a power of δ̂: on the curves written to δ̂ = 150 its exponent holds
-/// within 1 % from 50 to 150 at μ ≥ 0.1. The integral by Gauss–Legendre on
-/// panels doubling in their distance from the branch point, their ends'
-/// sums kept.
+/// within 1 % from 50 to 150 at μ ≥ 0.1. The slope and its integral as
+/// Chebyshev series on panels doubling in their distance from the branch
+/// point, their ends' sums kept.
 #[derive(Debug, Clone, PartialEq)]
 struct Tail {
     /// δ̂_max and P̂ there.
@@ -243,16 +245,31 @@ struct Tail {
     /// ∫ from δ̂_max to each panel end e_k = branch + (δ̂_max − branch) 2^k,
     /// k = 0 … TAIL_PANELS.
     sums: Vec<f64>,
+    /// On each panel [e_k, e_{k+1}], the slope 1.5 (x − C(x))^{1/2} and its
+    /// integral from e_k as Chebyshev series (no logarithm or exponential
+    /// per evaluation: the plastic rule's Δc is found in the tail, by a
+    /// Newton iteration per curve and scene).
+    panels: Vec<TailPanel>,
+}
+
+/// One panel of the tail: its ends and the two series' coefficients.
+#[derive(Debug, Clone, PartialEq)]
+struct TailPanel {
+    lo: f64,
+    hi: f64,
+    slope: Vec<f64>,
+    integral: Vec<f64>,
 }
 
 /// The tail's panels, doubling from δ̂_max − branch to 2^40 of it; beyond,
 /// C is held at its value there (δ̂ ≳ 10¹³, a hundred million times deeper
 /// than a summit of any scene reaches).
 const TAIL_PANELS: usize = 40;
-/// The tail's Gauss–Legendre order: each panel is as far from the nearest
-/// singularity as it is wide (Bernstein ellipse ρ = 3 + √8), so 12 nodes
-/// integrate it to ρ^{-24} ≈ 4e-19.
-const TAIL_ORDER: usize = 12;
+/// The degree of the tail's series: each panel is as far from the nearest
+/// singularity as it is wide (Bernstein ellipse ρ = 3 + √8), so degree 18
+/// interpolates the slope to ρ^{-18} ≈ 2e-14 of its size (the tests hold the
+/// tail to 1e-14 of the closed form and 1e-13 of an independent rule).
+const TAIL_DEGREE: usize = 18;
 /// The intervals of the slopes the tail's exponent is fitted to.
 const TAIL_FIT_POINTS: usize = 40;
 
@@ -316,10 +333,42 @@ impl Tail {
             beta,
             branch,
             sums: vec![0.0],
+            panels: Vec::with_capacity(TAIL_PANELS),
         };
         for k in 0..TAIL_PANELS {
-            let sum = tail.sums[k] + tail.integral(tail.end(k), tail.end(k + 1));
-            tail.sums.push(sum);
+            let (lo, hi) = (tail.end(k), tail.end(k + 1));
+            let values: Vec<f64> = lobatto(lo, hi, TAIL_DEGREE)
+                .iter()
+                .map(|&x| 1.5 * (x - tail.shift(x)).max(0.0).sqrt())
+                .collect();
+            let slope = Chebyshev::interpolate(lo, hi, &values).coefficients;
+            // ∫ Σ c_j T_j = Σ b_j T_j: b_j = (c_{j−1} − c_{j+1})/(2j), with
+            // b_0 making it 0 at x = −1; times the half-width.
+            let half = 0.5 * (hi - lo);
+            let c = |j: usize| slope.get(j).copied().unwrap_or(0.0);
+            let mut integral: Vec<f64> = (0..=TAIL_DEGREE + 1)
+                .map(|j| match j {
+                    0 => 0.0,
+                    _ => {
+                        half * (c(j - 1) * if j == 1 { 2.0 } else { 1.0 } - c(j + 1))
+                            / (2.0 * j as f64)
+                    }
+                })
+                .collect();
+            integral[0] = -integral
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(j, b)| if j % 2 == 0 { *b } else { -b })
+                .sum::<f64>();
+            let whole: f64 = integral.iter().sum();
+            tail.sums.push(tail.sums[k] + whole);
+            tail.panels.push(TailPanel {
+                lo,
+                hi,
+                slope,
+                integral,
+            });
         }
         tail
     }
@@ -339,22 +388,6 @@ impl Tail {
         self.branch + (self.start - self.branch) * (k as f64).exp2()
     }
 
-    /// ∫_a^b 1.5 (x − C(x))^{1/2} dx over (part of) one panel.
-    fn integral(&self, a: f64, b: f64) -> f64 {
-        let rule = super::super::gauss::rule(TAIL_ORDER);
-        let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-        let sum: f64 = rule
-            .nodes
-            .iter()
-            .zip(&rule.weights)
-            .map(|(x, w)| {
-                let x = mid + half * x;
-                w * (x - self.shift(x)).max(0.0).sqrt()
-            })
-            .sum();
-        1.5 * half * sum
-    }
-
     /// P̂ and dP̂/dδ̂ at δ̂ ≥ δ̂_max.
     fn at(&self, d: f64) -> (f64, f64) {
         let last = self.end(TAIL_PANELS);
@@ -365,13 +398,16 @@ impl Tail {
             let rise = (d - c) * r - (last - c) * r0;
             return (self.load + self.sums[TAIL_PANELS] + rise, 1.5 * r);
         }
-        let k = ((d - self.branch) / (self.start - self.branch))
-            .log2()
-            .floor()
-            .clamp(0.0, (TAIL_PANELS - 1) as f64) as usize;
-        let from = self.end(k);
-        let value = self.load + self.sums[k] + self.integral(from, d);
-        (value, 1.5 * (d - self.shift(d)).max(0.0).sqrt())
+        // The panel: ⌊log2 of the distance over the first's⌋, from the
+        // binary exponent (d ≥ δ̂_max: the ratio is at least 1).
+        let ratio = (d - self.branch) / (self.start - self.branch);
+        let k = ((ratio.to_bits() >> 52) as usize)
+            .saturating_sub(1023)
+            .min(TAIL_PANELS - 1);
+        let panel = &self.panels[k];
+        let x = (2.0 * d - panel.lo - panel.hi) / (panel.hi - panel.lo);
+        let (integral, slope) = clenshaw2(&panel.integral, &panel.slope, x);
+        (self.load + self.sums[k] + integral, slope)
     }
 }
 
@@ -511,7 +547,7 @@ impl Curve {
             return (self.body().radius[k].at(d).0, self.body().inner[k].at(d).0);
         }
         let (a, slope) = self.body().radius[k].at(max);
-        let inner = self.body().inner[k].at(max).0 - self.contact(max).0 + self.contact(d).0;
+        let inner = self.body().inner[k].at(max).0 - self.body().tail.load + self.contact(d).0;
         ((a * a + 2.0 * a * slope * (d - max)).sqrt(), inner)
     }
 
@@ -525,7 +561,7 @@ impl Curve {
         }
         let (a, slope) = self.body().radius[k].at(max);
         let (load, load_slope) = self.contact(d);
-        let inner = self.body().inner[k].at(max).0 - self.contact(max).0 + load;
+        let inner = self.body().inner[k].at(max).0 - self.body().tail.load + load;
         let radius = (a * a + 2.0 * a * slope * (d - max)).sqrt();
         ((radius, a * slope / radius), (inner, load_slope))
     }
@@ -638,6 +674,25 @@ impl Curve {
             self.approach(self.tau_at(d)).load
         }
     }
+}
+
+/// Two Chebyshev series at one x, their Clenshaw recurrences interleaved (two
+/// independent chains; `a` at least as long as `b`): the same numbers as
+/// [`Chebyshev::clenshaw`] of each.
+#[inline]
+fn clenshaw2(a: &[f64], b: &[f64], x: f64) -> (f64, f64) {
+    let (mut a1, mut a2, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0);
+    for k in (1..a.len()).rev() {
+        let a0 = 2.0 * x * a1 - a2 + a[k];
+        a2 = a1;
+        a1 = a0;
+        if let Some(&c) = b.get(k) {
+            let b0 = 2.0 * x * b1 - b2 + c;
+            b2 = b1;
+            b1 = b0;
+        }
+    }
+    (x * a1 - a2 + a[0], x * b1 - b2 + b[0])
 }
 
 /// Three Chebyshev series at one x by one Clenshaw recurrence over their
@@ -1100,7 +1155,9 @@ mod tests {
             let c = tail.shift(tail.start);
             let x = tail.start * (1.0 + 1e-7);
             let own = rising((tail.at(x).1 - s) / (x - tail.start));
-            assert_eq!(tail.at(tail.start), (p, s));
+            let (p0, s0) = tail.at(tail.start);
+            assert!((p0 - p).abs() <= 1e-14 * p, "{p0} vs {p}");
+            assert!((s0 - s).abs() <= 1e-14 * s, "{s0} vs {s}");
             assert!((own / panel - 1.0).abs() <= 0.02, "{own} vs {panel}");
             assert!((s - 1.5 * (tail.start - c).sqrt()).abs() <= 1e-13 * s);
             for d in [57.0, 140.0, 2e3, 9e5] {
