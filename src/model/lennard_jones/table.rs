@@ -126,8 +126,9 @@ impl Chebyshev {
     }
 
     /// The second derivative at t = b: Σ c_k T_k''(1) (2/(b − a))², with
-    /// T_k''(1) = k²(k² − 1)/3.
-    pub fn curvature_at_end(&self) -> f64 {
+    /// T_k''(1) = k²(k² − 1)/3 (the tests compare the tail's with it).
+    #[cfg(test)]
+    fn curvature_at_end(&self) -> f64 {
         let scale = 2.0 / (self.hi - self.lo);
         let sum: f64 = self
             .coefficients
@@ -139,6 +140,30 @@ impl Chebyshev {
             })
             .sum();
         sum * scale * scale
+    }
+
+    /// The series' integral from a, ∫_a^t, as coefficients in the same x
+    /// (one degree more): ∫ Σ c_j T_j = Σ b_j T_j with b_j = (c_{j−1} −
+    /// c_{j+1})/(2j) (c_0 counted twice in b_1), b_0 making it 0 at x = −1,
+    /// times the half-width.
+    fn integral_coefficients(&self) -> Vec<f64> {
+        let half = 0.5 * (self.hi - self.lo);
+        let c = |j: usize| self.coefficients.get(j).copied().unwrap_or(0.0);
+        let mut integral: Vec<f64> = (0..=self.coefficients.len())
+            .map(|j| match j {
+                0 => 0.0,
+                _ => {
+                    half * (c(j - 1) * if j == 1 { 2.0 } else { 1.0 } - c(j + 1)) / (2.0 * j as f64)
+                }
+            })
+            .collect();
+        integral[0] = -integral
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(j, b)| if j % 2 == 0 { *b } else { -b })
+            .sum::<f64>();
+        integral
     }
 
     /// t ∈ [a, b] mapped to [−1, 1].
@@ -273,6 +298,24 @@ const TAIL_DEGREE: usize = 18;
 /// The intervals of the slopes the tail's exponent is fitted to.
 const TAIL_FIT_POINTS: usize = 40;
 
+/// The slope at δ̂_max = `start` of ln(ẑ0 − C_eff) against ln δ̂, negated
+/// (the tail's β), from the shifts (δ̂, C_eff) by a least-squares cubic.
+fn exponent_at_end(start: f64, z0: f64, shifts: impl Iterator<Item = (f64, f64)>) -> f64 {
+    // Normal equations of y = Σ_p c_p u^p (p ≤ 3), u = ln(δ̂/δ̂_max),
+    // y = ln(ẑ0 − C_eff) (u ∈ [ln 0.7, 0]: well conditioned); β = −c_1.
+    let (mut m, mut rhs) = (
+        nalgebra::Matrix4::<f64>::zeros(),
+        nalgebra::Vector4::<f64>::zeros(),
+    );
+    for (d, shift) in shifts {
+        let (u, y) = ((d / start).ln(), (z0 - shift).ln());
+        let basis = nalgebra::Vector4::new(1.0, u, u * u, u * u * u);
+        m += basis * basis.transpose();
+        rhs += basis * y;
+    }
+    m.lu().solve(&rhs).map_or(0.0, |c| -c[1])
+}
+
 impl Tail {
     /// The tail after a last panel ending at δ̂_max = `start` with load
     /// `load`, for ẑ0 = `z0`, from the slopes (δ̂, P̂') the panels give on
@@ -288,37 +331,7 @@ impl Tail {
         let &(_, slope) = slopes.last().expect("the last panel's slope");
         let shift = shift_at(slope, start);
         let deficit = z0 - shift;
-        // Normal equations of y = Σ_p c_p u^p (p ≤ 3), u = ln(δ̂/δ̂_max),
-        // y = ln(ẑ0 − C_eff), by Gaussian elimination (u ∈ [ln 0.7, 0]);
-        // β = −c_1.
-        const N: usize = 4;
-        let (mut m, mut rhs) = ([[0.0f64; N]; N], [0.0f64; N]);
-        for &(d, s) in slopes {
-            let (u, y) = ((d / start).ln(), (z0 - shift_at(s, d)).ln());
-            let basis: [f64; N] = std::array::from_fn(|p| u.powi(p as i32));
-            for p in 0..N {
-                rhs[p] += basis[p] * y;
-                for q in 0..N {
-                    m[p][q] += basis[p] * basis[q];
-                }
-            }
-        }
-        for i in 0..N {
-            for j in i + 1..N {
-                let r = m[j][i] / m[i][i];
-                let pivot = m[i];
-                for (a, b) in m[j].iter_mut().zip(pivot).skip(i) {
-                    *a -= r * b;
-                }
-                rhs[j] -= r * rhs[i];
-            }
-        }
-        let mut c = [0.0f64; N];
-        for i in (0..N).rev() {
-            let known: f64 = (i + 1..N).map(|k| m[i][k] * c[k]).sum();
-            c[i] = (rhs[i] - known) / m[i][i];
-        }
-        let beta = -c[1];
+        let beta = exponent_at_end(start, z0, slopes.iter().map(|&(d, s)| (d, shift_at(s, d))));
         let beta = if deficit > 0.0 && beta > 1e-9 && beta < 0.5 {
             beta
         } else {
@@ -341,26 +354,9 @@ impl Tail {
                 .iter()
                 .map(|&x| 1.5 * (x - tail.shift(x)).max(0.0).sqrt())
                 .collect();
-            let slope = Chebyshev::interpolate(lo, hi, &values).coefficients;
-            // ∫ Σ c_j T_j = Σ b_j T_j: b_j = (c_{j−1} − c_{j+1})/(2j), with
-            // b_0 making it 0 at x = −1; times the half-width.
-            let half = 0.5 * (hi - lo);
-            let c = |j: usize| slope.get(j).copied().unwrap_or(0.0);
-            let mut integral: Vec<f64> = (0..=TAIL_DEGREE + 1)
-                .map(|j| match j {
-                    0 => 0.0,
-                    _ => {
-                        half * (c(j - 1) * if j == 1 { 2.0 } else { 1.0 } - c(j + 1))
-                            / (2.0 * j as f64)
-                    }
-                })
-                .collect();
-            integral[0] = -integral
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(j, b)| if j % 2 == 0 { *b } else { -b })
-                .sum::<f64>();
+            let series = Chebyshev::interpolate(lo, hi, &values);
+            let integral = series.integral_coefficients();
+            let slope = series.coefficients;
             let whole: f64 = integral.iter().sum();
             tail.sums.push(tail.sums[k] + whole);
             tail.panels.push(TailPanel {
@@ -842,6 +838,20 @@ impl Curve {
         }
     }
 
+    /// A curve from its block's header (μ, end gap, switch, jumps) and its
+    /// sample lines, their numbers read on first use.
+    fn unread(head: &[f64], samples: std::borrow::Cow<'static, str>) -> Curve {
+        Curve {
+            tabor: head[0],
+            z0: super::spacing(head[0]),
+            end_gap: head[1],
+            switch: head[2],
+            jumps: head[3] != 0.0,
+            body: OnceLock::new(),
+            samples,
+        }
+    }
+
     /// The series, built from the samples on first use.
     fn body(&self) -> &Body {
         self.body.get_or_init(|| {
@@ -1001,16 +1011,7 @@ pub fn parse(text: &str) -> Result<Vec<Curve>, TableError> {
         if counts[2] < 2 || counts[3..].iter().any(|&n| n != nodes) {
             return Err(TableError(format!("μ = {}: contact length", head[0])));
         }
-        let (tabor, end_gap, switch) = (head[0], head[1], head[2]);
-        curves.push(Curve {
-            tabor,
-            z0: super::spacing(tabor),
-            end_gap,
-            switch,
-            jumps: head[3] != 0.0,
-            body: OnceLock::new(),
-            samples: samples.into(),
-        });
+        curves.push(Curve::unread(&head, samples.into()));
     }
     if curves.windows(2).any(|w| w[0].tabor >= w[1].tabor) {
         return Err(TableError("curves not in increasing μ".into()));
@@ -1051,15 +1052,10 @@ pub fn curves() -> &'static [Curve] {
             for _ in 0..6 {
                 end += body[end..].find('\n').map_or(body.len() - end, |n| n + 1);
             }
-            curves.push(Curve {
-                tabor: head[0],
-                z0: super::spacing(head[0]),
-                end_gap: head[1],
-                switch: head[2],
-                jumps: head[3] != 0.0,
-                body: OnceLock::new(),
-                samples: std::borrow::Cow::Borrowed(&body[..end]),
-            });
+            curves.push(Curve::unread(
+                &head,
+                std::borrow::Cow::Borrowed(&body[..end]),
+            ));
             rest = &body[end.saturating_sub(1)..];
         }
         curves
