@@ -148,7 +148,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             let (between, cusp) = INTERPOLATION_ERROR;
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge); beyond δ̂ = 50 a shifted Hertz tail stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (to δ̂ = 150) by {}",
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge); beyond δ̂ = 50 a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (to δ̂ = 150) by {}",
                 TAIL_ERROR
                     .iter()
                     .map(|(mu, at30, at100)| format!("{at30:.1e} / {at100:.1e} at μ = {mu}"))

@@ -565,7 +565,7 @@ fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
                     worst = worst.max((tail - solver).abs() / size);
                 }
             }
-            println!("μ = {mu}, ℓ = {ell}: the tail moves P̄ by {worst:.2e} (stated {stated:.1e})");
+            println!("μ = {mu}, ℓ = {ell}: the tail moves P̄ by {worst:.3e} (stated {stated:.1e})");
             assert!(worst <= 1.05 * stated && worst >= 0.5 * stated, "{worst:e}");
         }
     }
