@@ -3,7 +3,7 @@
 //!
 //! Usage: `lennard_jones_table [REFINEMENT] [MU ...]` — the Tabor parameters
 //! default to the table's grid (`REACH=R` in the environment: contact parts
-//! to δ̂ = R instead of 50); blocks go to stdout in increasing μ, progress
+//! to δ̂ = R instead of 50 or 4 ẑ0; `GRID=I..J`: the grid's curves I to J − 1); blocks go to stdout in increasing μ, progress
 //! to stderr. `lennard_jones_table check FILE [MU ...]` compares a table with
 //! the solver between its nodes.
 
@@ -33,8 +33,13 @@ fn grid() -> Vec<f64> {
         .collect()
 }
 
-/// δ̂_max: the contact part reaches 50 beyond contact (the tail takes over).
-const REACH: f64 = 50.0;
+/// δ̂_max: the contact part reaches 50 beyond contact, or four times ẑ0
+/// where that is further (μ < 0.0444: there the contact at δ̂ = 50 is still
+/// narrower than the attraction's reach, and the tail, which follows the
+/// gap a Hertz pressure squeezes, takes over only once it is not).
+fn reach_of(mu: f64) -> f64 {
+    50f64.max(4.0 * spacing(mu))
+}
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -51,6 +56,11 @@ fn main() {
     let refinement: f64 = args.first().map_or(1.0, |a| a.parse().expect("REFINEMENT"));
     let mus: Vec<f64> = if args.len() > 1 {
         args[1..].iter().map(|a| a.parse().expect("MU")).collect()
+    } else if let Ok(range) = std::env::var("GRID") {
+        // `GRID=I..J`: the grid's curves I to J − 1 (a block of the table
+        // written again, e.g. where the reach changed).
+        let (i, j) = range.split_once("..").expect("GRID=I..J");
+        grid()[i.parse().expect("I")..j.parse().expect("J")].to_vec()
     } else {
         grid()
     };
@@ -72,7 +82,7 @@ fn main() {
         let reach = std::env::var("REACH")
             .ok()
             .and_then(|r| r.parse().ok())
-            .unwrap_or(REACH);
+            .unwrap_or_else(|| reach_of(mu));
         let (samples, to) = with_shorter_reach(mu, reach, 0.93, 0.6 * reach, |to| {
             lennard_jones_loading(
                 mu,
@@ -156,7 +166,7 @@ fn check(path: &str, only: &[f64], plain: bool) {
         let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
         let mid_taus: Vec<f64> = taus.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
         let gaps: Vec<f64> = mid_taus.iter().map(|t| 1.0 / (t * t)).collect();
-        let breaks = contact_breaks(c.switch, c.max_interference());
+        let breaks = c.breaks().to_vec();
         let mut mids = Vec::new();
         for pair in breaks.windows(2) {
             let nodes = lobatto(pair[0], pair[1], PANEL_DEGREE);

@@ -17,9 +17,11 @@
 # errs most; three of them beside the cusp), at μ = 0.696, 0.735 and 0.745
 # beside the cusp and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
 # measures that interpolation against (about 8 minutes). `far` writes three
-# curves of the table (μ = 0.01, 0.105, 0.918) with contact parts to δ̂ = 150
-# instead of 50, which the same tests measure the table's tail beyond δ̂ = 50
-# against (about 7 minutes).
+# curves of the table (μ = 0.01, 0.105, 0.918) with contact parts twice or
+# three times as far as the table's (to δ̂ = 452 and 150), which the same
+# tests measure the table's tail against (about 12 minutes). The contact
+# parts reach δ̂ = 50, or 4 ẑ0 where that is further (μ < 0.0444: `GRID=0..33`
+# in the environment writes only those 33 curves, 25 minutes on two processes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --example lennard_jones_table
@@ -40,9 +42,14 @@ if [[ "${1:-}" == between ]]; then
     exit 0
 fi
 if [[ "${1:-}" == far ]]; then
-    # The table's first curve, its 51st and its 97th.
-    REACH=150 "$bin" 1 0.01 0.10527787805206623 0.9180942678743859 \
-        > tests/data/lennard_jones_far.txt.new
+    # The table's first curve (twice its reach of 4 ẑ0), its 51st and its
+    # 97th (three times the reach of 50).
+    {
+        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 1, extrapolated, contact parts to δ̂ = 452 (8 ẑ0) at μ = 0.01, to 150 at 0.105 and 0.918:"
+        echo "# written by scripts/lennard_jones_table.sh far; read by tests/all/lennard_jones_rough.rs"
+        REACH=452 "$bin" 1 0.01 | grep -v '^#'
+        REACH=150 "$bin" 1 0.10527787805206623 0.9180942678743859 | grep -v '^#'
+    } > tests/data/lennard_jones_far.txt.new
     mv tests/data/lennard_jones_far.txt.new tests/data/lennard_jones_far.txt
     exit 0
 fi

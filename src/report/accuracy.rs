@@ -9,7 +9,7 @@ use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
 use crate::model::lennard_jones::table::{
-    INTERPOLATION_ERROR, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR,
+    INTERPOLATION_ERROR, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR, TAIL_SCALES,
 };
 use crate::model::AttractionKind;
 
@@ -88,7 +88,14 @@ pub fn json(wp: &WorkPrecision) -> String {
             "interpolation_in_tabor_at_cusp": INTERPOLATION_ERROR.1,
             "tail": TAIL_ERROR
                 .iter()
-                .map(|(mu, at30, at100)| json!({"tabor": mu, "at_ell_30": at30, "at_ell_100": at100}))
+                .map(|row| {
+                    let mut m = serde_json::Map::new();
+                    m.insert("tabor".into(), json!(row[0]));
+                    for (ell, e) in TAIL_SCALES.iter().zip(&row[1..]) {
+                        m.insert(format!("at_ell_{ell}"), json!(e));
+                    }
+                    Value::Object(m)
+                })
                 .collect::<Vec<_>>(),
         },
         "scenes": wp.scenes,
@@ -148,13 +155,25 @@ pub fn text(wp: &WorkPrecision) -> String {
             let (between, cusp) = INTERPOLATION_ERROR;
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge); beyond δ̂ = 50 a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (to δ̂ = 150) by {}",
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 4 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to three times as far) by {}",
                 TAIL_ERROR
                     .iter()
-                    .map(|(mu, at30, at100)| format!("{at30:.1e} / {at100:.1e} at μ = {mu}"))
+                    .map(|row| format!(
+                        "{} at μ = {}",
+                        row[1..]
+                            .iter()
+                            .map(|&e| if e <= 1e-12 {
+                                "≤ 1e-12".to_string()
+                            } else {
+                                format!("{e:.1e}")
+                            })
+                            .collect::<Vec<_>>()
+                            .join(" / "),
+                        row[0]
+                    ))
                     .collect::<Vec<_>>()
                     .join(", ")
-                    + " (ℓ = 30 / 100)"
+                    + " (ℓ = 30 / 100 / 300 / 1000)"
             );
             let _ = writeln!(
                 out,

@@ -525,17 +525,18 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     }
 }
 
-/// Beyond the table's reach (δ̂ = 50) the tail (the shifted Hertz load) stands in:
-/// P̄ of a curve with that tail against P̄ of the same curve written by the
-/// solver to δ̂ = 150 (`tests/data/lennard_jones_far.txt`,
-/// `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
+/// Beyond the table's reach (δ̂ = 50, or 4 ẑ0 where that is further) the tail
+/// (the Hertz load shifted by the squeezed gap) stands in: P̄ of a curve with
+/// that tail against P̄ of the same curve written by the solver twice or three
+/// times as far (`tests/data/lennard_jones_far.txt`, to δ̂ = 452 at μ = 0.01
+/// and 150 at 0.105 and 0.918; `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
 /// ℓ = 30 and 100 (where summits that deep weigh), with and without
 /// plasticity, h = −1 … 4: within what `TAIL_ERROR` states (the reports
 /// quote it), and shrinking with μ.
 #[test]
 fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
     use wearopt::accuracy::lennard_jones::reference_load_of;
-    use wearopt::model::lennard_jones::table::{parse, TAIL_ERROR};
+    use wearopt::model::lennard_jones::table::{parse, TAIL_ERROR, TAIL_SCALES};
     use wearopt::model::Coefficients;
     let read = |name: &str| {
         let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
@@ -544,15 +545,16 @@ fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
     let far = read("lennard_jones_far.txt");
     let between = read("lennard_jones_between.txt");
     assert_eq!(far.len(), TAIL_ERROR.len());
-    for (curve, &(mu, at30, at100)) in far.iter().zip(&TAIL_ERROR) {
+    for (curve, row) in far.iter().zip(&TAIL_ERROR) {
+        let mu = row[0];
         assert!((curve.tabor / mu - 1.0).abs() < 1e-2);
         let near = curves()
             .iter()
             .chain(&between)
             .find(|c| (c.tabor / curve.tabor - 1.0).abs() < 1e-12)
             .expect("the same μ in the table or between it");
-        assert!(curve.max_interference() > 140.0 && near.max_interference() <= 50.0);
-        for (ell, stated) in [(30.0f64, at30), (100.0, at100)] {
+        assert!(curve.max_interference() >= 1.99 * near.max_interference());
+        for (&ell, &stated) in TAIL_SCALES.iter().zip(&row[1..]) {
             let z0 = spacing(curve.tabor) / ell;
             assert!(z0 <= 3.0);
             let mut worst = 0.0f64;
@@ -566,7 +568,11 @@ fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
                 }
             }
             println!("μ = {mu}, ℓ = {ell}: the tail moves P̄ by {worst:.3e} (stated {stated:.1e})");
-            assert!(worst <= 1.05 * stated && worst >= 0.5 * stated, "{worst:e}");
+            // (Where the tail is not reached, both are the same panels: rounding.)
+            assert!(
+                worst <= 1.05 * stated && (worst >= 0.5 * stated || stated <= 1e-12),
+                "{worst:e}"
+            );
         }
     }
 }

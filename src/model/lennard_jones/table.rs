@@ -286,9 +286,18 @@ enum Shift {
 
 impl Shift {
     fn at(&self, x: f64) -> f64 {
+        let mut none = f64::NAN;
+        self.at_from(x, &mut none)
+    }
+
+    /// C(x), its root-finding started from `guess` (a neighbour's, NaN for
+    /// none) and leaving its own there.
+    fn at_from(&self, x: f64, guess: &mut f64) -> f64 {
         match *self {
             Shift::Squeezed { z0, ratio, start } => {
-                z0 - squeezed_deficit(z0, x) * (1.0 + ratio * start / x)
+                let (deficit, t) = squeezed(z0, x, *guess);
+                *guess = t;
+                z0 - deficit * (1.0 + ratio * start / x)
             }
             Shift::Constant(c) => c,
         }
@@ -307,6 +316,13 @@ impl Shift {
 /// = δ̂ − D/(dδ̂/dD)². Far in, s → ẑ0 X^{−1/9}. Parametrised by the gap g_X
 /// and solved for δ̂ = `x` by Newton's method in ln g_X, bracketed.
 pub fn squeezed_deficit(z0: f64, x: f64) -> f64 {
+    squeezed(z0, x, f64::NAN).0
+}
+
+/// [`squeezed_deficit`] and the root t = ln g_X, Newton's method started
+/// from `guess` where it is in the bracket (a neighbouring node's root: the
+/// tail's panels take theirs in order, in a third of the time).
+fn squeezed(z0: f64, x: f64, guess: f64) -> (f64, f64) {
     let k = 9.0 * z0 / 16.0;
     // δ̂, dδ̂/dt and the deficit at t = ln g_X.
     let at = |t: f64| {
@@ -327,7 +343,11 @@ pub fn squeezed_deficit(z0: f64, x: f64) -> f64 {
     // δ̂ falls as g_X rises: at g_X = 1 it is 0, and where g_X⁻⁹ =
     // 4 (k√x + 1), D alone exceeds x.
     let (mut lo, mut hi) = (-(4.0 * (k * x.sqrt() + 1.0)).ln() / 9.0, 0.0f64);
-    let mut t = -(k * x.sqrt() + 1.0).ln() / 9.0;
+    let mut t = if guess > lo && guess < hi {
+        guess
+    } else {
+        -(k * x.sqrt() + 1.0).ln() / 9.0
+    };
     for _ in 0..100 {
         let (d, slope, _) = at(t);
         if d > x {
@@ -346,7 +366,7 @@ pub fn squeezed_deficit(z0: f64, x: f64) -> f64 {
             break;
         }
     }
-    at(t).2
+    (at(t).2, t)
 }
 
 /// One panel of the tail: its ends and the two series' coefficients.
@@ -398,11 +418,12 @@ impl Tail {
             sums: vec![0.0],
             panels: Vec::with_capacity(TAIL_PANELS),
         };
+        let mut guess = f64::NAN;
         for k in 0..TAIL_PANELS {
             let (lo, hi) = (tail.end(k), tail.end(k + 1));
             let values: Vec<f64> = lobatto(lo, hi, TAIL_DEGREE)
                 .iter()
-                .map(|&x| 1.5 * (x - law.at(x)).max(0.0).sqrt())
+                .map(|&x| 1.5 * (x - law.at_from(x, &mut guess)).max(0.0).sqrt())
                 .collect();
             let series = Chebyshev::interpolate(lo, hi, &values);
             let integral = series.integral_coefficients();
@@ -791,24 +812,29 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// (below). Not measured within μ = 0.70 … 0.725, where the generator's
 /// trace does not converge. (On the table of 67 curves: 4.0e-6 and 9.2e-6.)
 pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 2.7e-6);
-/// Beyond δ̂_max = 50 the tail (a Hertz load whose shift follows the squeezed
-/// gap, [`squeezed_deficit`], matched to the last panel: [`Curve::contact`])
-/// stands in for the solver; summits that deep weigh where ℓ = σ/ε is large
-/// (at h = 0 the window reaches δ̂ ≈ 10ℓ). P̄ of one curve with that tail
-/// against P̄ of the same curve written by the solver to δ̂ = 150 (`REACH=150`
-/// for the table's generator, its own tail beyond), relative to ∫|p| φ̄ over
-/// h = −1 … 4, with and without plasticity: (μ, at ℓ = 30, at ℓ = 100). At
-/// μ = 0.01 the contact at δ̂ = 50 is still narrower than the attraction's
-/// reach (ẑ0 = 56 there) and this, not the interpolation, is the law's
-/// largest error where ℓ ≥ 30; at μ ≥ 0.1 it is below the interpolation's.
-/// (With the shift held constant, until 2026-11-27: 3.1e-3 / 8.3e-3,
-/// 9.2e-5 / 4.9e-4, 1.0e-5 / 5.6e-5; growing as a fitted power of δ̂: 4.0e-4 /
-/// 2.3e-3, 6.1e-7 / 7.3e-6, 1.2e-7 / 1.2e-6.)
-pub const TAIL_ERROR: [(f64, f64, f64); 3] = [
-    (0.01, 6.7e-5, 1.1e-4),
-    (0.105, 1.7e-8, 1.9e-7),
-    (0.918, 8.2e-8, 2.9e-7),
+/// Beyond δ̂_max (50, or 4 ẑ0 where that is further: μ < 0.0444) the tail (a
+/// Hertz load whose shift follows the squeezed gap, [`squeezed_deficit`],
+/// matched to the last panel: [`Curve::contact`]) stands in for the solver;
+/// summits that deep weigh where ℓ = σ/ε is large (at h = 0 the window
+/// reaches δ̂ ≈ 10ℓ). P̄ of one curve with that tail against P̄ of the same
+/// curve written by the solver twice or three times as far (to δ̂ = 452 at
+/// μ = 0.01, 150 at 0.105 and 0.918: `scripts/lennard_jones_table.sh far`,
+/// its own tail beyond), relative to ∫|p| φ̄ over h = −1 … 4, with and
+/// without plasticity: [μ, then at each ℓ of [`TAIL_SCALES`]] (1e-12:
+/// rounding, the tail not reached). At μ = 0.01 and ℓ ≥ 300 this, not the
+/// interpolation, is the law's largest error; elsewhere it is below the
+/// interpolation's. (With the reach 50 everywhere, at μ = 0.01: 6.7e-5 /
+/// 1.1e-4 / 9.0e-5 / 4.7e-5; with the shift held constant, until 2026-11-27,
+/// at ℓ = 30 / 100: 3.1e-3 / 8.3e-3, 9.2e-5 / 4.9e-4, 1.0e-5 / 5.6e-5; growing
+/// as a fitted power of δ̂: 4.0e-4 / 2.3e-3, 6.1e-7 / 7.3e-6, 1.2e-7 /
+/// 1.2e-6.)
+pub const TAIL_ERROR: [[f64; 5]; 3] = [
+    [0.01, 1e-12, 2.4e-7, 2.0e-6, 1.8e-6],
+    [0.105, 1.7e-8, 1.9e-7, 1.7e-7, 1.4e-7],
+    [0.918, 8.2e-8, 2.9e-7, 2.6e-7, 1.7e-7],
 ];
+/// The ℓ = σ/ε of [`TAIL_ERROR`]'s columns.
+pub const TAIL_SCALES: [f64; 4] = [30.0, 100.0, 300.0, 1000.0];
 
 /// The approach part's degree (nodes τ_1 … τ_n; τ_0 = 0 is the far field).
 pub const APPROACH_DEGREE: usize = 32;
@@ -831,9 +857,16 @@ pub fn approach_gaps(end_gap: f64) -> Vec<f64> {
 /// μ = 0.01, where the repulsion sets in across it).
 pub const WIDEST_PANEL: f64 = 8.192;
 
+/// Where the contact panels double again: beyond δ̂ = 50 every curve's
+/// shift C_eff moves slowly (the repulsion has set in) and lies far below.
+pub const STEADY_FROM: f64 = 50.0;
+
 /// The contact panels' ends from δ̂_s to δ̂_max: δ̂_s + w for w doubling from
 /// [`FIRST_PANEL`] (each panel as far from δ̂_s as it is wide), then steps of
-/// [`WIDEST_PANEL`]; the last panel between one and two steps.
+/// [`WIDEST_PANEL`], doubling again once past [`STEADY_FROM`] (where a
+/// curve reaches further: each panel there is nearer its centre than the
+/// curve's branch point, C_eff ≤ 30, by more than twice its width); the
+/// last panel between one and two steps.
 pub fn contact_breaks(switch: f64, max_interference: f64) -> Vec<f64> {
     let mut breaks = vec![switch];
     let mut width = FIRST_PANEL;
@@ -842,9 +875,13 @@ pub fn contact_breaks(switch: f64, max_interference: f64) -> Vec<f64> {
         width *= 2.0;
     }
     let mut at = breaks[breaks.len() - 1];
-    while at + 2.0 * WIDEST_PANEL < max_interference {
-        at += WIDEST_PANEL;
+    let mut width = WIDEST_PANEL;
+    while at + 2.0 * width < max_interference {
+        at += width;
         breaks.push(at);
+        if at >= STEADY_FROM {
+            width *= 2.0;
+        }
     }
     breaks.push(max_interference);
     breaks
@@ -1254,7 +1291,7 @@ mod tests {
             assert!((s0 - s).abs() <= 1e-14 * s, "{s0} vs {s}");
             worst_rise = worst_rise.max((own / panel - 1.0).abs());
             assert!((s - 1.5 * (tail.start - c).sqrt()).abs() <= 1e-13 * s);
-            for d in [57.0, 140.0, 2e3, 9e5] {
+            for d in [1.14, 2.8, 40.0, 1.8e4].map(|f| f * tail.start) {
                 let (y0, y1) = (tail.start.sqrt(), f64::sqrt(d));
                 let n = 4000;
                 let mut sum = 0.0;
