@@ -264,6 +264,8 @@ struct Tail {
     shift: Shift,
     /// Where the panels double from: C_m (or 0 where C_m < 0).
     branch: f64,
+    /// C at the last panel's end, held beyond it.
+    held: f64,
     /// ∫ from δ̂_max to each panel end e_k = branch + (δ̂_max − branch) 2^k,
     /// k = 0 … TAIL_PANELS.
     sums: Vec<f64>,
@@ -415,6 +417,7 @@ impl Tail {
             load,
             shift: law,
             branch,
+            held: shift,
             sums: vec![0.0],
             panels: Vec::with_capacity(TAIL_PANELS),
         };
@@ -437,11 +440,12 @@ impl Tail {
                 integral,
             });
         }
+        tail.held = law.at_from(tail.end(TAIL_PANELS), &mut guess);
         tail
     }
 
     /// C(x).
-    #[inline]
+    #[cfg(test)]
     fn shift(&self, x: f64) -> f64 {
         self.shift.at(x)
     }
@@ -456,7 +460,7 @@ impl Tail {
         let last = self.end(TAIL_PANELS);
         if d >= last {
             // C held at its value at the last end: (x − C)^{3/2} on.
-            let c = self.shift(last);
+            let c = self.held;
             let (r0, r) = ((last - c).max(0.0).sqrt(), (d - c).max(0.0).sqrt());
             let rise = (d - c) * r - (last - c) * r0;
             return (self.load + self.sums[TAIL_PANELS] + rise, 1.5 * r);
@@ -864,9 +868,9 @@ pub const STEADY_FROM: f64 = 50.0;
 /// The contact panels' ends from δ̂_s to δ̂_max: δ̂_s + w for w doubling from
 /// [`FIRST_PANEL`] (each panel as far from δ̂_s as it is wide), then steps of
 /// [`WIDEST_PANEL`], doubling again once past [`STEADY_FROM`] (where a
-/// curve reaches further: each panel there is nearer its centre than the
-/// curve's branch point, C_eff ≤ 30, by more than twice its width); the
-/// last panel between one and two steps.
+/// curve reaches further: each panel's centre lies further from the curve's
+/// branch point, C_eff ≤ 30, than the panel is wide); the last panel
+/// between one and two steps.
 pub fn contact_breaks(switch: f64, max_interference: f64) -> Vec<f64> {
     let mut breaks = vec![switch];
     let mut width = FIRST_PANEL;
