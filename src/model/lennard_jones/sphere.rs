@@ -142,6 +142,11 @@ struct Mesh {
     /// contact: the first beyond twice the centre (kept by a bisection, so
     /// that every level of a nested family takes the same annulus).
     rigid_from: f64,
+    /// On a mesh in ρ = r/a that stretches with the contact radius a
+    /// ([`Mesh::stretching`]): C [u_j(1) − u_j(0)], the displacement at the
+    /// contact edge relative to the apex's of a unit traction on ring j (the
+    /// row that keeps the edge at ρ = 1). Empty on a fixed mesh.
+    edge_row: Vec<f64>,
 }
 
 impl Mesh {
@@ -168,6 +173,18 @@ impl Mesh {
         let growth = 0.08 / settings.refinement;
         let inside = 0.02 * centre / settings.refinement;
         let outer = 200.0 * (1.0 + centre + (2.0 * z0).sqrt());
+        Mesh::graded(centre, (finest, growth, inside), outer, halvings)
+    }
+
+    /// Rings from the apex out to `outer`, their width `finest` at `centre`,
+    /// growing by `growth` times the distance from it, no wider than `inside`
+    /// within it; each cut into 2^`halvings` equal parts.
+    fn graded(
+        centre: f64,
+        (finest, growth, inside): (f64, f64, f64),
+        outer: f64,
+        halvings: u32,
+    ) -> Mesh {
         let mut edges = vec![0.0];
         let mut r = 0.0_f64;
         while r < outer {
@@ -204,6 +221,67 @@ impl Mesh {
         )
     }
 
+    /// The mesh in ρ = r/a of a contact whose radius a the solution carries
+    /// as an unknown ([`Sphere::stretch`]): graded at ρ = 1, so that the
+    /// contact edge stays where the rings are finest however far it moves.
+    /// Its finest ring is the fixed mesh's at the largest radius `largest`
+    /// (finer in r below it), and it reaches the fixed mesh's outer radius
+    /// from the smallest, `smallest`.
+    fn stretching(z0: f64, settings: SphereSettings, smallest: f64, largest: f64) -> Mesh {
+        let feature = (2.4 * z0 * z0).min(0.5 * z0.sqrt());
+        let finest = feature / (16.0 * settings.refinement * largest);
+        let growth = 0.08 / settings.refinement;
+        let inside = 0.02 / settings.refinement;
+        let outer = 200.0 * (1.0 + smallest + (2.0 * z0).sqrt()) / smallest;
+        Mesh::graded(1.0, (finest, growth, inside), outer, 0).with_edge_row()
+    }
+
+    /// The mesh with its edge's row ([`Mesh::edge_row`]): a stretching mesh.
+    fn with_edge_row(mut self) -> Mesh {
+        let edges = &self.edges;
+        self.edge_row = (0..self.len())
+            .map(|j| KERNEL * (disk(edges[j + 1], 1.0) - disk(edges[j], 1.0)) - self.apex[j])
+            .collect();
+        self
+    }
+
+    /// A stretching mesh with every ring cut into 2^`halvings` equal parts
+    /// (the nested family [`Sphere::extrapolated`] reads).
+    fn cut(&self, halvings: u32) -> Mesh {
+        let parts = 1usize << halvings;
+        let mut cut = Vec::with_capacity(parts * self.len() + 1);
+        for w in self.edges.windows(2) {
+            cut.extend((0..parts).map(|k| w[0] + (w[1] - w[0]) * k as f64 / parts as f64));
+        }
+        cut.push(self.edges[self.len()]);
+        let fraction = 1.0 / parts as f64;
+        Mesh::from_edges(
+            cut,
+            self.centre,
+            self.finest * fraction,
+            self.growth * fraction,
+            self.rigid_from,
+        )
+        .with_edge_row()
+    }
+
+    /// The radii of a stretching mesh at contact radius `a` (the mesh in r),
+    /// without its influence matrix: what the load and the interference read.
+    fn stretched(&self, a: f64) -> Mesh {
+        let scaled = |v: &[f64]| v.iter().map(|x| x * a).collect::<Vec<f64>>();
+        Mesh {
+            edges: scaled(&self.edges),
+            mid: scaled(&self.mid),
+            relative: DMatrix::zeros(0, 0),
+            apex: scaled(&self.apex),
+            centre: a * self.centre,
+            finest: a * self.finest,
+            growth: self.growth,
+            rigid_from: a * self.rigid_from,
+            edge_row: Vec::new(),
+        }
+    }
+
     fn from_edges(edges: Vec<f64>, centre: f64, finest: f64, growth: f64, rigid_from: f64) -> Mesh {
         let n = edges.len() - 1;
         let mid: Vec<f64> = (0..n).map(|j| 0.5 * (edges[j] + edges[j + 1])).collect();
@@ -222,6 +300,7 @@ impl Mesh {
             finest,
             growth,
             rigid_from,
+            edge_row: Vec::new(),
         }
     }
 
@@ -229,28 +308,33 @@ impl Mesh {
         self.mid.len()
     }
 
-    /// Values at another mesh's mid-radii, interpolated onto this one's; beyond
-    /// the last point gaps (over ẑ0 = `z0`) follow the rigid shape, a tangent
-    /// (`z0` = 0) stays constant.
-    fn interpolate(&self, from: &Mesh, gaps: &DVector<f64>, z0: f64) -> DVector<f64> {
-        let m = from.len();
-        DVector::from_iterator(
-            self.len(),
-            self.mid.iter().map(|&r| {
-                let k = from.mid.partition_point(|&c| c < r);
-                if k == 0 {
-                    gaps[0]
-                } else if k >= m {
-                    let rigid = 0.5 * (r * r - from.mid[m - 1] * from.mid[m - 1]);
-                    gaps[m - 1] + if z0 > 0.0 { rigid / z0 } else { 0.0 }
-                } else {
-                    let (r0, r1) = (from.mid[k - 1], from.mid[k]);
-                    let t = (r - r0) / (r1 - r0);
-                    gaps[k - 1] + t * (gaps[k] - gaps[k - 1])
-                }
-            }),
-        )
+    /// Values at mid-radii `from` (another mesh's), interpolated onto this
+    /// one's; beyond the last point gaps (over ẑ0 = `z0`) follow the rigid
+    /// shape, a tangent (`z0` = 0) stays constant.
+    fn interpolate(&self, from: &[f64], gaps: &DVector<f64>, z0: f64) -> DVector<f64> {
+        interpolate(&self.mid, from, gaps, z0)
     }
+}
+
+/// [`Mesh::interpolate`] onto the radii `to`.
+fn interpolate(to: &[f64], from: &[f64], gaps: &DVector<f64>, z0: f64) -> DVector<f64> {
+    let m = from.len();
+    DVector::from_iterator(
+        to.len(),
+        to.iter().map(|&r| {
+            let k = from.partition_point(|&c| c < r);
+            if k == 0 {
+                gaps[0]
+            } else if k >= m {
+                let rigid = 0.5 * (r * r - from[m - 1] * from[m - 1]);
+                gaps[m - 1] + if z0 > 0.0 { rigid / z0 } else { 0.0 }
+            } else {
+                let (r0, r1) = (from[k - 1], from[k]);
+                let t = (r - r0) / (r1 - r0);
+                gaps[k - 1] + t * (gaps[k] - gaps[k - 1])
+            }
+        }),
+    )
 }
 
 /// A converged state: the mesh, the collocated gaps, the point they make and
@@ -262,8 +346,12 @@ pub struct SphereState {
     gaps: DVector<f64>,
     /// The apex gap over ẑ0.
     apex: f64,
-    /// Unit tangent (gaps, apex gap) in the path's metric, oriented along the
-    /// trace (towards the flat at the start).
+    /// On a stretching mesh (in ρ = r/a, [`Sphere::stretch`]): the contact
+    /// radius a, an unknown of the solution.
+    stretch: Option<f64>,
+    /// Unit tangent (gaps, apex gap and, on a stretching mesh, the contact
+    /// radius) in the path's metric, oriented along the trace (towards the
+    /// flat at the start).
     tangent: DVector<f64>,
     /// The equilibrium.
     pub point: SpherePoint,
@@ -272,8 +360,34 @@ pub struct SphereState {
 impl SphereState {
     /// How far the contact edge may move in one step and stay where the mesh
     /// is fine: the distance at which the spacing has doubled.
+    /// On a stretching mesh the edge stays where the rings are finest.
     pub fn edge_reach(&self) -> f64 {
+        if self.stretch.is_some() {
+            return f64::INFINITY;
+        }
         self.mesh.finest / self.mesh.growth
+    }
+
+    /// What a turn of δ̂ (a jump) is found in: the apex gap (Greenwood's
+    /// control), or on a stretching mesh the contact radius (there the apex
+    /// gap barely moves while the edge runs over many cohesive zones).
+    pub fn turn_hold(&self) -> Hold {
+        if self.stretches() {
+            Hold::ContactRadius
+        } else {
+            Hold::ApexGap
+        }
+    }
+
+    /// Whether the mesh stretches with the contact radius.
+    pub fn stretches(&self) -> bool {
+        self.stretch.is_some()
+    }
+
+    /// The mid-radii in r.
+    fn mids(&self) -> Vec<f64> {
+        let a = self.stretch.unwrap_or(1.0);
+        self.mesh.mid.iter().map(|r| r * a).collect()
     }
 
     /// Rings in the mesh.
@@ -289,6 +403,19 @@ pub enum Hold {
     ApexGap,
     /// The interference δ̂ (the contact branch: a loading table's nodes).
     Interference,
+    /// The contact radius â (on a stretching mesh, where it is an unknown:
+    /// the jump out of contact, where the apex gap barely moves while the
+    /// edge runs over many cohesive zones).
+    ContactRadius,
+}
+
+/// The nested family a point is extrapolated on.
+#[derive(Debug, Clone, Copy)]
+enum Family<'a> {
+    /// Fixed meshes graded at this contact radius ([`Mesh::nested`]).
+    Graded(f64),
+    /// This stretching mesh's cuts ([`Mesh::cut`]).
+    Stretching(&'a Mesh),
 }
 
 /// Why a solve failed (Newton's method did not converge from its guess).
@@ -309,11 +436,23 @@ pub struct Sphere {
     pub settings: SphereSettings,
 }
 
-/// ⟨a, b⟩ of the path's metric: the apex gaps' product plus the mean of the
-/// ring gaps' (all over ẑ0).
-fn dot(a: &DVector<f64>, b: &DVector<f64>) -> f64 {
-    let n = a.len() - 1;
-    a[n] * b[n] + a.rows(0, n).dot(&b.rows(0, n)) / n as f64
+/// ⟨a, b⟩ of the path's metric on `mesh`: the apex gaps' product plus the
+/// mean of the ring gaps' (all over ẑ0). On a stretching mesh the contact
+/// radii's product too, and the mean weighted by (1 + ρ²)⁻²: there a change
+/// of a moves the gaps of far rings as ρ², which would swamp the metric (and
+/// its rounding) with rings that carry no traction.
+fn dot(a: &DVector<f64>, b: &DVector<f64>, mesh: &Mesh) -> f64 {
+    let n = mesh.len();
+    if mesh.edge_row.is_empty() {
+        return a[n] * b[n] + a.rows(0, n).dot(&b.rows(0, n)) / n as f64;
+    }
+    let (mut sum, mut total) = (0.0, 0.0);
+    for (i, rho) in mesh.mid.iter().enumerate() {
+        let w = 1.0 / ((1.0 + rho * rho) * (1.0 + rho * rho));
+        sum += w * a[i] * b[i];
+        total += w;
+    }
+    a[n] * b[n] + a[n + 1] * b[n + 1] + sum / total
 }
 
 impl Sphere {
@@ -340,7 +479,7 @@ impl Sphere {
                 .chain([apex_gap]),
         );
         let mut rigid = DVector::from_element(n + 1, -1.0);
-        rigid /= dot(&rigid, &rigid).sqrt();
+        rigid /= dot(&rigid, &rigid, &mesh).sqrt();
         let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
         let x = self.correct(&mesh, x.clone(), &x, &apex_only, 0.0)?;
         self.state(mesh, x, &rigid)
@@ -380,6 +519,9 @@ impl Sphere {
     /// away from where its mesh is finest (None if it has not, or if the
     /// regraded solve fails).
     pub fn regrade(&self, state: &SphereState) -> Option<SphereState> {
+        if state.stretches() {
+            return None;
+        }
         let edge = state.point.contact_radius;
         let mesh = &state.mesh;
         if (edge - mesh.centre).abs() * mesh.growth <= 0.25 * mesh.finest {
@@ -388,12 +530,12 @@ impl Sphere {
         let fresh = Rc::new(Mesh::new(self.z0, edge, self.settings));
         let n = fresh.len();
         let x = fresh
-            .interpolate(mesh, &state.gaps, self.z0)
+            .interpolate(&mesh.mid, &state.gaps, self.z0)
             .insert_row(n, state.apex);
         let mut t = fresh
-            .interpolate(mesh, &state.tangent.rows(0, mesh.len()).into(), 0.0)
+            .interpolate(&mesh.mid, &state.tangent.rows(0, mesh.len()).into(), 0.0)
             .insert_row(n, state.tangent[mesh.len()]);
-        t /= dot(&t, &t).sqrt();
+        t /= dot(&t, &t, &fresh).sqrt();
         // The same apex gap (away from a fold of the path in it), else the
         // hyperplane normal to the path; either only if it is the same point.
         let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
@@ -415,9 +557,49 @@ impl Sphere {
         None
     }
 
+    /// `state` again on a mesh in ρ = r/a that stretches with its contact
+    /// radius a, which becomes an unknown held by the edge's equation (the
+    /// gap at ρ = 1 is 3^{1/6} Z0): the edge then stays where the rings are
+    /// finest however far it moves, and the trace's steps are no longer
+    /// bound to the cohesive zone's width (~ ẑ0², 7.7e-5 at μ = 100, against
+    /// a contact radius that grows to 1 and beyond). `largest` is the largest
+    /// contact radius the trace will reach (the mesh is as fine there as the
+    /// fixed mesh). None if the state has no contact or the solve fails.
+    pub fn stretch(&self, state: &SphereState, largest: f64) -> Option<SphereState> {
+        let a = state.point.contact_radius;
+        if state.stretches() || a <= 0.0 {
+            return None;
+        }
+        let mesh = Rc::new(Mesh::stretching(self.z0, self.settings, a, largest.max(a)));
+        let n = mesh.len();
+        let mids: Vec<f64> = mesh.mid.iter().map(|r| r * a).collect();
+        let old = state.mids();
+        let x = interpolate(&mids, &old, &state.gaps, self.z0)
+            .insert_row(n, state.apex)
+            .insert_row(n + 1, a);
+        // Oriented as the apex gap moves (it is monotone along the path).
+        let t = DVector::from_fn(n + 2, |i, _| {
+            if i == n {
+                state.tangent[old.len()].signum()
+            } else {
+                0.0
+            }
+        });
+        // The same apex gap; a follows from the edge's equation.
+        let apex_only = DVector::from_fn(n + 2, |i, _| if i == n { 1.0 } else { 0.0 });
+        let solved = self.correct(&mesh, x.clone(), &x, &apex_only, 0.0).ok()?;
+        let candidate = self.state(mesh, solved, &t).ok()?;
+        let (p, q) = (&state.point, &candidate.point);
+        let same = (p.interference - q.interference).abs() <= 1e-2 * (1.0 + p.interference.abs())
+            && (p.load - q.load).abs() <= 1e-2 * (1.0 + p.load.abs());
+        same.then_some(candidate)
+    }
+
     /// `state` solved again on the mesh graded at `centre` and cut
-    /// 2^`halvings` times ([`Mesh::nested`]), holding what `hold` names: the
-    /// apex gap or the interference, at `target` (near the state's). From
+    /// 2^`halvings` times ([`Mesh::nested`]; or, from a state on a
+    /// stretching mesh, that mesh cut so, [`Family::Stretching`]), holding
+    /// what `hold` names: the apex gap, the interference or (stretching) the
+    /// contact radius, at `target` (near the state's). From
     /// the state's gaps interpolated onto the finer mesh, close to the
     /// solution: Newton's method with the
     /// Jacobian factored once (refactored only where a step fails to
@@ -429,45 +611,69 @@ impl Sphere {
         &self,
         state: &SphereState,
         target: f64,
-        centre: f64,
-        halvings: u32,
+        (family, halvings): (Family<'_>, u32),
         hold: Hold,
         tangent: bool,
     ) -> Result<SphereState, NotConverged> {
         let z0 = self.z0;
-        let mesh = Rc::new(Mesh::nested(z0, centre, self.settings, halvings));
-        let old = &state.mesh;
-        let n = mesh.len();
-        let mut x = mesh
-            .interpolate(old, &state.gaps, z0)
-            .insert_row(n, state.apex);
-        let mut t = mesh
-            .interpolate(old, &state.tangent.rows(0, old.len()).into(), 0.0)
-            .insert_row(n, state.tangent[old.len()]);
-        t /= dot(&t, &t).sqrt();
         let failed = NotConverged {
             apex_gap: state.apex,
         };
+        // On a stretching mesh: the base's cut, interpolated in ρ, with the
+        // contact radius among the unknowns.
+        let (mesh, old) = match family {
+            Family::Stretching(base) => (Rc::new(base.cut(halvings)), state.mesh.mid.clone()),
+            Family::Graded(_) if hold == Hold::ContactRadius => return Err(failed),
+            Family::Graded(centre) => (
+                Rc::new(Mesh::nested(z0, centre, self.settings, halvings)),
+                state.mids(),
+            ),
+        };
+        let n = mesh.len();
+        let m = old.len();
+        let mut x = mesh
+            .interpolate(&old, &state.gaps, z0)
+            .insert_row(n, state.apex);
+        let mut t = mesh
+            .interpolate(&old, &state.tangent.rows(0, m).into(), 0.0)
+            .insert_row(n, state.tangent[m]);
+        if let Some(a) = state.stretch {
+            x = x.insert_row(n + 1, a);
+            t = t.insert_row(n + 1, state.tangent[m + 1]);
+        }
+        t /= dot(&t, &t, &mesh).sqrt();
+        let last = x.len() - 1;
+        let scale = |x: &DVector<f64>| if last > n { x[n + 1] } else { 1.0 };
         let residual = |x: &DVector<f64>| -> DVector<f64> {
             let (mut f, p) = self.gap_residual(&mesh, x);
-            f[n] = match hold {
+            f[last] = match hold {
                 Hold::ApexGap => x[n] - target,
+                Hold::ContactRadius => x[last] - target,
                 Hold::Interference => {
-                    (z0 * (1.0 - x[n]) + mesh.apex.iter().zip(&p).map(|(a, p)| a * p).sum::<f64>()
+                    (z0 * (1.0 - x[n])
+                        + scale(x) * mesh.apex.iter().zip(&p).map(|(a, p)| a * p).sum::<f64>()
                         - target)
                         / z0
                 }
             };
             f
         };
-        let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
+        let held = if hold == Hold::ContactRadius { last } else { n };
+        let border = DVector::from_fn(last + 1, |i, _| if i == held { 1.0 } else { 0.0 });
         let factor = |x: &DVector<f64>| {
-            let mut jacobian = self.bordered(&mesh, x, &apex_only);
+            let mut jacobian = self.bordered(&mesh, x, &border);
             if hold == Hold::Interference {
+                let a = scale(x);
+                let mut sum = 0.0;
                 for j in 0..n {
-                    jacobian[(n, j)] = mesh.apex[j] * traction(z0, z0 * x[j]).1;
+                    let (p, slope) = traction(z0, z0 * x[j]);
+                    jacobian[(last, j)] = a * mesh.apex[j] * slope;
+                    sum += mesh.apex[j] * p;
                 }
-                jacobian[(n, n)] = -1.0;
+                jacobian[(last, n)] = -1.0;
+                if last > n {
+                    jacobian[(last, n + 1)] = sum / z0;
+                }
             }
             jacobian.lu()
         };
@@ -498,7 +704,9 @@ impl Sphere {
                 continue;
             }
             let trial = &x - &step;
-            if !trial.rows(0, n).iter().all(|&u| u > 0.0 && u.is_finite()) {
+            if !(trial.rows(0, n).iter().all(|&u| u > 0.0 && u.is_finite())
+                && trial.iter().skip(n + 1).all(|&a| a > 0.0))
+            {
                 return Err(failed);
             }
             x = trial;
@@ -511,7 +719,7 @@ impl Sphere {
         }
         let norm = (0..n)
             .map(|i| (f[i] / (1.0 + x[i].abs())).abs())
-            .fold(f[n].abs(), f64::max);
+            .fold((n..=last).map(|k| f[k].abs()).fold(0.0, f64::max), f64::max);
         if !(converged || norm <= 1e-11 || norm <= 1e3 * self.round_off(&mesh, &x)) {
             return Err(failed);
         }
@@ -530,7 +738,7 @@ impl Sphere {
         &self,
         state: &SphereState,
     ) -> Result<(SpherePoint, f64), NotConverged> {
-        self.extrapolated_extremum(state, Hold::ApexGap, |p| p.interference)
+        self.extrapolated_extremum(state, state.turn_hold(), |p| p.interference)
     }
 
     /// The stationary point of `quantity` along the path near the trace's
@@ -551,6 +759,7 @@ impl Sphere {
         let (mut x, step) = match hold {
             Hold::ApexGap => (state.apex, 1e-4 * state.apex),
             Hold::Interference => (state.point.interference, 1e-3),
+            Hold::ContactRadius => (state.point.contact_radius, 1e-3),
         };
         for _ in 0..4 {
             let [lo, mid, hi] = [x - step, x, x + step].map(|at| {
@@ -573,11 +782,27 @@ impl Sphere {
 
     /// The gaps' equations F_i = u_i − G − c_i²/(2ẑ0) − (M p̃)_i/ẑ0 at `x` =
     /// (u, G) (the last entry, the border's, left 0), and the tractions p̃.
+    ///
+    /// On a stretching mesh (`x` = (u, G, a)) the radii are a ρ and the
+    /// influences a M̂: F_i = u_i − G − a²ρ_i²/(2ẑ0) − a (M̂ p̃)_i/ẑ0, and the
+    /// edge's row F_n = 3^{1/6} − G − a²/(2ẑ0) − a (m̂·p̃)/ẑ0 puts the tension
+    /// gap at ρ = 1 (the last entry left 0).
     fn gap_residual(&self, mesh: &Mesh, x: &DVector<f64>) -> (DVector<f64>, DVector<f64>) {
         let z0 = self.z0;
         let n = mesh.len();
         let p = DVector::from_iterator(n, x.rows(0, n).iter().map(|&u| traction(z0, z0 * u).0));
         let mp = &mesh.relative * &p;
+        if !mesh.edge_row.is_empty() {
+            let a = x[n + 1];
+            let mut f = DVector::zeros(n + 2);
+            for i in 0..n {
+                let rho = mesh.mid[i];
+                f[i] = x[i] - x[n] - 0.5 * a * a * rho * rho / z0 - a * mp[i] / z0;
+            }
+            let edge: f64 = mesh.edge_row.iter().zip(p.iter()).map(|(m, p)| m * p).sum();
+            f[n] = TENSION_GAP - x[n] - 0.5 * a * a / z0 - a * edge / z0;
+            return (f, p);
+        }
         let mut f = DVector::zeros(n + 1);
         for i in 0..n {
             f[i] = x[i] - x[n] - 0.5 * mesh.mid[i] * mesh.mid[i] / z0 - mp[i] / z0;
@@ -605,6 +830,7 @@ impl Sphere {
         let target = match hold {
             Hold::ApexGap => state.apex,
             Hold::Interference => state.point.interference,
+            Hold::ContactRadius => state.point.contact_radius,
         };
         self.extrapolated_at(state, target, hold)
     }
@@ -618,9 +844,15 @@ impl Sphere {
         hold: Hold,
     ) -> Result<(SpherePoint, f64), NotConverged> {
         let centre = state.point.contact_radius;
-        let l0 = self.resolved(state, target, centre, 0, hold, false)?;
-        let l1 = self.resolved(&l0, target, centre, 1, hold, false)?;
-        let l2 = self.resolved(&l1, target, centre, 2, hold, true)?;
+        let base = state.mesh.clone();
+        let family = if state.stretches() {
+            Family::Stretching(&base)
+        } else {
+            Family::Graded(centre)
+        };
+        let l0 = self.resolved(state, target, (family, 0), hold, false)?;
+        let l1 = self.resolved(&l0, target, (family, 1), hold, false)?;
+        let l2 = self.resolved(&l1, target, (family, 2), hold, true)?;
         let levels = [l0.point, l1.point, l2.point];
         let mut change = 0.0f64;
         let mut value = |f: fn(&SpherePoint) -> f64, estimate: bool| {
@@ -658,15 +890,16 @@ impl Sphere {
         let failed = NotConverged { apex_gap: x[n] };
         let residual = |x: &DVector<f64>| -> DVector<f64> {
             let (mut f, _) = self.gap_residual(mesh, x);
-            f[n] = dot(&(x - x0), t) - s;
+            f[x.len() - 1] = dot(&(x - x0), t, mesh) - s;
             f
         };
         // Each row's residual against the gap it balances (the outer rings'
         // gaps are large, and their round-off with them).
+        let last = x.len() - 1;
         let size = |f: &DVector<f64>, x: &DVector<f64>| {
             (0..n)
                 .map(|i| (f[i] / (1.0 + x[i].abs())).abs())
-                .fold(f[n].abs(), f64::max)
+                .fold((n..=last).map(|k| f[k].abs()).fold(0.0, f64::max), f64::max)
         };
         let mut f = residual(&x);
         let mut norm = size(&f, &x);
@@ -679,7 +912,9 @@ impl Sphere {
             let mut accepted = false;
             for _ in 0..30 {
                 let trial = &x - &step * damping;
-                if trial.rows(0, n).iter().all(|&u| u > 0.0 && u.is_finite()) {
+                if trial.rows(0, n).iter().all(|&u| u > 0.0 && u.is_finite())
+                    && trial.iter().skip(n + 1).all(|&a| a > 0.0)
+                {
                     let f_trial = residual(&trial);
                     let norm_trial = size(&f_trial, &trial);
                     if norm_trial.is_finite() && (norm_trial < norm || norm_trial <= 1e-15) {
@@ -723,15 +958,24 @@ impl Sphere {
                 8.0 / (3.0 * z0) * (v3 * v3 * v3 + v3)
             }),
         );
-        let spread = mesh.relative.abs() * magnitude;
+        let mut spread = mesh.relative.abs() * magnitude;
+        if !mesh.edge_row.is_empty() {
+            spread *= x[n + 1];
+        }
         (0..n)
             .map(|i| f64::EPSILON * (x[i].abs() + x[n].abs() + spread[i] / z0) / (1.0 + x[i].abs()))
             .fold(0.0, f64::max)
     }
 
     /// The Jacobian of (F, arclength) in (u, G): [I − M diag(p̃'), −1; t_u/n, t_G].
+    ///
+    /// On a stretching mesh, in (u, G, a): [I − a M̂ diag(p̃'), −1, ∂F/∂a; the
+    /// edge's row; t_u/n, t_G, t_a].
     fn bordered(&self, mesh: &Mesh, x: &DVector<f64>, t: &DVector<f64>) -> DMatrix<f64> {
         let n = mesh.len();
+        if !mesh.edge_row.is_empty() {
+            return self.stretching_bordered(mesh, x, t);
+        }
         let mut jacobian = DMatrix::zeros(n + 1, n + 1);
         jacobian.view_mut((0, 0), (n, n)).copy_from(&mesh.relative);
         for j in 0..n {
@@ -745,6 +989,37 @@ impl Sphere {
         jacobian
     }
 
+    /// [`Sphere::bordered`] on a stretching mesh.
+    fn stretching_bordered(&self, mesh: &Mesh, x: &DVector<f64>, t: &DVector<f64>) -> DMatrix<f64> {
+        let z0 = self.z0;
+        let n = mesh.len();
+        let a = x[n + 1];
+        let (p, slope): (Vec<f64>, Vec<f64>) =
+            x.rows(0, n).iter().map(|&u| traction(z0, z0 * u)).unzip();
+        let p = DVector::from_vec(p);
+        let mp = &mesh.relative * &p;
+        // The arclength row: the gradient of ⟨x, t⟩ ([`dot`]'s weights).
+        let weight = |rho: f64| 1.0 / ((1.0 + rho * rho) * (1.0 + rho * rho));
+        let total: f64 = mesh.mid.iter().map(|&rho| weight(rho)).sum();
+        let mut jacobian = DMatrix::zeros(n + 2, n + 2);
+        jacobian.view_mut((0, 0), (n, n)).copy_from(&mesh.relative);
+        for j in 0..n {
+            jacobian.view_mut((0, j), (n, 1)).scale_mut(-a * slope[j]);
+            jacobian[(j, j)] += 1.0;
+            jacobian[(j, n)] = -1.0;
+            let rho = mesh.mid[j];
+            jacobian[(j, n + 1)] = -a * rho * rho / z0 - mp[j] / z0;
+            jacobian[(n, j)] = -a * mesh.edge_row[j] * slope[j];
+            jacobian[(n + 1, j)] = weight(rho) * t[j] / total;
+        }
+        let edge: f64 = mesh.edge_row.iter().zip(p.iter()).map(|(m, p)| m * p).sum();
+        jacobian[(n, n)] = -1.0;
+        jacobian[(n, n + 1)] = -a / z0 - edge / z0;
+        jacobian[(n + 1, n)] = t[n];
+        jacobian[(n + 1, n + 1)] = t[n + 1];
+        jacobian
+    }
+
     /// The point a converged solution makes, and the path's tangent there
     /// (oriented along `previous`, which also borders the tangent's system).
     fn state(
@@ -755,16 +1030,16 @@ impl Sphere {
     ) -> Result<SphereState, NotConverged> {
         let n = mesh.len();
         let apex = x[n];
-        let mut rhs = DVector::zeros(n + 1);
-        rhs[n] = 1.0;
+        let mut rhs = DVector::zeros(x.len());
+        rhs[x.len() - 1] = 1.0;
         let tangent = self
             .bordered(&mesh, &x, previous)
             .lu()
             .solve(&rhs)
             .ok_or(NotConverged { apex_gap: apex })?;
-        let norm = dot(&tangent, &tangent).sqrt();
+        let norm = dot(&tangent, &tangent, &mesh).sqrt();
         let mut tangent = tangent / norm;
-        if dot(&tangent, previous) < 0.0 {
+        if dot(&tangent, previous, &mesh) < 0.0 {
             tangent = -tangent;
         }
         Ok(self.measured(mesh, x, tangent))
@@ -772,11 +1047,59 @@ impl Sphere {
 
     /// The state of the solution `x` on `mesh` with the path's tangent
     /// `tangent` (the slopes are along it).
+    ///
+    /// On a stretching mesh the contact radius is a, and the slopes are
+    /// central differences along the tangent (the radii move with a).
     fn measured(&self, mesh: Rc<Mesh>, x: DVector<f64>, tangent: DVector<f64>) -> SphereState {
-        let z0 = self.z0;
         let n = mesh.len();
         let apex = x[n];
         let gaps: DVector<f64> = x.rows(0, n).into();
+        let (stretch, point) = if mesh.edge_row.is_empty() {
+            (None, self.point(&mesh, &gaps, apex, &tangent, None))
+        } else {
+            let at = |h: f64| {
+                let y = &x + &tangent * h;
+                let a = y[n + 1];
+                let flat = DVector::zeros(n + 1);
+                self.point(
+                    &mesh.stretched(a),
+                    &y.rows(0, n).into(),
+                    y[n],
+                    &flat,
+                    Some(a),
+                )
+            };
+            let h = 1e-5;
+            let (ahead, behind) = (at(h), at(-h));
+            let point = SpherePoint {
+                interference_slope: (ahead.interference - behind.interference) / (2.0 * h),
+                load_slope: (ahead.load - behind.load) / (2.0 * h),
+                ..at(0.0)
+            };
+            (Some(x[n + 1]), point)
+        };
+        SphereState {
+            mesh,
+            gaps,
+            apex,
+            stretch,
+            tangent,
+            point,
+        }
+    }
+
+    /// The equilibrium the gaps and the apex gap make on `mesh` (in r), its
+    /// slopes along `tangent`, its contact radius `edge` where that is known.
+    fn point(
+        &self,
+        mesh: &Mesh,
+        gaps: &DVector<f64>,
+        apex: f64,
+        tangent: &DVector<f64>,
+        edge: Option<f64>,
+    ) -> SpherePoint {
+        let z0 = self.z0;
+        let n = mesh.len();
         let (p, dp): (Vec<f64>, Vec<f64>) = gaps.iter().map(|&u| traction(z0, z0 * u)).unzip();
         let edges = &mesh.edges;
         let last = n - 1;
@@ -835,6 +1158,7 @@ impl Sphere {
             }
         };
         let contact_radius = match (0..=n).rev().find(|&i| at(i).1 <= threshold) {
+            _ if edge.is_some() => edge.unwrap_or_default(),
             None => 0.0,
             Some(i) if i == n => mesh.mid[last],
             Some(i) => {
@@ -883,7 +1207,7 @@ impl Sphere {
                     .sum::<f64>()
             })
             .sum::<f64>();
-        let point = SpherePoint {
+        SpherePoint {
             apex_gap: apex,
             interference,
             load,
@@ -891,13 +1215,6 @@ impl Sphere {
             inner_load,
             interference_slope,
             load_slope,
-        };
-        SphereState {
-            mesh,
-            gaps,
-            apex,
-            tangent,
-            point,
         }
     }
 }
@@ -907,7 +1224,7 @@ impl SphereState {
     /// one mesh; 1 when the meshes differ).
     pub fn turn(&self, other: &SphereState) -> f64 {
         if Rc::ptr_eq(&self.mesh, &other.mesh) {
-            dot(&self.tangent, &other.tangent)
+            dot(&self.tangent, &other.tangent, &self.mesh)
         } else {
             1.0
         }
@@ -916,7 +1233,11 @@ impl SphereState {
     /// (gaps, apex gap), over ẑ0.
     fn unknowns(&self) -> DVector<f64> {
         let n = self.mesh.len();
-        self.gaps.clone().insert_row(n, self.apex)
+        let x = self.gaps.clone().insert_row(n, self.apex);
+        match self.stretch {
+            Some(a) => x.insert_row(n + 1, a),
+            None => x,
+        }
     }
 }
 
