@@ -119,6 +119,22 @@ fn limits_outside_the_solved_range() {
     assert!(note.is_none());
 }
 
+/// A curve asked for only up to an interference before the jump into contact
+/// is still traced through the contact branch's load minimum: above μ ≈ 4 the
+/// approach branch turns four times, and between its turns δ̂ and P̂ both rise
+/// before any contact (at μ = 7, `--to -0.5`, the trace stopped there and
+/// reported a pull-off of −0.149 and a jump out at −0.145, for −1.5159 and
+/// −0.8439; JKR's are −1.5 and −5/6). At −0.5 the curve has three branches.
+#[test]
+fn a_short_curve_still_finds_the_pull_off() {
+    let c = lennard_jones_curve(7.0, -3.0, -0.5, 4, CONVERGED_MARKS).unwrap();
+    assert!((c.pull_off.load + 1.5159).abs() < 1e-3, "{:?}", c.pull_off);
+    let out = c.jump_out.expect("S-shaped");
+    assert!((out.load + 0.8439).abs() < 1e-3, "{out:?}");
+    let at_end = c.points.iter().filter(|p| p.interference == -0.5).count();
+    assert_eq!(at_end, 3, "{:?}", c.points);
+}
+
 /// The JKR limit's pull-off error at the upper end of the solved range is
 /// what `LIMIT_PULL_OFF_ERROR` states.
 #[test]
