@@ -7,7 +7,8 @@ use crate::model::asperity_curve::{self, AsperityCurve, LimitNote};
 use super::{AppError, OptionName};
 
 pub use crate::model::asperity_curve::{
-    Branch, CurveLaw, CurveMark, CurvePoint, Limit, CURVE_ERROR, LIMIT_PULL_OFF_ERROR, SOLVED_TABOR,
+    Branch, CurveLaw, CurveMark, CurvePoint, Limit, CURVE_ERROR, INDEPENDENTLY_CHECKED,
+    LIMIT_PULL_OFF_ERROR, SOLVED_TABOR,
 };
 
 /// The most interferences one run evaluates.

@@ -10,6 +10,7 @@ use super::Format;
 use super::{number, sig};
 use crate::app::asperity::{
     AsperityDocument, Branch, CurveLaw, CurveMark, CurvePoint, Limit, CURVE_ERROR,
+    INDEPENDENTLY_CHECKED,
 };
 
 /// The formats `wearopt asperity` writes (the first is the default).
@@ -61,8 +62,16 @@ fn accuracy_words(doc: &AsperityDocument) -> Option<String> {
         return None;
     }
     let (marks, out, within) = CURVE_ERROR;
+    let (lo, hi) = INDEPENDENTLY_CHECKED;
+    let checked = if (lo..=hi).contains(&doc.options.tabor) {
+        format!("within {marks:.0e} of an independent solution")
+    } else {
+        format!(
+            "within {marks:.0e} of an independent solution where one was computed, μ = {lo} … {hi}; not at this μ"
+        )
+    };
     Some(format!(
-        "the pull-off and the jumps are converged (solved again on three nested meshes and extrapolated: within {marks:.0e} of an independent solution); the rows are the solver's default mesh, within {out:.0e} out of contact and {within:.0e} in it"
+        "the pull-off and the jumps are converged (solved again on three nested meshes and extrapolated: {checked}); the rows are the solver's default mesh, within {out:.0e} out of contact and {within:.0e} in it"
     ))
 }
 
@@ -161,10 +170,16 @@ pub fn json(doc: &AsperityDocument) -> String {
         "jump_out": mark_json(&c.and_then(|c| c.jump_out)),
         "accuracy": solved(doc).then(|| {
             let (marks, out, within) = CURVE_ERROR;
+            let (lo, hi) = INDEPENDENTLY_CHECKED;
             json!({
                 "marks": marks,
                 "points_out_of_contact": out,
                 "points_in_contact": within,
+                "independent_solution": {
+                    "tabor_from": lo,
+                    "tabor_to": hi,
+                    "covers_this_tabor": (lo..=hi).contains(&doc.options.tabor),
+                },
             })
         }),
     }))

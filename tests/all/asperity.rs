@@ -446,4 +446,16 @@ fn cli_text_states_the_accuracy() {
     assert_eq!(j["accuracy"]["marks"], 2e-5);
     assert_eq!(j["accuracy"]["points_out_of_contact"], 1e-3);
     assert_eq!(j["accuracy"]["points_in_contact"], 5e-2);
+    assert_eq!(j["accuracy"]["independent_solution"]["tabor_to"], 10.0);
+    assert_eq!(
+        j["accuracy"]["independent_solution"]["covers_this_tabor"],
+        true
+    );
+    // Below (or above) where the independent solution was computed the text
+    // does not claim it was.
+    let outside = text(&[&base[..], &["--tabor", "0.02"]].concat());
+    assert!(
+        outside.contains("where one was computed, μ = 0.05 … 10; not at this μ"),
+        "{outside}"
+    );
 }
