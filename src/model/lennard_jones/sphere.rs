@@ -205,15 +205,9 @@ impl Mesh {
         let rigid_from = edges[edges
             .partition_point(|&b| b < 2.0 * centre)
             .min(edges.len() - 2)];
-        let parts = 1usize << halvings;
-        let mut cut = Vec::with_capacity(parts * (edges.len() - 1) + 1);
-        for w in edges.windows(2) {
-            cut.extend((0..parts).map(|k| w[0] + (w[1] - w[0]) * k as f64 / parts as f64));
-        }
-        cut.push(edges[edges.len() - 1]);
-        let fraction = 1.0 / parts as f64;
+        let fraction = 1.0 / (1usize << halvings) as f64;
         Mesh::from_edges(
-            cut,
+            cut_edges(&edges, halvings),
             centre,
             finest * fraction,
             growth * fraction,
@@ -248,15 +242,9 @@ impl Mesh {
     /// A stretching mesh with every ring cut into 2^`halvings` equal parts
     /// (the nested family [`Sphere::extrapolated`] reads).
     fn cut(&self, halvings: u32) -> Mesh {
-        let parts = 1usize << halvings;
-        let mut cut = Vec::with_capacity(parts * self.len() + 1);
-        for w in self.edges.windows(2) {
-            cut.extend((0..parts).map(|k| w[0] + (w[1] - w[0]) * k as f64 / parts as f64));
-        }
-        cut.push(self.edges[self.len()]);
-        let fraction = 1.0 / parts as f64;
+        let fraction = 1.0 / (1usize << halvings) as f64;
         Mesh::from_edges(
-            cut,
+            cut_edges(&self.edges, halvings),
             self.centre,
             self.finest * fraction,
             self.growth * fraction,
@@ -314,6 +302,29 @@ impl Mesh {
     fn interpolate(&self, from: &[f64], gaps: &DVector<f64>, z0: f64) -> DVector<f64> {
         interpolate(&self.mid, from, gaps, z0)
     }
+}
+
+/// Ring edges with every ring cut into 2^`halvings` equal parts.
+fn cut_edges(edges: &[f64], halvings: u32) -> Vec<f64> {
+    let parts = 1usize << halvings;
+    let mut cut = Vec::with_capacity(parts * (edges.len() - 1) + 1);
+    for w in edges.windows(2) {
+        cut.extend((0..parts).map(|k| w[0] + (w[1] - w[0]) * k as f64 / parts as f64));
+    }
+    cut.push(edges[edges.len() - 1]);
+    cut
+}
+
+/// The weight of a ring at ρ in a stretching mesh's path metric ([`dot`]).
+fn metric_weight(rho: f64) -> f64 {
+    1.0 / ((1.0 + rho * rho) * (1.0 + rho * rho))
+}
+
+/// Whether a state solved again elsewhere is the same point: δ̂ and P̂ within
+/// 1 % (of 1 + their size).
+fn same_point(p: &SpherePoint, q: &SpherePoint) -> bool {
+    (p.interference - q.interference).abs() <= 1e-2 * (1.0 + p.interference.abs())
+        && (p.load - q.load).abs() <= 1e-2 * (1.0 + p.load.abs())
 }
 
 /// [`Mesh::interpolate`] onto the radii `to`.
@@ -448,7 +459,7 @@ fn dot(a: &DVector<f64>, b: &DVector<f64>, mesh: &Mesh) -> f64 {
     }
     let (mut sum, mut total) = (0.0, 0.0);
     for (i, rho) in mesh.mid.iter().enumerate() {
-        let w = 1.0 / ((1.0 + rho * rho) * (1.0 + rho * rho));
+        let w = metric_weight(*rho);
         sum += w * a[i] * b[i];
         total += w;
     }
@@ -539,11 +550,7 @@ impl Sphere {
         // The same apex gap (away from a fold of the path in it), else the
         // hyperplane normal to the path; either only if it is the same point.
         let apex_only = DVector::from_fn(n + 1, |i, _| if i == n { 1.0 } else { 0.0 });
-        let same = |candidate: &SphereState| {
-            let (p, q) = (&state.point, &candidate.point);
-            (p.interference - q.interference).abs() <= 1e-2 * (1.0 + p.interference.abs())
-                && (p.load - q.load).abs() <= 1e-2 * (1.0 + p.load.abs())
-        };
+        let same = |candidate: &SphereState| same_point(&state.point, &candidate.point);
         for constraint in [&apex_only, &t] {
             let Ok(solved) = self.correct(&fresh, x.clone(), &x, constraint, 0.0) else {
                 continue;
@@ -589,10 +596,7 @@ impl Sphere {
         let apex_only = DVector::from_fn(n + 2, |i, _| if i == n { 1.0 } else { 0.0 });
         let solved = self.correct(&mesh, x.clone(), &x, &apex_only, 0.0).ok()?;
         let candidate = self.state(mesh, solved, &t).ok()?;
-        let (p, q) = (&state.point, &candidate.point);
-        let same = (p.interference - q.interference).abs() <= 1e-2 * (1.0 + p.interference.abs())
-            && (p.load - q.load).abs() <= 1e-2 * (1.0 + p.load.abs());
-        same.then_some(candidate)
+        same_point(&state.point, &candidate.point).then_some(candidate)
     }
 
     /// `state` solved again on the mesh graded at `centre` and cut
@@ -999,8 +1003,7 @@ impl Sphere {
         let p = DVector::from_vec(p);
         let mp = &mesh.relative * &p;
         // The arclength row: the gradient of ⟨x, t⟩ ([`dot`]'s weights).
-        let weight = |rho: f64| 1.0 / ((1.0 + rho * rho) * (1.0 + rho * rho));
-        let total: f64 = mesh.mid.iter().map(|&rho| weight(rho)).sum();
+        let total: f64 = mesh.mid.iter().map(|&rho| metric_weight(rho)).sum();
         let mut jacobian = DMatrix::zeros(n + 2, n + 2);
         jacobian.view_mut((0, 0), (n, n)).copy_from(&mesh.relative);
         for j in 0..n {
@@ -1010,7 +1013,7 @@ impl Sphere {
             let rho = mesh.mid[j];
             jacobian[(j, n + 1)] = -a * rho * rho / z0 - mp[j] / z0;
             jacobian[(n, j)] = -a * mesh.edge_row[j] * slope[j];
-            jacobian[(n + 1, j)] = weight(rho) * t[j] / total;
+            jacobian[(n + 1, j)] = metric_weight(rho) * t[j] / total;
         }
         let edge: f64 = mesh.edge_row.iter().zip(p.iter()).map(|(m, p)| m * p).sum();
         jacobian[(n, n)] = -1.0;
