@@ -9,7 +9,7 @@
 
 use wearopt::model::asperity_curve::{lennard_jones_loading, CurveError};
 use wearopt::model::lennard_jones::table::{
-    approach_gaps, contact_breaks, contact_nodes, write_block,
+    approach_gaps, contact_breaks, contact_nodes, write_block, Header,
 };
 use wearopt::model::lennard_jones::{spacing, SphereSettings};
 
@@ -20,8 +20,14 @@ use wearopt::model::lennard_jones::{spacing, SphereSettings};
 /// loading trace does not converge (nor at 0.700, 0.703, 0.7241 or 0.7253,
 /// where the S-shape's two turns lie within a few thousandths of δ̂; it does
 /// at 0.696 and from 0.7275), and the curve at μ = 0.7275 stands in for it.
+/// Then on from 5 in steps of 20^{1/12} (9.2 per decade) to 5√20 = 22.4:
+/// there the curves differ from JKR's by a few per cent or less and vary
+/// with 1/μ smoothly enough for a coarser grid (`tests/all/lennard_jones_rough.rs`,
+/// against curves between them); they cost more to write (4 minutes at
+/// μ = 6.4, 15 at 22), and beyond 22.4 JKR stands in.
 fn grid() -> Vec<f64> {
     let (lo, hi, steps) = (0.01f64, 5.0f64, 132);
+    let (top, top_steps) = (5.0 * 20f64.sqrt(), 6);
     (0..=steps)
         .map(|i| {
             if i == 91 {
@@ -30,6 +36,7 @@ fn grid() -> Vec<f64> {
                 lo * (hi / lo).powf(i as f64 / steps as f64)
             }
         })
+        .chain((1..=top_steps).map(|i| hi * (top / hi).powf(i as f64 / top_steps as f64)))
         .collect()
 }
 
@@ -109,16 +116,27 @@ fn main() {
         print!(
             "{}",
             write_block(
-                (mu, samples.end_gap, samples.switch, samples.jumps),
+                Header {
+                    tabor: mu,
+                    end_gap: samples.end_gap,
+                    switch: samples.switch,
+                    jumps: samples.jumps,
+                    // One sphere's pull-off, where the loading curve leaves
+                    // it out (on the retraction neck below the switch).
+                    neck_pull_off: (samples.pull_off.interference < samples.switch)
+                        .then_some((samples.pull_off.interference, samples.pull_off.load)),
+                },
                 (&loads, &openings),
                 &breaks,
                 [&contact, &radius, &inner]
             )
         );
         eprintln!(
-            "μ = {mu:.5}: switch {:.6} (jumps: {}), {:.1} s",
+            "μ = {mu:.5}: switch {:.6} (jumps: {}), pull-off {:.7} at {:.5}, {:.1} s",
             samples.switch,
             samples.jumps,
+            samples.pull_off.load,
+            samples.pull_off.interference,
             start.elapsed().as_secs_f64()
         );
     }

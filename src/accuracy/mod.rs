@@ -181,7 +181,7 @@ pub struct WorkPrecision {
     /// Points of the Lennard-Jones rows (P̄ samples).
     pub lennard_jones_points: usize,
     /// The Lennard-Jones law's single-summit pull-off error of the closed-form
-    /// limit where it stands in: (DMT below μ = 0.01, JKR above μ = 5).
+    /// limit where it stands in: (DMT below μ = 0.01, JKR above μ = 22.4).
     pub lennard_jones_stand_in_error: (f64, f64),
 }
 

@@ -523,6 +523,41 @@ fn trace(sphere: &Sphere, from: f64, to: f64) -> Result<Vec<Window>, CurveError>
     })
 }
 
+/// The most tensile load along the traced path: the deepest minimum of P̂
+/// (where a sphere under load control comes off, on the retraction neck or
+/// the contact branch).
+fn deepest_minimum(sphere: &Sphere, windows: &[Window]) -> Result<SphereState, CurveError> {
+    let load_slope = |s: &SphereState| s.point.load_slope;
+    let mut pull_off = windows
+        .iter()
+        .map(|w| &w.end)
+        .min_by(|a, b| a.point.load.total_cmp(&b.point.load))
+        .expect("a trace has a step")
+        .clone();
+    for w in windows {
+        if load_slope(&w.start) < 0.0 && load_slope(&w.end) >= 0.0 {
+            let (state, _) = root(sphere, w, load_slope)?;
+            if state.point.load < pull_off.point.load {
+                pull_off = state;
+            }
+        }
+    }
+    Ok(pull_off)
+}
+
+/// The far-field state at apex gap `start` (over Z0), or the first further
+/// out (by factors of 1.5) where Newton's method from the rigid sphere
+/// converges; `start` becomes that gap.
+fn far_from(sphere: &Sphere, start: &mut f64) -> Result<SphereState, CurveError> {
+    loop {
+        match sphere.far(*start) {
+            Ok(state) => return Ok(state),
+            Err(e) if *start > 1e6 => return Err(e.into()),
+            Err(_) => *start *= 1.5,
+        }
+    }
+}
+
 /// [`trace`] until `done` holds of the last point (`to` only sets the step).
 fn trace_until(
     sphere: &Sphere,
@@ -532,10 +567,13 @@ fn trace_until(
 ) -> Result<Vec<Window>, CurveError> {
     let z0 = sphere.z0;
     let mut start = (1.0 - from / z0 + 0.5).max(2.0);
-    let mut first = sphere.far(start)?;
+    // Newton from the rigid sphere converges only where the attraction
+    // deforms it little: at large μ not at a few Z0 (μ = 78 and 100 at 3.5
+    // Z0, before the jump in), so the trace starts further out there.
+    let mut first = far_from(sphere, &mut start)?;
     while first.point.interference > from {
         start *= 1.5;
-        first = sphere.far(start)?;
+        first = far_from(sphere, &mut start)?;
     }
     let span = (to - from).abs().max(1e-3);
     let (tau_d, tau_p, tau_a): (f64, f64, f64) = ((span / 50.0).min(0.1).max(0.02 * z0), 0.1, 0.1);
@@ -657,22 +695,7 @@ pub fn lennard_jones_curve(
             turns.push((k, at, state));
         }
     }
-    // The most tensile load: the deepest minimum of P̂ along the path.
-    let load_slope = |s: &SphereState| s.point.load_slope;
-    let mut pull_off = windows
-        .iter()
-        .map(|w| &w.end)
-        .min_by(|a, b| a.point.load.total_cmp(&b.point.load))
-        .expect("a trace has a step")
-        .clone();
-    for w in &windows {
-        if load_slope(&w.start) < 0.0 && load_slope(&w.end) >= 0.0 {
-            let (state, _) = root(&sphere, w, load_slope)?;
-            if state.point.load < pull_off.point.load {
-                pull_off = state;
-            }
-        }
-    }
+    let pull_off = deepest_minimum(&sphere, &windows)?;
     let s_shaped = turns.len() >= 2;
     // Branches: the segments of monotone δ̂ between the turning points (a
     // point at arclength `at` in window k has passed the turns before it).
@@ -845,6 +868,11 @@ pub struct LoadingSamples {
     pub approach: Vec<SpherePoint>,
     /// The contact branch at the interferences asked for.
     pub contact: Vec<SpherePoint>,
+    /// One sphere's pull-off, the deepest minimum of P̂ along the path (at
+    /// the converged extremum where the settings extrapolate): on the
+    /// contact part, or, above μ ≈ 7, on the retraction neck below `switch`
+    /// that the loading curve leaves out.
+    pub pull_off: SpherePoint,
 }
 
 /// Samples the Lennard-Jones curve of Tabor parameter μ for a table: the
@@ -861,7 +889,18 @@ pub fn lennard_jones_loading(
 ) -> Result<LoadingSamples, CurveError> {
     let sphere = Sphere::new(tabor, settings);
     let z0 = sphere.z0;
-    let windows = trace(&sphere, z0 * (1.0 - 3.0), to)?;
+    // From apex gap 3 (μ ≤ 5; the table's curves there were written so), or
+    // from δ̂ = −1 above, where the approach branch turns (the jump in) at
+    // apex gaps beyond 3 (about 3.4 at μ = 5, growing with μ): a trace
+    // started inside the S-shape finds a later turn for the jump in (at
+    // μ = 6.4 apex gap 1.9, the curve's switch 0.03 off and the non-contact
+    // share of P̄ 0.5 % off).
+    let from = if tabor > STRETCH_ABOVE {
+        -1.0
+    } else {
+        z0 * (1.0 - 3.0)
+    };
+    let windows = trace(&sphere, from, to)?;
     let slope = |s: &SphereState| s.point.interference_slope;
     let turning: Vec<usize> = windows
         .iter()
@@ -921,6 +960,14 @@ pub fn lennard_jones_loading(
             finish(&sphere, &root(&sphere, &w, f)?.0, Hold::Interference)
         })
         .collect::<Result<Vec<_>, CurveError>>()?;
+    let deepest = deepest_minimum(&sphere, &windows)?;
+    let pull_off = if sphere.settings.extrapolate {
+        sphere
+            .extrapolated_extremum(&deepest, Hold::Interference, |p| p.load)?
+            .0
+    } else {
+        deepest.point
+    };
     Ok(LoadingSamples {
         tabor,
         end_gap,
@@ -928,6 +975,7 @@ pub fn lennard_jones_loading(
         jumps,
         approach,
         contact,
+        pull_off,
     })
 }
 

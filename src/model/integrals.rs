@@ -339,7 +339,7 @@ impl Model {
     }
 
     /// The closed-form law that stands in for the scene's (under the
-    /// Lennard-Jones law outside its table: JKR above μ = 5, DMT with van der
+    /// Lennard-Jones law outside its table: JKR above μ = 22.4, DMT with van der
     /// Waals attraction below μ = 0.01); None where the scene's law is used.
     pub fn stand_in(&self) -> Option<AsperityLaw> {
         (self.effective != self.law && self.coefficients.has_adhesion()).then_some(self.effective)

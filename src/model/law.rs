@@ -12,7 +12,7 @@
 //!   forces with equilibrium distance z0.
 //! * [`AsperityLaw::LennardJones`] — docs/model.md §11 (`lennard_jones/`): the
 //!   self-consistent sphere with a Lennard-Jones surface force, from its loading
-//!   table, valid for every Tabor parameter; outside the table (μ < 0.01, μ > 5)
+//!   table, valid for every Tabor parameter; outside the table (μ < 0.01, μ > 22.4)
 //!   its closed-form limits stand in.
 //!
 //! Each law's module implements `asperity_law::Law`: its entry in the registry (names,

@@ -137,7 +137,7 @@ pub enum Note {
         /// log10 of the area in m².
         log10_area: f64,
     },
-    /// Under the Lennard-Jones law, φ0 lies outside its table (0.01–5) and the
+    /// Under the Lennard-Jones law, φ0 lies outside its table (0.01–22.4) and the
     /// closed-form limit there stands in.
     LennardJonesStandIn {
         /// φ0.

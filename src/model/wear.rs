@@ -213,7 +213,7 @@ pub struct Evaluation {
     /// Lennard-Jones law's numbers.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub other_model: Option<OtherModel>,
-    /// Under the Lennard-Jones law outside its table (μ < 0.01 or μ > 5): the
+    /// Under the Lennard-Jones law outside its table (μ < 0.01 or μ > 22.4): the
     /// closed-form limit whose numbers stand in (`dmt` or `jkr`); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stand_in_model: Option<AdhesionModel>,

@@ -9,7 +9,8 @@ use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
 use crate::model::lennard_jones::table::{
-    INTERPOLATION_ERROR, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR, TAIL_SCALES,
+    INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR,
+    TAIL_SCALES,
 };
 use crate::model::AttractionKind;
 
@@ -80,12 +81,16 @@ pub fn json(wp: &WorkPrecision) -> String {
         "lennard_jones_stand_in_error": {
             "below": num(wp.lennard_jones_stand_in_error.0),
             "above": num(wp.lennard_jones_stand_in_error.1),
+            "below_tabor": crate::model::lennard_jones::table::tabor_range().0,
+            "above_tabor": crate::model::lennard_jones::table::tabor_range().1,
         },
         "lennard_jones_error": {
             "table_against_solver": TABLE_ERROR,
             "solver_against_reference": SOLVER_ERROR,
             "interpolation_in_tabor": INTERPOLATION_ERROR.0,
             "interpolation_in_tabor_at_cusp": INTERPOLATION_ERROR.1,
+            "interpolation_in_tabor_sparse": INTERPOLATION_ERROR_SPARSE,
+            "sparse_above_tabor": crate::model::lennard_jones::rough::SPARSE_ABOVE,
             "tail": TAIL_ERROR
                 .iter()
                 .map(|row| {
@@ -144,7 +149,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             let _ = writeln!(out);
             let _ = writeln!(
                 out,
-                "Lennard-Jones asperity law (docs/model.md §11), its table and the scene's grid of nodes at the default setting: {} points (μ = 0.02, 0.1, 0.374, 1, 3; ℓ = σ/ε = 3 and 30; c_h = 5 and ∞; h = -1 … 4; and the scenes' own coefficients where μ lies in the table)",
+                "Lennard-Jones asperity law (docs/model.md §11), its table and the scene's grid of nodes at the default setting: {} points (μ = 0.02, 0.1, 0.374, 1, 3, 10, 20; ℓ = σ/ε = 3 and 30; c_h = 5 and ∞; h = -1 … 4; and the scenes' own coefficients where μ lies in the table)",
                 wp.lennard_jones_points
             );
             let _ = writeln!(
@@ -153,9 +158,15 @@ pub fn text(wp: &WorkPrecision) -> String {
                 crate::accuracy::lennard_jones::REFERENCE_TOLERANCE
             );
             let (between, cusp) = INTERPOLATION_ERROR;
+            let (lo, hi) = crate::model::lennard_jones::table::tabor_range();
+            let (lo, hi) = (
+                crate::units::format_number(lo),
+                crate::units::format_number(hi),
+            );
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 4 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to three times as far) by {}",
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 4 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {}, where the table's grid is sparse); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to three times as far) by {}",
+                crate::units::format_number(crate::model::lennard_jones::rough::SPARSE_ABOVE),
                 TAIL_ERROR
                     .iter()
                     .map(|row| format!(
@@ -177,7 +188,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
             let _ = writeln!(
                 out,
-                "outside the table the closed-form limits stand in: DMT with van der Waals attraction below μ = 0.01 (one summit's pull-off {:.2} % off the table's there), JKR above μ = 5 ({:.2} % off)",
+                "outside the table the closed-form limits stand in: DMT with van der Waals attraction below μ = {lo} (one summit's pull-off {:.2} % off the table's there), JKR above μ = {hi} ({:.2} % off; the rough surface's pull-off more, since JKR's law leaves out the summits that jump into contact before zero interference: on a JKR-like scene the sphere's law gave 1.6 times JKR's pull-off at μ = 22.2, 2.3 times at 4.9, the excess falling as μ^(-1/2))",
                 100.0 * wp.lennard_jones_stand_in_error.0,
                 100.0 * wp.lennard_jones_stand_in_error.1
             );

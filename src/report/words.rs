@@ -195,13 +195,15 @@ pub fn note(n: &Note) -> String {
             pull_off_error,
         } => {
             // The closed form that holds above the table (large μ) or below it.
+            let (lo, hi) = crate::model::lennard_jones::table::tabor_range();
+            let (lo, hi) = (format_number(lo), format_number(hi));
             let (side, limit, rest) = if stand_in.valid_tabor().1.is_infinite() {
-                ("above 5", "JKR's (its large-μ limit)", "")
+                (format!("above {hi}"), "JKR's (its large-μ limit)", "; the rough surface's pull-off and area differ more: JKR's law lets a summit touch at zero interference, the sphere jumps in before (at δ̂ ≈ −1.08 μ^(-1/2) in Maugis units), and the summits between add adhesion — the surface's pull-off under the sphere's law was 1.6 times JKR's at the table's end on a JKR-like scene, the excess falling as μ^(-1/2)")
             } else {
-                ("below 0.01", "DMT's with van der Waals attraction (its small-μ limit)", "; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)")
+                (format!("below {lo}"), "DMT's with van der Waals attraction (its small-μ limit)", "; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)")
             };
             format!(
-                "Tabor parameter φ0 = {} lies {side}, outside the Lennard-Jones law's table (0.01–5): the numbers are {limit}, whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end{rest}",
+                "Tabor parameter φ0 = {} lies {side}, outside the Lennard-Jones law's table ({lo}–{hi}): the numbers are {limit}, whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end{rest}",
                 sig_exp(*tabor_parameter, 3),
                 100.0 * pull_off_error
             )

@@ -230,7 +230,7 @@ fn with_a_meniscus_the_extrema_match_an_independent_quadrature() {
 fn the_asperity_pull_off_matches_the_reference_solver() {
     for row in common::table("reference_lennard_jones_extrema.csv") {
         let mu = common::num(&row["mu"]);
-        if mu > 5.0 {
+        if mu > wearopt::model::lennard_jones::table::tabor_range().1 {
             continue;
         }
         let want = -common::num(&row["pull_off_load"]);
@@ -273,14 +273,15 @@ fn without_adhesion_every_law_agrees() {
     }
 }
 
-/// Outside its table (μ > 5, μ < 0.01) the law is its closed-form limit, JKR
+/// Outside its table (μ > 22.4, μ < 0.01) the law is its closed-form limit, JKR
 /// above and DMT with van der Waals attraction below, exactly, with a note
 /// that says so; inside, the hub's loads add up to W and the far attraction's
 /// Hamaker constant is 16π Z0² γ.
 #[test]
 fn outside_the_table_the_limits_stand_in() {
     let opts = EvaluationOptions::default();
-    for (z0, limit) in [(0.01e-9, AdhesionModel::Jkr), (15e-9, AdhesionModel::Dmt)] {
+    // The hub's μ = 0.374 at Z0 = 0.3 nm: 112 at 1 pm, 0.0075 at 15 nm.
+    for (z0, limit) in [(0.001e-9, AdhesionModel::Jkr), (15e-9, AdhesionModel::Dmt)] {
         let mut scene = hub();
         scene.interatomic_distance = z0;
         let lj = evaluate(&with_law(&scene, AdhesionModel::LennardJones), &opts);
@@ -309,7 +310,7 @@ fn outside_the_table_the_limits_stand_in() {
             })
             .expect("the stand-in is noted");
         assert_eq!(note.0, limit);
-        // JKR's 1.5 against the sphere's 1.5257 at μ = 5; Bradley's 2
+        // JKR's 1.5 against the sphere's 1.500206 at μ = 100; Bradley's 2
         // against 1.9986 at μ = 0.01 (the reference's extrema).
         assert!(note.1 > 1e-4 && note.1 < 2e-2, "{note:?}");
     }
@@ -391,7 +392,8 @@ fn json_names_the_law_as_problem_files_do() {
         .unwrap()
         .replace(
             "interatomic_distance = \"0.3 nm\"",
-            "interatomic_distance = \"0.01 nm\"",
+            // μ ∝ 1/Z0: 37.4 at 3 pm, above the table.
+            "interatomic_distance = \"0.003 nm\"",
         );
     let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lj-stand-in.toml");
     std::fs::write(&path, far).unwrap();

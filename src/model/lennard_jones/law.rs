@@ -1,6 +1,6 @@
 //! The Lennard-Jones law's entry in the registry (docs/model.md §11): the
 //! self-consistent sphere from its loading table, valid for every Tabor
-//! parameter; outside the table (μ < 0.01, μ > 5) its closed-form limits stand
+//! parameter; outside the table (μ < 0.01, μ > 22.4) its closed-form limits stand
 //! in, JKR above and DMT with van der Waals attraction below.
 
 use super::rough::{self, Grid, RoughLaw, Shares};

@@ -151,7 +151,7 @@ pub const CUSP_TABOR: f64 = 0.7093;
 /// size in 1/μ against 5.9e-3 in ln μ (2.0e-3 in μ^{-1/2}, 8.2e-3 in
 /// μ^{-3/2}). In ln μ the pull-off, a step from DMT's 2 to JKR's 1.5 over a
 /// few decades of μ (in 1/μ it missed the reference by 8.9e-6 at μ = 0.05,
-/// in ln μ by less than 1e-6).
+/// in ln μ by less than 1e-6); above [`SPARSE_ABOVE`] in μ^{-2/3}.
 fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     let c = curves();
     let (lo, hi) = (c[0].tabor, c[c.len() - 1].tabor);
@@ -184,7 +184,17 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
         })
     };
     let weights = |first: usize, share: f64| -> Vec<(usize, f64, f64)> {
-        let (integrals, pull_off) = (lagrange(first, f64::recip), lagrange(first, f64::ln));
+        // The pull-off in ln μ up to 5, in μ^{-2/3} above, where it nears
+        // JKR's 1.5 about as a power of μ.
+        let pull_off_variable: fn(f64) -> f64 = if tabor <= SPARSE_ABOVE {
+            f64::ln
+        } else {
+            |m| m.powf(-2.0 / 3.0)
+        };
+        let (integrals, pull_off) = (
+            lagrange(first, f64::recip),
+            lagrange(first, pull_off_variable),
+        );
         (0..4)
             .map(|i| (kept[first + i], share * integrals[i], share * pull_off[i]))
             .collect()
@@ -213,6 +223,13 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
         _ => Some(weights(first, 1.0)),
     }
 }
+
+/// The Tabor parameter above which the table's grid is sparse (9.2 curves
+/// a decade, against 49 below): there one summit's pull-off is interpolated in
+/// μ^{-2/3} (the curves', left out in turn, within 1.4e-6 in μ^{-2/3},
+/// 1.2e-5 in ln μ and 5.2e-6 in 1/μ; at μ = 10 within 1.4e-7 of the
+/// independent solution's, 1.1e-6 in ln μ).
+pub const SPARSE_ABOVE: f64 = 5.0;
 
 /// The half-width in ln μ of the blend between the two sides' stencils at
 /// the cusp ([`CUSP_TABOR`]): μ = 0.7058 … 0.7129.
