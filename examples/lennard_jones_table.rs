@@ -122,8 +122,11 @@ fn main() {
                     switch: samples.switch,
                     jumps: samples.jumps,
                     // One sphere's pull-off, where the loading curve leaves
-                    // it out (on the retraction neck below the switch).
-                    neck_pull_off: (samples.pull_off.interference < samples.switch)
+                    // it out (on the retraction neck below the jump in; a
+                    // single-valued curve is the whole path, its minimum on
+                    // it on either side of the split).
+                    neck_pull_off: (samples.jumps
+                        && samples.pull_off.interference < samples.switch)
                         .then_some((samples.pull_off.interference, samples.pull_off.load)),
                 },
                 (&loads, &openings),
