@@ -1216,17 +1216,15 @@ pub fn write_block(
         s.push('\n');
         s
     };
-    let Header {
-        tabor,
-        end_gap,
-        switch,
-        jumps,
-        neck_pull_off,
-    } = header;
-    let neck = neck_pull_off.map_or(String::new(), |(d, p)| format!(" {d:e} {p:e}"));
+    let neck = header
+        .neck_pull_off
+        .map_or(String::new(), |(d, p)| format!(" {d:e} {p:e}"));
     let mut out = format!(
-        "curve {tabor:e} {end_gap:e} {switch:e} {}{neck}\n",
-        u8::from(jumps)
+        "curve {:e} {:e} {:e} {}{neck}\n",
+        header.tabor,
+        header.end_gap,
+        header.switch,
+        u8::from(header.jumps)
     );
     out += &row("approach", approach.0);
     out += &row("opening", approach.1);
