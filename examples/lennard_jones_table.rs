@@ -24,7 +24,7 @@ use wearopt::model::lennard_jones::{spacing, SphereSettings};
 /// there the curves differ from JKR's by a few per cent or less and vary
 /// with 1/μ smoothly enough for a coarser grid (`tests/all/lennard_jones_rough.rs`,
 /// against curves between them); they cost more to write (4 minutes at
-/// μ = 6.4, 15 at 22), and beyond 22.4 JKR stands in.
+/// μ = 6.4, 20 at 22.4), and beyond 22.4 JKR stands in.
 fn grid() -> Vec<f64> {
     let (lo, hi, steps) = (0.01f64, 5.0f64, 132);
     let (top, top_steps) = (5.0 * 20f64.sqrt(), 6);

@@ -12,7 +12,7 @@
 #   scripts/lennard_jones_table.sh far        # tests/data/lennard_jones_far.txt
 #
 # Takes about two and a half hours on one core to write (release build; 17–103 s a
-# curve up to μ = 5, 4–15 minutes above); the check took two hours for the
+# curve up to μ = 5, 4–20 minutes above); the check took two hours for the
 # first table's 34 curves.
 # `between` writes fourteen curves the table does not hold, at the geometric
 # midpoints between ten pairs of its curves (where the interpolation in μ
