@@ -870,7 +870,7 @@ pub struct LoadingSamples {
     pub contact: Vec<SpherePoint>,
     /// One sphere's pull-off, the deepest minimum of P̂ along the path (at
     /// the converged extremum where the settings extrapolate): on the
-    /// contact part, or, above μ ≈ 7, on the retraction neck below `switch`
+    /// contact part, or, above μ ≈ 6, on the retraction neck below `switch`
     /// that the loading curve leaves out.
     pub pull_off: SpherePoint,
 }
@@ -894,7 +894,7 @@ pub fn lennard_jones_loading(
     // apex gaps beyond 3 (about 3.4 at μ = 5, growing with μ): a trace
     // started inside the S-shape finds a later turn for the jump in (at
     // μ = 6.4 apex gap 1.9, the curve's switch 0.03 off and the non-contact
-    // share of P̄ 0.5 % off).
+    // share of P̄ up to 3 % off).
     let from = if tabor > STRETCH_ABOVE {
         -1.0
     } else {

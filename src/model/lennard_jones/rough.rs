@@ -154,7 +154,7 @@ pub const CUSP_TABOR: f64 = 0.7093;
 /// in ln μ by less than 1e-6); above [`SPARSE_ABOVE`] in μ^{-2/3}.
 fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     let c = curves();
-    let (lo, hi) = (c[0].tabor, c[c.len() - 1].tabor);
+    let (lo, hi) = super::table::tabor_range();
     if !(tabor >= lo * (1.0 - 1e-12) && tabor <= hi * (1.0 + 1e-12)) {
         return None;
     }

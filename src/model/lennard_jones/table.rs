@@ -196,7 +196,7 @@ pub struct Curve {
     /// True where the load jumps at δ̂_s (an S-shaped curve).
     pub jumps: bool,
     /// One sphere's pull-off (δ̂, P̂) where it lies below δ̂_s, on the
-    /// retraction neck the loading curve leaves out (above μ ≈ 7; the
+    /// retraction neck the loading curve leaves out (above μ ≈ 6; the
     /// solver's, in the block's header); None where it lies on the curve.
     pub neck_pull_off: Option<(f64, f64)>,
     /// The series, built from `samples` when first used (a process reads
@@ -702,9 +702,9 @@ impl Curve {
     /// dP̂/dδ̂ turns positive on the contact part (bisection on the slope), or
     /// the approach part's end if that is lower; or, where the minimum lies
     /// on the retraction neck below δ̂_s, which the table's samples leave out,
-    /// the solver's value from the block's header (above μ ≈ 7: at μ = 5 the
+    /// the solver's value from the block's header (above μ ≈ 6: at μ = 5 the
     /// pull-off is at δ̂ = −0.447, the jump in at −0.482; at μ = 8.24 they
-    /// are at −0.43 and −0.400).
+    /// are at −0.442 and −0.378).
     pub fn pull_off(&self) -> (f64, f64) {
         if let Some(neck) = self.neck_pull_off {
             return neck;
@@ -1345,7 +1345,7 @@ mod tests {
             let Shift::Squeezed { ratio, .. } = tail.shift else {
                 panic!("μ = {}: no deficit", curve.tabor)
             };
-            if curve.tabor <= 5.0 {
+            if curve.tabor <= super::super::rough::SPARSE_ABOVE {
                 worst_ratio = worst_ratio.max(ratio.abs());
             } else {
                 sparse_ratio = sparse_ratio.max(ratio.abs());
