@@ -114,6 +114,25 @@ def test_dict_problem_equals_its_file():
         assert from_dict[key] == from_file[key], key
 
 
+def test_lennard_jones_above_its_solved_table_is_noted_and_continuous():
+    """The hub under the Lennard-Jones law with Z0 shrunk (μ ∝ 1/Z0): above the
+    solved table (μ = 22.4) the limit curves serve, noted, no stand-in; far above
+    them (μ > 3.6e6) JKR stands in; the pull-off falls with μ toward JKR's
+    without a jump (from 5.99 µN at μ = 0.374)."""
+    tomllib = pytest.importorskip("tomllib")
+    d = tomllib.loads((ROOT / "problems" / "micro-gear.toml").read_text())
+    pulls = []
+    for z0, kinds, stand_in in [("0.003 nm", {"lennard_jones_limit_curves"}, None),
+                                ("0.001 nm", {"lennard_jones_limit_curves"}, None),
+                                ("1e-8 nm", {"lennard_jones_stand_in"}, "jkr")]:
+        d["interface"]["interatomic_distance"] = z0
+        r = wearopt.evaluate(d)
+        assert kinds <= {n["kind"] for n in r["note_details"]}, z0
+        assert r.get("stand_in_model") == stand_in
+        pulls.append(r["pull_off_force"])
+    assert pulls[0] > pulls[1] > pulls[2] > 0
+
+
 def _cli_curve(theta: str, lam: str, lo: float, hi: float, n: int, extra=()):
     out = cli("curve", "--theta", theta, "--lambda", lam, "--from", repr(lo), "--to", repr(hi),
               "--points", str(n), *extra).stdout

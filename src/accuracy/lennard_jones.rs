@@ -29,12 +29,13 @@ pub struct LennardJonesPoint {
 }
 
 /// The points: Tabor parameters across the table (μ = 0.02, 0.1, 0.374, 1, 3,
-/// 10, 20: on both sides of the cusp and where the curves are JKR-like), weak and strong adhesion (ℓ = 30, 3), with and
+/// 10, 20: on both sides of the cusp and where the curves are JKR-like; 100
+/// and 1e5 on the closed-form limit curves above it), weak and strong adhesion (ℓ = 30, 3), with and
 /// without plasticity (c_h = 5, ∞), h = −1, 0.5, 2, 4; and the scenes' own
 /// coefficients (where their μ lies in the table) at h = −1 … 4.
 pub fn points(scenes: &[(Coefficients, f64)]) -> Vec<LennardJonesPoint> {
     let mut out = Vec::new();
-    for mu in [0.02, 0.1, 0.374, 1.0, 3.0, 10.0, 20.0] {
+    for mu in [0.02, 0.1, 0.374, 1.0, 3.0, 10.0, 20.0, 100.0, 1e5] {
         for ell in [3.0f64, 30.0] {
             for c_h in [5.0, f64::INFINITY] {
                 let coefficients = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
@@ -207,8 +208,9 @@ pub fn rows(points: &[LennardJonesPoint], repetitions: usize) -> Vec<Row> {
     }]
 }
 
-/// The single-summit pull-off's relative error of the closed-form limits
-/// where they take over from the table: (below μ = 0.01, above μ = 22.4).
+/// The pull-off's relative error of the closed-form laws where they take
+/// over from the law's curves: (below μ = 0.01 one summit's, above μ = 3.58e6
+/// the rough surface's where adhesion is strong).
 pub fn stand_in_errors() -> (f64, f64) {
     (
         stand_in_pull_off_error(false),

@@ -180,8 +180,9 @@ pub struct WorkPrecision {
     pub dmt_reference_error: f64,
     /// Points of the Lennard-Jones rows (P̄ samples).
     pub lennard_jones_points: usize,
-    /// The Lennard-Jones law's single-summit pull-off error of the closed-form
-    /// limit where it stands in: (DMT below μ = 0.01, JKR above μ = 22.4).
+    /// The Lennard-Jones law's pull-off error of the closed-form law where it
+    /// stands in: (DMT below μ = 0.01, one summit's; JKR above μ = 3.58e6, the
+    /// rough surface's where adhesion is strong).
     pub lennard_jones_stand_in_error: (f64, f64),
 }
 

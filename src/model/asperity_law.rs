@@ -89,6 +89,11 @@ pub trait Law: Sync {
     fn stand_in_note(&self, _stand_in: AsperityLaw, _tabor: f64) -> Option<Note> {
         None
     }
+    /// The note a scene gets where the law's own numbers come from a stated
+    /// approximation of it (not a stand-in law) at φ0.
+    fn approximation_note(&self, _law: AsperityLaw, _tabor: f64) -> Option<Note> {
+        None
+    }
 }
 
 /// What a [`Law`] gives the model at one scene's coefficients.

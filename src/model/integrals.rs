@@ -339,8 +339,8 @@ impl Model {
     }
 
     /// The closed-form law that stands in for the scene's (under the
-    /// Lennard-Jones law outside its table: JKR above μ = 22.4, DMT with van der
-    /// Waals attraction below μ = 0.01); None where the scene's law is used.
+    /// Lennard-Jones law outside its curves: JKR above μ = 3.58e6, DMT with van
+    /// der Waals attraction below μ = 0.01); None where the scene's law is used.
     pub fn stand_in(&self) -> Option<AsperityLaw> {
         (self.effective != self.law && self.coefficients.has_adhesion()).then_some(self.effective)
     }

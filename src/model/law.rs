@@ -12,8 +12,9 @@
 //!   forces with equilibrium distance z0.
 //! * [`AsperityLaw::LennardJones`] — docs/model.md §11 (`lennard_jones/`): the
 //!   self-consistent sphere with a Lennard-Jones surface force, from its loading
-//!   table, valid for every Tabor parameter; outside the table (μ < 0.01, μ > 22.4)
-//!   its closed-form limits stand in.
+//!   table (solved to μ = 22.4, its closed-form limit curves above), valid for
+//!   every Tabor parameter; outside them (μ < 0.01, μ > 3.58e6) the closed-form
+//!   laws stand in.
 //!
 //! Each law's module implements `asperity_law::Law`: its entry in the registry (names,
 //! options, where it is exact, its words) and what the model asks of it —

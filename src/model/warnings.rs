@@ -137,14 +137,25 @@ pub enum Note {
         /// log10 of the area in m².
         log10_area: f64,
     },
-    /// Under the Lennard-Jones law, φ0 lies outside its table (0.01–22.4) and the
-    /// closed-form limit there stands in.
+    /// Under the Lennard-Jones law, φ0 lies outside its curves (0.01–3.6e6) and
+    /// the closed-form law there stands in.
     LennardJonesStandIn {
         /// φ0.
         tabor_parameter: f64,
         /// The law whose numbers stand in.
         stand_in: super::law::AdhesionModel,
-        /// The relative error of its single-asperity pull-off at the table's end.
+        /// The relative error of its pull-off at the curves' end: below, one
+        /// asperity's; above, the rough surface's (where adhesion is strong).
+        pull_off_error: f64,
+    },
+    /// Under the Lennard-Jones law, φ0 lies above the solved table (22.4):
+    /// the law's curves there are the closed-form limit curves (JKR's contact
+    /// branch from the sphere's jump in).
+    LennardJonesLimitCurves {
+        /// φ0.
+        tabor_parameter: f64,
+        /// The rough surface's pull-off under the limit curve against the
+        /// solved sphere's at the table's end (relative).
         pull_off_error: f64,
     },
 }

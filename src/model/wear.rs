@@ -213,7 +213,7 @@ pub struct Evaluation {
     /// Lennard-Jones law's numbers.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub other_model: Option<OtherModel>,
-    /// Under the Lennard-Jones law outside its table (μ < 0.01 or μ > 22.4): the
+    /// Under the Lennard-Jones law outside its curves (μ < 0.01 or μ > 3.58e6): the
     /// closed-form limit whose numbers stand in (`dmt` or `jkr`); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stand_in_model: Option<AdhesionModel>,
@@ -484,6 +484,8 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
     let stand_in = model.stand_in();
     if let Some(law) = stand_in {
         notes.extend(model.law.law().stand_in_note(law, phi));
+    } else if coeffs.has_adhesion() {
+        notes.extend(model.law.law().approximation_note(model.law, phi));
     }
     let stand_in = stand_in.map(|law| law.adhesion_model());
     if reg.elastic_adhesion_matters {

@@ -9,8 +9,8 @@ use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
 use crate::model::lennard_jones::table::{
-    INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR,
-    TAIL_SCALES,
+    INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE, LIMIT_ERROR, SOLVER_ERROR, TABLE_ERROR,
+    TAIL_ERROR, TAIL_SCALES,
 };
 use crate::model::AttractionKind;
 
@@ -84,6 +84,12 @@ pub fn json(wp: &WorkPrecision) -> String {
             "below_tabor": crate::model::lennard_jones::table::tabor_range().0,
             "above_tabor": crate::model::lennard_jones::table::tabor_range().1,
         },
+        "lennard_jones_limit_curves": {
+            "from_tabor": crate::model::lennard_jones::table::solved_range().1,
+            "to_tabor": crate::model::lennard_jones::table::tabor_range().1,
+            "pull_off_error": LIMIT_ERROR.0,
+            "load_error": LIMIT_ERROR.1,
+        },
         "lennard_jones_error": {
             "table_against_solver": TABLE_ERROR,
             "solver_against_reference": SOLVER_ERROR,
@@ -149,7 +155,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             let _ = writeln!(out);
             let _ = writeln!(
                 out,
-                "Lennard-Jones asperity law (docs/model.md §11), its table and the scene's grid of nodes at the default setting: {} points (μ = 0.02, 0.1, 0.374, 1, 3, 10, 20; ℓ = σ/ε = 3 and 30; c_h = 5 and ∞; h = -1 … 4; and the scenes' own coefficients where μ lies in the table)",
+                "Lennard-Jones asperity law (docs/model.md §11), its table and the scene's grid of nodes at the default setting: {} points (μ = 0.02, 0.1, 0.374, 1, 3, 10, 20, and 100 and 1e5 on the limit curves; ℓ = σ/ε = 3 and 30; c_h = 5 and ∞; h = -1 … 4; and the scenes' own coefficients where μ lies in the table)",
                 wp.lennard_jones_points
             );
             let _ = writeln!(
@@ -186,9 +192,17 @@ pub fn text(wp: &WorkPrecision) -> String {
                     .join(", ")
                     + " (ℓ = 30 / 100 / 300 / 1000)"
             );
+            let solved =
+                crate::units::format_number(crate::model::lennard_jones::table::solved_range().1);
             let _ = writeln!(
                 out,
-                "outside the table the closed-form limits stand in: DMT with van der Waals attraction below μ = {lo} (one summit's pull-off {:.2} % off the table's there), JKR above μ = {hi} ({:.2} % off; the rough surface's pull-off more, since JKR's law leaves out the summits that jump into contact before zero interference: on a JKR-like scene the sphere's law gave 1.6 times JKR's pull-off at μ = 22.2, 2.3 times at 4.9, the excess falling as μ^(-1/2))",
+                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s ∝ μ^(-1/2), scaled from the last solved curve) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.1e} of ∫|p| φ̄, falling with μ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3)",
+                100.0 * LIMIT_ERROR.0,
+                LIMIT_ERROR.1
+            );
+            let _ = writeln!(
+                out,
+                "outside the law's curves the closed-form laws stand in: DMT with van der Waals attraction below μ = {lo} (one summit's pull-off {:.2} % off the table's there), JKR above μ = {hi} (the rough surface's pull-off {:.2} % off the limit curve's where adhesion is strong, ℓ ≤ 3)",
                 100.0 * wp.lennard_jones_stand_in_error.0,
                 100.0 * wp.lennard_jones_stand_in_error.1
             );

@@ -194,16 +194,41 @@ pub fn note(n: &Note) -> String {
             stand_in,
             pull_off_error,
         } => {
-            // The closed form that holds above the table (large μ) or below it.
+            // The closed form that holds above the law's curves (large μ) or
+            // below them.
             let (lo, hi) = crate::model::lennard_jones::table::tabor_range();
             let (lo, hi) = (format_number(lo), format_number(hi));
-            let (side, limit, rest) = if stand_in.valid_tabor().1.is_infinite() {
-                (format!("above {hi}"), "JKR's (its large-μ limit)", "; the rough surface's pull-off and area differ more: JKR's law lets a summit touch at zero interference, the sphere jumps in before (at δ̂ ≈ −1.08 μ^(-1/2) in Maugis units), and the summits between add adhesion — the surface's pull-off under the sphere's law was 1.6 times JKR's at the table's end on a JKR-like scene, the excess falling as μ^(-1/2)")
+            let (side, limit, error) = if stand_in.valid_tabor().1.is_infinite() {
+                (
+                    format!("above {hi}"),
+                    "JKR's (its large-μ limit)",
+                    format!(
+                        "whose rough-surface pull-off differs from the law's last limit curve by {:.2} % there where adhesion is strong (ℓ = σ/ε ≤ 3; where it is weak both pull-offs are vanishingly small, JKR's far smaller)",
+                        100.0 * pull_off_error
+                    ),
+                )
             } else {
-                (format!("below {lo}"), "DMT's with van der Waals attraction (its small-μ limit)", "; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)")
+                (
+                    format!("below {lo}"),
+                    "DMT's with van der Waals attraction (its small-μ limit)",
+                    format!(
+                        "whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end; the far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π)",
+                        100.0 * pull_off_error
+                    ),
+                )
             };
             format!(
-                "Tabor parameter φ0 = {} lies {side}, outside the Lennard-Jones law's table ({lo}–{hi}): the numbers are {limit}, whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end{rest}",
+                "Tabor parameter φ0 = {} lies {side}, outside the Lennard-Jones law's curves ({lo}–{hi}): the numbers are {limit}, {error}",
+                sig_exp(*tabor_parameter, 3),
+            )
+        }
+        Note::LennardJonesLimitCurves {
+            tabor_parameter,
+            pull_off_error,
+        } => {
+            let solved = format_number(crate::model::lennard_jones::table::solved_range().1);
+            format!(
+                "Tabor parameter φ0 = {} lies above the Lennard-Jones sphere's solved table (to {solved}): the law's curves there are its closed-form limit, JKR's contact branch from the sphere's jump in (at interference ≈ −1.08 μ^(-1/2) in Maugis units) with the rigid sphere's attraction before it; at μ = {solved} the rough surface's pull-off under it was within {:.1} % of the solved sphere's, the difference falling as μ grows",
                 sig_exp(*tabor_parameter, 3),
                 100.0 * pull_off_error
             )

@@ -444,7 +444,7 @@ fn accuracy_and_sensitivities_move_a_shared_modulus_alike() {
 #[test]
 fn lennard_jones_rows_meet_the_target() {
     let points = accuracy::lennard_jones::points(&[]);
-    assert_eq!(points.len(), 112);
+    assert_eq!(points.len(), 144);
     let rows = accuracy::lennard_jones::rows(&points[..32], 1);
     assert_eq!(rows.len(), 1);
     assert_eq!(rows[0].law, RowLaw::LennardJones);
@@ -452,7 +452,9 @@ fn lennard_jones_rows_meet_the_target() {
     assert!(rows[0].max_rel_error < 1e-9, "{:?}", rows[0]);
     let (below, above) = accuracy::lennard_jones::stand_in_errors();
     assert!((below - 5.2e-4).abs() < 1e-4, "{below}");
-    // JKR's 1.5 against the sphere's 1.5026093 at μ = 22.4 (1.69e-2 when the
-    // table ended at μ = 5).
-    assert!((above - 1.736e-3).abs() < 1e-6, "{above}");
+    // Above, the rough surface's pull-off under JKR's law against the last
+    // limit curve's (tests/all/lennard_jones_limit.rs measures it; one
+    // summit's was 1.74e-3 when JKR took over from the solved table at
+    // μ = 22.4, 1.69e-2 when that ended at μ = 5).
+    assert_eq!(above, wearopt::model::lennard_jones::table::LIMIT_END_ERROR);
 }

@@ -230,7 +230,7 @@ fn with_a_meniscus_the_extrema_match_an_independent_quadrature() {
 fn the_asperity_pull_off_matches_the_reference_solver() {
     for row in common::table("reference_lennard_jones_extrema.csv") {
         let mu = common::num(&row["mu"]);
-        if mu > wearopt::model::lennard_jones::table::tabor_range().1 {
+        if mu > wearopt::model::lennard_jones::table::solved_range().1 {
             continue;
         }
         let want = -common::num(&row["pull_off_load"]);
@@ -273,15 +273,15 @@ fn without_adhesion_every_law_agrees() {
     }
 }
 
-/// Outside its table (μ > 22.4, μ < 0.01) the law is its closed-form limit, JKR
-/// above and DMT with van der Waals attraction below, exactly, with a note
-/// that says so; inside, the hub's loads add up to W and the far attraction's
-/// Hamaker constant is 16π Z0² γ.
+/// Outside its curves (μ > 3.58e6, μ < 0.01) the law is its closed-form
+/// limit, JKR above and DMT with van der Waals attraction below, exactly, with
+/// a note that says so; inside, the hub's loads add up to W and the far
+/// attraction's Hamaker constant is 16π Z0² γ.
 #[test]
 fn outside_the_table_the_limits_stand_in() {
     let opts = EvaluationOptions::default();
-    // The hub's μ = 0.374 at Z0 = 0.3 nm: 112 at 1 pm, 0.0075 at 15 nm.
-    for (z0, limit) in [(0.001e-9, AdhesionModel::Jkr), (15e-9, AdhesionModel::Dmt)] {
+    // The hub's μ = 0.374 at Z0 = 0.3 nm: 1.1e7 at 1e-17 m, 0.0075 at 15 nm.
+    for (z0, limit) in [(1e-17, AdhesionModel::Jkr), (15e-9, AdhesionModel::Dmt)] {
         let mut scene = hub();
         scene.interatomic_distance = z0;
         let lj = evaluate(&with_law(&scene, AdhesionModel::LennardJones), &opts);
@@ -310,8 +310,9 @@ fn outside_the_table_the_limits_stand_in() {
             })
             .expect("the stand-in is noted");
         assert_eq!(note.0, limit);
-        // JKR's 1.5 against the sphere's 1.500206 at μ = 100; Bradley's 2
-        // against 1.9986 at μ = 0.01 (the reference's extrema).
+        // Above, the rough surface's pull-off under JKR's law against the
+        // last limit curve's (6.1e-3 where adhesion is strong); below,
+        // Bradley's 2 against the table's 1.99897 at μ = 0.01.
         assert!(note.1 > 1e-4 && note.1 < 2e-2, "{note:?}");
     }
     let scene = with_law(&hub(), AdhesionModel::LennardJones);
@@ -388,12 +389,35 @@ fn json_names_the_law_as_problem_files_do() {
     let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
     assert_eq!(v["adhesion_model"], "jkr");
     assert_eq!(v["other_model"]["adhesion_model"], "lennard_jones");
+    // μ ∝ 1/Z0: 37.4 at 3 pm, above the solved table, on the limit curves
+    // (noted, no stand-in).
+    let above = std::fs::read_to_string("problems/micro-gear.toml")
+        .unwrap()
+        .replace(
+            "interatomic_distance = \"0.3 nm\"",
+            "interatomic_distance = \"0.003 nm\"",
+        );
+    let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lj-limit.toml");
+    std::fs::write(&path, above).unwrap();
+    let out = common::stdout(
+        wearopt().args(["eval", path.to_str().unwrap(), "--format", "json"]),
+        0,
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert!(v.get("stand_in_model").is_none());
+    let notes = v["note_details"].as_array().unwrap();
+    assert!(
+        notes
+            .iter()
+            .any(|n| n["kind"] == "lennard_jones_limit_curves"),
+        "{notes:?}"
+    );
+    // 1.1e7 at 1e-8 nm: above the limit curves, JKR stands in.
     let far = std::fs::read_to_string("problems/micro-gear.toml")
         .unwrap()
         .replace(
             "interatomic_distance = \"0.3 nm\"",
-            // μ ∝ 1/Z0: 37.4 at 3 pm, above the table.
-            "interatomic_distance = \"0.003 nm\"",
+            "interatomic_distance = \"1e-8 nm\"",
         );
     let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("lj-stand-in.toml");
     std::fs::write(&path, far).unwrap();

@@ -201,7 +201,9 @@ fn each_share_holds_every_summit_that_weighs_against_itself() {
 /// reaches δ̂ = 50, so Δc ℓ stays below it).
 #[test]
 fn the_plastic_rule_tends_to_both_limits() {
-    let top = curves().last().unwrap();
+    let top = wearopt::model::lennard_jones::table::solved_curves()
+        .last()
+        .unwrap();
     for c_h in [3.0f64, 6.0] {
         let dc = critical_interference(top, c_h);
         let c_a = 6f64.sqrt();

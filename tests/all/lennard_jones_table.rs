@@ -3,7 +3,7 @@
 //! against the closed-form limits at its ends.
 
 use wearopt::model::asperity_curve::lennard_jones_loading;
-use wearopt::model::lennard_jones::table::{curves, lobatto, APPROACH_DEGREE};
+use wearopt::model::lennard_jones::table::{lobatto, solved_curves, APPROACH_DEGREE};
 use wearopt::model::lennard_jones::SphereSettings;
 
 /// The committed table covers μ = 0.01 … 5√20 = 22.4 (the solver reaches
@@ -14,7 +14,7 @@ use wearopt::model::lennard_jones::SphereSettings;
 /// error is larger and stated apart) and in order.
 #[test]
 fn the_table_covers_its_grid() {
-    let c = curves();
+    let c = solved_curves();
     assert!(c.len() >= 60, "{} curves", c.len());
     assert!((c[0].tabor - 0.01).abs() < 1e-12);
     assert!((c[c.len() - 1].tabor - 5.0 * 20f64.sqrt()).abs() < 1e-9);
@@ -42,7 +42,7 @@ fn the_table_covers_its_grid() {
 fn the_cusp_lies_between_the_tables_kinds_of_curve() {
     use wearopt::model::asperity_curve::{asperity_curve, CurveLaw};
     use wearopt::model::lennard_jones::rough::CUSP_TABOR;
-    let c = curves();
+    let c = solved_curves();
     let first = c.iter().position(|curve| curve.jumps).unwrap();
     assert!(c[first - 1].tabor < CUSP_TABOR && CUSP_TABOR < c[first].tabor);
     for (mu, s_shaped) in [(CUSP_TABOR - 1e-4, false), (CUSP_TABOR + 1e-4, true)] {
@@ -56,7 +56,7 @@ fn the_cusp_lies_between_the_tables_kinds_of_curve() {
 /// there. Where it jumps, both parts start from the jump's interference.
 #[test]
 fn the_parts_meet_at_the_switch() {
-    for c in curves() {
+    for c in solved_curves() {
         let end = c.approach(c.tau_end());
         assert!(
             (end.interference - c.switch).abs() < 1e-9 * (1.0 + c.switch.abs()),
@@ -80,7 +80,7 @@ fn the_parts_meet_at_the_switch() {
 /// elastic opening vanishing faster than the load.
 #[test]
 fn the_far_field_is_bradleys() {
-    for c in curves() {
+    for c in solved_curves() {
         for g in [30.0f64, 300.0] {
             let p = c.approach(g.powf(-0.5));
             let bradley = 2.0 / 3.0 * (g.powi(-8) - 4.0 * g.powi(-2));
@@ -91,7 +91,7 @@ fn the_far_field_is_bradleys() {
         }
     }
     // μ = 0.01 is rigid to 1e-3 already near the flat.
-    let c = &curves()[0];
+    let c = &solved_curves()[0];
     let g = 2.0f64;
     let bradley = 2.0 / 3.0 * (g.powi(-8) - 4.0 * g.powi(-2));
     assert!((c.approach(g.powf(-0.5)).load / bradley - 1.0).abs() < 1e-3);
@@ -102,7 +102,7 @@ fn the_far_field_is_bradleys() {
 /// the load at δ̂ = 1, 5, 20 within 3 % of 1 + |P̂| of JKR's loading curve.
 #[test]
 fn the_top_of_the_table_is_near_jkr() {
-    let c = curves().last().unwrap();
+    let c = solved_curves().last().unwrap();
     for d in [1.0f64, 5.0, 20.0] {
         // JKR's â from δ̂ = â² − (2/3)√(6â) by Newton, then P̂ = â³ − √(6â³).
         let mut a = d.sqrt() + 1.0;
@@ -133,7 +133,7 @@ const SWITCH_BAR: f64 = 1e-9;
 #[test]
 fn the_table_matches_the_solver_between_its_nodes() {
     for index in [6usize, 42] {
-        let c = &curves()[index];
+        let c = &solved_curves()[index];
         let taus = lobatto(0.0, c.tau_end(), APPROACH_DEGREE);
         let mid_taus: Vec<f64> = [5usize, 20, 29, 31]
             .iter()
@@ -189,11 +189,11 @@ fn the_table_matches_the_solver_between_its_nodes() {
 /// about the attraction outside, where it is DMT-like (μ = 0.01).
 #[test]
 fn the_inner_load_spans_jkr_and_dmt() {
-    let top = curves().last().unwrap();
+    let top = solved_curves().last().unwrap();
     let (_, inner) = top.contact_area(20.0);
     let (load, _) = top.contact(20.0);
     assert!((inner / load - 1.0).abs() < 0.05, "{inner} vs {load}");
-    let bottom = &curves()[0];
+    let bottom = &solved_curves()[0];
     let (_, inner) = bottom.contact_area(20.0);
     let (load, _) = bottom.contact(20.0);
     assert!(inner > load + 1.0, "{inner} vs {load}");
@@ -203,7 +203,7 @@ fn the_inner_load_spans_jkr_and_dmt() {
 /// just before the switch, in a handful of steps' worth of time.
 #[test]
 fn the_approach_part_inverts() {
-    for c in curves() {
+    for c in solved_curves() {
         let points = [-1e4, -30.0, -2.0].map(|x| x * c.z0);
         let near = [c.switch - 0.3, c.switch - 1e-6];
         for d in points.into_iter().chain(near).filter(|&d| d < c.switch) {
@@ -224,8 +224,8 @@ fn the_approach_part_inverts() {
 fn every_curve_reads_whole() {
     use wearopt::model::lennard_jones::table::{parse, TABLE};
     let again = parse(TABLE).unwrap();
-    assert_eq!(again.len(), curves().len());
-    for (a, b) in again.iter().zip(curves()) {
+    assert_eq!(again.len(), solved_curves().len());
+    for (a, b) in again.iter().zip(solved_curves()) {
         assert!(a == b, "μ = {}", a.tabor);
         let (load, slope) = a.contact(a.max_interference());
         assert!(load.is_finite() && slope.is_finite());

@@ -20,6 +20,7 @@ mod figures;
 mod hock_schittkowski;
 mod html;
 mod lennard_jones_law;
+mod lennard_jones_limit;
 mod lennard_jones_rough;
 mod lennard_jones_table;
 mod materials;

@@ -838,7 +838,8 @@ proptest! {
     }
 }
 
-/// [`scene`] under the Lennard-Jones law: its table (μ = 0.01–22.4) and the
+/// [`scene`] under the Lennard-Jones law: its table (μ = 0.01–22.4), the limit
+/// curves above it (to 3.58e6) and the
 /// stand-ins on either side, over E, H, γ, σ, R, N, W and A_n as wide as the
 /// other laws'.
 fn lennard_jones_scene() -> impl Strategy<Value = Scene> {

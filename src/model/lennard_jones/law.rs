@@ -1,7 +1,9 @@
 //! The Lennard-Jones law's entry in the registry (docs/model.md §11): the
 //! self-consistent sphere from its loading table, valid for every Tabor
-//! parameter; outside the table (μ < 0.01, μ > 22.4) its closed-form limits stand
-//! in, JKR above and DMT with van der Waals attraction below.
+//! parameter: the solver's curves from μ = 0.01 to 22.4, then closed-form
+//! limit curves (JKR's contact branch from the sphere's jump in) to 3.6e6;
+//! outside them the closed-form laws stand in, JKR above and DMT with van der
+//! Waals attraction below.
 
 use super::rough::{self, Grid, RoughLaw, Shares};
 use crate::model::asperity_law::{Law, Prepared, Tabulated};
@@ -82,6 +84,12 @@ impl Law for LennardJones {
     }
     fn separation_scale(&self, law: AsperityLaw, _c: &Coefficients) -> f64 {
         1.0 + law.range().min(1e3)
+    }
+    fn approximation_note(&self, _law: AsperityLaw, tabor: f64) -> Option<Note> {
+        (tabor > super::table::solved_range().1).then_some(Note::LennardJonesLimitCurves {
+            tabor_parameter: tabor,
+            pull_off_error: super::table::LIMIT_ERROR.0,
+        })
     }
     fn stand_in_note(&self, stand_in: AsperityLaw, tabor: f64) -> Option<Note> {
         let stand_in = stand_in.adhesion_model();

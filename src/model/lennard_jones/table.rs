@@ -199,8 +199,13 @@ pub struct Curve {
     /// retraction neck the loading curve leaves out (above μ ≈ 6; the
     /// solver's, in the block's header); None where it lies on the curve.
     pub neck_pull_off: Option<(f64, f64)>,
-    /// The series, built from `samples` when first used (a process reads
-    /// the whole table, but a scene uses four of its curves).
+    /// True for a closed-form curve above the solved table ([`limit_curve`]:
+    /// JKR's contact branch from the sphere's jump in), false for the
+    /// solver's.
+    pub limit: bool,
+    /// The series, built from `samples` (or, for a limit curve, its closed
+    /// form) when first used (a process reads the whole table, but a scene
+    /// uses four of its curves).
     body: OnceLock<Body>,
     /// The block's sample lines (`approach` … `inner`), checked in shape.
     samples: std::borrow::Cow<'static, str>,
@@ -216,6 +221,7 @@ impl PartialEq for Curve {
             self.switch,
             self.jumps,
             self.neck_pull_off,
+            self.limit,
         ) == (
             other.tabor,
             other.z0,
@@ -223,6 +229,7 @@ impl PartialEq for Curve {
             other.switch,
             other.jumps,
             other.neck_pull_off,
+            other.limit,
         ) && self.body() == other.body()
     }
 }
@@ -946,6 +953,7 @@ impl Curve {
             switch,
             jumps,
             neck_pull_off,
+            limit: false,
             body: OnceLock::from(Body::from_samples(
                 (end_gap, super::spacing(tabor)),
                 approach,
@@ -967,6 +975,7 @@ impl Curve {
             switch: head[2],
             jumps: head[3] != 0.0,
             neck_pull_off: (head.len() == 6).then(|| (head[4], head[5])),
+            limit: false,
             body: OnceLock::new(),
             samples,
         }
@@ -975,6 +984,9 @@ impl Curve {
     /// The series, built from the samples on first use.
     fn body(&self) -> &Body {
         self.body.get_or_init(|| {
+            if self.limit {
+                return self.limit_body();
+            }
             let lines: Vec<&str> = self.samples.lines().collect();
             let numbers = |k: usize| -> Vec<f64> {
                 lines[k]
@@ -995,6 +1007,105 @@ impl Curve {
                 [&contact, &radius, &inner],
             )
         })
+    }
+}
+
+/// One JKR sphere at interference δ̂ (Maugis units, on the stable branch,
+/// δ̂ ≥ −0.9086, where dδ̂/dâ = 0): (P̂, â), from
+/// δ̂ = â² − (2/3)(6â)^{1/2}, P̂ = â³ − (6â³)^{1/2} (Maugis 1992, his λ → ∞).
+/// Newton's method from the right of the root (δ̂(â) is convex in â, so the
+/// iterates fall monotonically onto it).
+pub fn jkr_sphere(d: f64) -> (f64, f64) {
+    let mut a = d.max(0.0).sqrt() + 2.0;
+    for _ in 0..100 {
+        let root = (6.0 * a).sqrt();
+        let f = a * a - 2.0 / 3.0 * root - d;
+        let slope = 2.0 * a - root / (3.0 * a);
+        let next = a - f / slope;
+        let done = (a - next).abs() <= 1e-15 * a;
+        a = next.max(JKR_NARROWEST);
+        if done {
+            break;
+        }
+    }
+    (a * a * a - (6.0 * a * a * a).sqrt(), a)
+}
+
+/// The JKR sphere's narrowest stable contact, â = 6^{-1/3} (dδ̂/dâ = 0: its
+/// pull-off under fixed grips, at δ̂ = −0.9086).
+const JKR_NARROWEST: f64 = 0.550_321_208_149_104_5;
+
+/// How far the closed-form curves continue above the solved table: curves at
+/// μ_top · 20^{k/12} (the solved grid's spacing above μ = 5), k = 1 … 48, to
+/// 20⁴ μ_top (3.58e6, with μ_top = 22.36), where JKR's law is within
+/// [`LIMIT_END_ERROR`] of them. Between them P̄ is interpolated within 2.2e-5
+/// of ∫|p| φ̄ of the limit curve's own (μ = 395; 2.1e-5 at 650, 2.0e-6 at
+/// 2.6e5, 7.5e-7 at 3.2e6: test `the_law_between_limit_curves_is_interpolated_as_stated`).
+pub const LIMIT_STEPS: usize = 48;
+
+/// The limit curve against the solved sphere at the solved table's last
+/// curve (μ = 22.36; both integrated by the reference quadrature,
+/// `accuracy::lennard_jones::reference_load_of`): (the rough surface's
+/// pull-off, relative: 1.03e-2 at ℓ = 3, 3.2e-3 at ℓ = 1, 9e-5 at ℓ = 10;
+/// P̄ relative to ∫|p| φ̄ over ℓ = 1 … 100, with and without plasticity,
+/// h = −1 … 4). The pull-off's on the solved curves below, at ℓ = 3: 6.3e-2
+/// at μ = 5, 3.7e-2 at 8.24, 2.0e-2 at 13.6, 1.4e-2 at 17.4 — falling about
+/// as μ^{-1.2}. JKR's law in its place (until 2026-11-28): 0.33 at ℓ = 1,
+/// 0.75 at ℓ = 3, and at ℓ = 10 a pull-off 21 decades too small.
+pub const LIMIT_ERROR: (f64, f64) = (1.03e-2, 2.75e-3);
+
+/// JKR's law against the last limit curve, where it takes over (the rough
+/// surface's pull-off, relative, where adhesion is strong: ℓ = σ/ε = 0.3, 1,
+/// 3 give 7e-4, 1.5e-3, 6.1e-3). Where it is weak JKR's pull-off falls far
+/// below the limit curve's (at ℓ = 10, 1e-29 of the load scale against
+/// 7e-19: both nothing a part feels).
+pub const LIMIT_END_ERROR: f64 = 6.1e-3;
+
+/// A closed-form curve above the solved table (docs/model.md §11 *Above
+/// the table*): JKR's contact branch from the sphere's jump in at
+/// δ̂_s = δ̂_s,top (μ_top/μ)^{1/2} (the solved curves' δ̂_s μ^{1/2} stays
+/// within 1 % of −1.08 from μ = 5 to 22.4), Bradley's rigid sphere on the
+/// approach before it, JKR's pull-off (−1.5 at δ̂ = −0.4368) on the neck
+/// below the switch. As μ → ∞ the jump in nears zero interference and the
+/// approach's reach ẑ0 vanishes: JKR's law, §3. Against the solved curve at
+/// μ_top the surface's pull-off differs by [`LIMIT_ERROR`] (JKR's own law
+/// by up to 75 %).
+pub fn limit_curve(tabor: f64, top: &Curve) -> Curve {
+    let switch = top.switch * (top.tabor / tabor).sqrt();
+    let z0 = super::spacing(tabor);
+    let a = 1.5f64.cbrt();
+    let neck = a * a - 2.0 / 3.0 * (6.0 * a).sqrt();
+    Curve {
+        tabor,
+        z0,
+        // The rigid sphere's apex gap at δ̂_s: δ̂ = ẑ0 (1 − G).
+        end_gap: 1.0 - switch / z0,
+        switch,
+        jumps: true,
+        neck_pull_off: (neck < switch).then_some((neck, -1.5)),
+        limit: true,
+        body: OnceLock::new(),
+        samples: "".into(),
+    }
+}
+
+impl Curve {
+    /// A limit curve's series from its closed form, at the nodes a solved
+    /// curve's samples lie on (its reach δ̂_max = 50, the solved curves').
+    fn limit_body(&self) -> Body {
+        let gaps = approach_gaps(self.end_gap);
+        let load: Vec<f64> = gaps.iter().map(|g| bradley(g.powf(-0.5)).0).collect();
+        let opening = vec![0.0; gaps.len()];
+        let breaks = contact_breaks(self.switch, STEADY_FROM);
+        let (contact, radius): (Vec<f64>, Vec<f64>) =
+            contact_nodes(&breaks).into_iter().map(jkr_sphere).unzip();
+        // JKR's surface force acts inside the contact only.
+        Body::from_samples(
+            (self.end_gap, self.z0),
+            (&load, &opening),
+            breaks,
+            [&contact, &radius, &contact],
+        )
     }
 }
 
@@ -1137,9 +1248,10 @@ pub fn parse(text: &str) -> Result<Vec<Curve>, TableError> {
 /// The committed table.
 pub const TABLE: &str = include_str!("table.txt");
 
-/// The Tabor parameters of the table's first and last curves: the range
-/// where the rough-surface law is the sphere's (outside, its closed-form
-/// limits stand in).
+/// The Tabor parameters of the law's first and last curves: the range where
+/// the rough-surface law is its own (the solver's curves, then the
+/// closed-form limit curves above them; outside, the closed-form laws JKR and
+/// DMT stand in).
 pub fn tabor_range() -> (f64, f64) {
     let c = curves();
     (c[0].tabor, c[c.len() - 1].tabor)
@@ -1152,7 +1264,8 @@ pub fn pull_off_of(index: usize) -> (f64, f64) {
     *all[index].get_or_init(|| curves()[index].pull_off())
 }
 
-/// The committed table's curves, in increasing μ (read once): each block's
+/// The law's curves, in increasing μ (read once): the committed table's,
+/// then [`LIMIT_STEPS`] closed-form [`limit_curve`]s above it. Each block's
 /// header parsed and its six sample lines kept as one slice of [`TABLE`],
 /// unchecked — [`parse`] checks every block's shape, and the test
 /// `every_curve_reads_whole` that it finds the same curves in the committed
@@ -1181,8 +1294,27 @@ pub fn curves() -> &'static [Curve] {
             ));
             rest = &body[end.saturating_sub(1)..];
         }
+        let top = curves.last().expect("the table has curves").clone();
+        let growth = 20f64.powf(1.0 / 12.0);
+        curves.extend(
+            (1..=LIMIT_STEPS).map(|k| limit_curve(top.tabor * growth.powi(k as i32), &top)),
+        );
         curves
     })
+}
+
+/// The solver's curves: [`curves`] without the closed-form ones above them.
+pub fn solved_curves() -> &'static [Curve] {
+    let all = curves();
+    &all[..all.len() - LIMIT_STEPS]
+}
+
+/// The Tabor parameters of the solved table's first and last curves (above
+/// it the closed-form [`limit_curve`]s continue the law to
+/// [`tabor_range`]'s end).
+pub fn solved_range() -> (f64, f64) {
+    let c = solved_curves();
+    (c[0].tabor, c[c.len() - 1].tabor)
 }
 
 /// A block's header: what the solver found of the curve besides its samples.
@@ -1340,7 +1472,9 @@ mod tests {
     fn the_tail_continues_the_last_panel_and_integrates_its_slope() {
         let rule = crate::model::gauss::rule(32);
         let (mut worst_ratio, mut worst_rise, mut sparse_ratio) = (0.0f64, 0.0f64, 0.0f64);
-        for curve in curves() {
+        // The solver's curves (the limit curves' tails follow JKR's sphere,
+        // tests/all/lennard_jones_limit.rs).
+        for curve in solved_curves() {
             let tail = &curve.body().tail;
             let Shift::Squeezed { ratio, .. } = tail.shift else {
                 panic!("μ = {}: no deficit", curve.tabor)
