@@ -20,14 +20,15 @@ use wearopt::model::lennard_jones::{spacing, SphereSettings};
 /// loading trace does not converge (nor at 0.700, 0.703, 0.7241 or 0.7253,
 /// where the S-shape's two turns lie within a few thousandths of δ̂; it does
 /// at 0.696 and from 0.7275), and the curve at μ = 0.7275 stands in for it.
-/// Then on from 5 in steps of 20^{1/12} (9.2 per decade) to 5√20 = 22.4, a
+/// Then on from 5 in steps of 20^{1/24} (18.4 per decade) to 5√20 = 22.4, a
 /// sparser grid because these curves cost more to write (4 minutes at
-/// μ = 6.4, 20 at 22.4): between them P̄ is within 3.7e-5 of the solver's
-/// (`tests/all/lennard_jones_rough.rs`, against curves between them), where
-/// about 32 a decade would reach 1e-6. Beyond 22.4 JKR stands in.
+/// μ = 5.3, 23 at 21): between them P̄, interpolated from six curves, is
+/// within 1e-6 of the solver's (`tests/all/lennard_jones_rough.rs`, against
+/// curves between them; 3.7e-5 from four on half the curves). Above 22.4
+/// the law's closed-form limit curves continue (`table::limit_curve`).
 fn grid() -> Vec<f64> {
     let (lo, hi, steps) = (0.01f64, 5.0f64, 132);
-    let (top, top_steps) = (5.0 * 20f64.sqrt(), 6);
+    let (top, top_steps) = (5.0 * 20f64.sqrt(), 12);
     (0..=steps)
         .map(|i| {
             if i == 91 {

@@ -5,20 +5,20 @@
 # the result against the converged solver between its nodes.
 #
 #   scripts/lennard_jones_table.sh            # the grid: μ = 0.01 … 5, 132 steps (49 per decade),
-#                                             # then to 22.4 in 6 (9.2 per decade)
+#                                             # then to 22.4 in 12 (18.4 per decade)
 #   scripts/lennard_jones_table.sh check      # only the check of the committed table
 #   scripts/lennard_jones_table.sh check 0.01 1.95   # of the curves at those μ
 #   scripts/lennard_jones_table.sh between    # tests/data/lennard_jones_between.txt
 #   scripts/lennard_jones_table.sh far        # tests/data/lennard_jones_far.txt
 #
-# Takes about two and a half hours on one core to write (release build; 17–103 s a
-# curve up to μ = 5, 4–20 minutes above); the check took two hours for the
+# Takes about three and a half hours on one core to write (release build; 17–103 s a
+# curve up to μ = 5, 4–23 minutes above); the check took two hours for the
 # first table's 34 curves.
-# `between` writes fourteen curves the table does not hold, at the geometric
-# midpoints between ten pairs of its curves (where the interpolation in μ
+# `between` writes fifteen curves the table does not hold, at the geometric
+# midpoints between eleven pairs of its curves (where the interpolation in μ
 # errs most; three of them beside the cusp), at μ = 0.696, 0.735 and 0.745
 # beside the cusp and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
-# measures that interpolation against (about 8 minutes). `far` writes three
+# measures that interpolation against (about 45 minutes, 23 of them at μ = 21). `far` writes three
 # curves of the table (μ = 0.01, 0.105, 0.918) with contact parts twice or
 # three times as far as the table's (to δ̂ = 452 and 150), which the same
 # tests measure the table's tail against (about 12 minutes). The contact
@@ -37,9 +37,10 @@ if [[ "${1:-}" == between ]]; then
     # last single-valued curve) and 0.735, 0.745 (above it, next to the
     # first S-shaped one, 0.7275; within μ = 0.70 … 0.725 the generator's
     # loading trace does not converge: at 0.7241 it stalls at apex gap 1.33).
-    # Above 5: the geometric midpoints 5 · 20^{i/12} at i = 0.5 and 5.5,
-    # next to the table's switch of spacing and in the middle of its top.
-    mus=$(python3 -c 'print(" ".join(repr(m) for m in sorted([0.37421544616518193, 0.696, 0.735, 0.745] + [0.01 * 500 ** (i / 132) for i in (23.5, 51.5, 79.5, 88.5, 89.5, 92.5, 107.5, 127.5)] + [5 * 20 ** (i / 12) for i in (0.5, 5.5)])))')
+    # Above 5: the geometric midpoints 5 · 20^{i/24} at i = 0.5, 5.5 and
+    # 11.5, next to the table's switch of spacing, in the middle and between
+    # its last two curves (where the six-curve stencil is most one-sided).
+    mus=$(python3 -c 'print(" ".join(repr(m) for m in sorted([0.37421544616518193, 0.696, 0.735, 0.745] + [0.01 * 500 ** (i / 132) for i in (23.5, 51.5, 79.5, 88.5, 89.5, 92.5, 107.5, 127.5)] + [5 * 20 ** (i / 24) for i in (0.5, 5.5, 11.5)])))')
     # shellcheck disable=SC2086
     "$bin" 1 $mus > tests/data/lennard_jones_between.txt.new
     mv tests/data/lennard_jones_between.txt.new tests/data/lennard_jones_between.txt

@@ -171,7 +171,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 4 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {}, where the table's grid is sparse); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to three times as far) by {}",
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 4 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {} to the solved table's end, where the grid is sparser, quintically from six curves); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to three times as far) by {}",
                 crate::units::format_number(crate::model::lennard_jones::rough::SPARSE_ABOVE),
                 TAIL_ERROR
                     .iter()
@@ -196,7 +196,7 @@ pub fn text(wp: &WorkPrecision) -> String {
                 crate::units::format_number(crate::model::lennard_jones::table::solved_range().1);
             let _ = writeln!(
                 out,
-                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s ∝ μ^(-1/2), scaled from the last solved curve) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.1e} of ∫|p| φ̄, falling with μ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3)",
+                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s ∝ μ^(-1/2), scaled from the last solved curve) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.2e} of ∫|p| φ̄, falling with μ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3)",
                 100.0 * LIMIT_ERROR.0,
                 LIMIT_ERROR.1
             );

@@ -122,7 +122,7 @@ fn pull_off(curve: &Curve, ell: f64) -> f64 {
 /// without plasticity, h = −1 … 4; measured 2.75e-3) — where JKR's law (the
 /// stand-in there until 2026-11-28) missed the pull-off by a third and more.
 /// Smaller on the solved curves above than below (the difference falls as μ
-/// grows: at μ = 17.4 the pull-off's is 1.4e-2).
+/// grows: at μ = 19.7 the pull-off's is 1.2e-2).
 #[test]
 fn the_limit_curve_stands_in_for_the_sphere_as_stated() {
     let solved = solved_curves();

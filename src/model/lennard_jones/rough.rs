@@ -170,30 +170,36 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
         .iter()
         .position(|&k| c[k].tabor >= tabor)
         .unwrap_or(kept.len() - 1);
-    let first = above.saturating_sub(2).min(kept.len() - 4);
+    // Six curves where the solved grid is sparse, four elsewhere.
+    let sparse = tabor > SPARSE_ABOVE && tabor <= super::table::solved_range().1;
+    let width = if sparse { 6 } else { 4 };
+    let first = above.saturating_sub(width / 2).min(kept.len() - width);
     // The solver's curves and the limit curves above them are kept apart, as
     // the cusp's sides are: up to the solved table's end a stencil of solved
     // curves; above it, the last solved curve and the limit curves (a
     // stencil reaching down into the solved curves carried the limit
-    // curves' 1 % into them: 2.0e-4 at μ = 19.7 against 3.7e-5).
+    // curves' 1 % into them: 2.0e-4 at μ = 19.7 against 3.7e-5, on half
+    // the grid above μ = 5).
     let solved = kept.iter().filter(|&&k| !c[k].limit).count();
     let first = if tabor <= super::table::solved_range().1 {
-        first.min(solved.saturating_sub(4))
+        first.min(solved.saturating_sub(width))
     } else {
         first.max(solved.saturating_sub(1))
     };
     // The four weights of cubic Lagrange interpolation in `variable` over the
     // four curves from `first` on.
-    let lagrange = |first: usize, variable: fn(f64) -> f64| -> [f64; 4] {
-        let ks = &kept[first..first + 4];
+    let lagrange = |first: usize, variable: fn(f64) -> f64| -> Vec<f64> {
+        let ks = &kept[first..first + width];
         let x = variable(tabor);
-        let xs: [f64; 4] = std::array::from_fn(|i| variable(c[ks[i]].tabor));
-        std::array::from_fn(|i| {
-            (0..4)
-                .filter(|&j| j != i)
-                .map(|j| (x - xs[j]) / (xs[i] - xs[j]))
-                .product::<f64>()
-        })
+        let xs: Vec<f64> = ks.iter().map(|&k| variable(c[k].tabor)).collect();
+        (0..width)
+            .map(|i| {
+                (0..width)
+                    .filter(|&j| j != i)
+                    .map(|j| (x - xs[j]) / (xs[i] - xs[j]))
+                    .product::<f64>()
+            })
+            .collect()
     };
     let weights = |first: usize, share: f64| -> Vec<(usize, f64, f64)> {
         // The pull-off in ln μ up to 5, in μ^{-2/3} above, where it nears
@@ -207,7 +213,7 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
             lagrange(first, f64::recip),
             lagrange(first, pull_off_variable),
         );
-        (0..4)
+        (0..width)
             .map(|i| (kept[first + i], share * integrals[i], share * pull_off[i]))
             .collect()
     };
@@ -215,9 +221,9 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     // integrals are not smooth in μ there): the nearest four on that side;
     // within CUSP_BLEND of it the two sides' are blended linearly in ln μ, so
     // that P̄ stays continuous in μ.
-    let one_sided = |f: usize, side: bool| (f..f + 4).all(|i| c[kept[i]].jumps == side);
+    let one_sided = |f: usize, side: bool| (f..f + width).all(|i| c[kept[i]].jumps == side);
     let nearest = |side: bool| {
-        (0..=kept.len() - 4)
+        (0..=kept.len() - width)
             .filter(|&f| one_sided(f, side))
             .min_by_key(|&f| f.abs_diff(first))
     };
@@ -236,11 +242,14 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     }
 }
 
-/// The Tabor parameter above which the table's grid is sparse (9.2 curves
-/// a decade, against 49 below): there one summit's pull-off is interpolated in
-/// μ^{-2/3} (the curves', left out in turn, within 1.4e-6 in μ^{-2/3},
-/// 1.2e-5 in ln μ and 5.2e-6 in 1/μ; at μ = 10 within 1.4e-7 of the
-/// independent solution's, 1.1e-6 in ln μ).
+/// The Tabor parameter above which the table's grid is sparser (18.4
+/// curves a decade, against 49 below) and six curves serve a stencil up to the
+/// solved table's end (four elsewhere): there one summit's pull-off is
+/// interpolated in μ^{-2/3} (on half the grid, the curves', left out in turn,
+/// within 1.4e-6 in μ^{-2/3}, 1.2e-5 in ln μ and 5.2e-6 in 1/μ; at μ = 10
+/// within 1.4e-7 of the independent solution's, 1.1e-6 in ln μ; now at the
+/// curves written between, μ = 5.32, 9.93 and 21.0, within 3.3e-8, 1.1e-10
+/// and 1.1e-10).
 pub const SPARSE_ABOVE: f64 = 5.0;
 
 /// The half-width in ln μ of the blend between the two sides' stencils at

@@ -837,14 +837,17 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// (below). Not measured within μ = 0.70 … 0.725, where the generator's
 /// trace does not converge. (On the table of 67 curves: 4.0e-6 and 9.2e-6.)
 pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 2.7e-6);
-/// As [`INTERPOLATION_ERROR`] above μ = 5 (`rough::SPARSE_ABOVE`), where the
-/// table's grid is sparse (9.2 curves a decade, each 4–20 minutes to write
-/// on the stretching mesh): at the midpoints μ = 5.66 and 19.7 (1.7e-5 and
-/// 3.7e-5; with one curve left out, twice the spacing, 5.8e-4). Not yet the
-/// 1e-6 asked there: the curves change with μ there faster than a cubic over
-/// that spacing follows (the switch moves as μ^{-1/2}, δ̂_s ≈ −1.08 μ^{-1/2});
-/// the grid would need about 32 curves a decade.
-pub const INTERPOLATION_ERROR_SPARSE: f64 = 3.7e-5;
+/// As [`INTERPOLATION_ERROR`] above μ = 5 (`rough::SPARSE_ABOVE`) up to the
+/// solved table's end, where the grid is sparser (18.4 curves a decade, each
+/// 4–23 minutes to write on the stretching mesh) and six curves serve a
+/// stencil, interpolated in 1/μ by Lagrange's quintic: at the midpoints
+/// μ = 5.32, 9.93 and 21.0, 2.1e-8, 9.8e-8 and 2.5e-7 (the last between the
+/// table's last two curves, where the stencil is most one-sided). With four
+/// curves a stencil on the same grid 1.4e-6 and 2.6e-6 at 5.32 and 21.0; on
+/// half the grid (9.2 a decade, until 2026-11-28) 1.7e-5 and 3.7e-5: the
+/// switch moves as μ^{-1/2} (δ̂_s ≈ −1.08 μ^{-1/2}), faster than a cubic over
+/// that spacing follows.
+pub const INTERPOLATION_ERROR_SPARSE: f64 = 2.5e-7;
 /// Beyond δ̂_max (50, or 4 ẑ0 where that is further: μ < 0.0444) the tail (a
 /// Hertz load whose shift follows the squeezed gap, [`squeezed_deficit`],
 /// matched to the last panel: [`Curve::contact`]) stands in for the solver;
