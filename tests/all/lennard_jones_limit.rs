@@ -39,7 +39,8 @@ fn jkr_sphere_is_the_closed_form() {
 /// The law's curves: the solver's to μ_top = 22.36, then [`LIMIT_STEPS`]
 /// closed-form curves in steps of 20^{1/12} to 20⁴ μ_top. Each is JKR's sphere
 /// on its contact part (to its panels' interpolation, 1e-12; the tail beyond
-/// δ̂ = 50, the squeezed-gap Hertz load, within 2e-6), from the switch
+/// δ̂ = 50, the squeezed-gap Hertz load, within 2e-6; the contact radius
+/// there JKR's own), from the switch
 /// δ̂_s μ^{1/2} of the last solved curve, and Bradley's rigid sphere before it
 /// (the approach part's end is at δ̂_s); its pull-off JKR's, on the neck.
 #[test]
@@ -82,8 +83,13 @@ fn the_limit_curves_are_jkr_from_the_jump_in() {
             );
         }
         for d in [60.0, 400.0, 1e4] {
-            let p = jkr_sphere(d).0;
+            let (p, a) = jkr_sphere(d);
             assert!((c.load(d) / p - 1.0).abs() < 2e-6, "μ {} δ̂ {d}", c.tabor);
+            let ((radius, slope), (inner, _)) = c.contact_area_slope(d);
+            assert!((radius - a).abs() < 1e-13 * a && inner == c.load(d));
+            let e = 1e-4 * d;
+            let central = (jkr_sphere(d + e).1 - jkr_sphere(d - e).1) / (2.0 * e);
+            assert!((central / slope - 1.0).abs() < 1e-7, "{central} vs {slope}");
         }
         let (d, p) = c.pull_off();
         assert!((p + 1.5).abs() < 1e-15 && (d + 0.436_790).abs() < 1e-6);
@@ -239,5 +245,26 @@ fn jkr_takes_over_where_the_limit_curves_end() {
     for (ell, ratio) in [(1.0, 1.68), (3.0, 7.4)] {
         let r = pull(solved, ell, Some(())) / pull(solved, ell, None);
         assert!((r / ratio - 1.0).abs() < 0.01, "ℓ {ell}: {r}");
+    }
+}
+
+/// On a limit curve the plastic rule (docs/model.md §11: P̂_in/â² reaches
+/// c_h ℓ^{1/2}) is §3's JKR rule exactly: with P̂_in = P̂ = â³ − (6â³)^{1/2}
+/// and t = â^{1/2} it is the cubic t³ − c_h t − √6 = 0, Δc = t⁴ − (2/3)√6 t
+/// (ℓ = 1) — within 1e-10 on the panels, and within 1e-6 beyond δ̂ = 50,
+/// where the load is the tail's (c_h = 30: Δc = 918).
+#[test]
+fn the_plastic_rule_on_a_limit_curve_is_jkrs() {
+    let c = &curves()[solved_curves().len() + 10];
+    for (c_h, tolerance) in [(3.0f64, 1e-10), (6.0, 1e-10), (30.0, 1e-6)] {
+        let c_a = 6f64.sqrt();
+        let mut t = c_h.sqrt() + 1.0;
+        for _ in 0..60 {
+            t -= (t * t * t - c_h * t - c_a) / (3.0 * t * t - c_h);
+        }
+        let jkr = t.powi(4) - 2.0 / 3.0 * c_a * t;
+        let dc = critical_interference(c, c_h);
+        println!("c_h = {c_h}: Δc = {dc} against JKR's {jkr}");
+        assert!((dc / jkr - 1.0).abs() < tolerance, "{dc} vs {jkr}");
     }
 }

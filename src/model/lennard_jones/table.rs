@@ -623,16 +623,11 @@ impl Curve {
     /// The contact radius â and the load inside it, P̂_in, on the contact part
     /// at δ̂ ≥ δ̂_s.
     /// Beyond δ̂_max, â² continues along its tangent and P̂_in keeps its offset
-    /// from P̂ (both Hertzian there).
+    /// from P̂ (both Hertzian there); on a limit curve â is JKR's own (its
+    /// tangent would be 0.5 % wide at δ̂ = 400) and P̂_in is P̂.
     pub fn contact_area(&self, d: f64) -> (f64, f64) {
-        let max = self.max_interference();
-        let k = self.panel(d.min(max));
-        if d <= max {
-            return (self.body().radius[k].at(d).0, self.body().inner[k].at(d).0);
-        }
-        let (a, slope) = self.body().radius[k].at(max);
-        let inner = self.body().inner[k].at(max).0 - self.body().tail.load + self.contact(d).0;
-        ((a * a + 2.0 * a * slope * (d - max)).sqrt(), inner)
+        let ((a, _), (inner, _)) = self.contact_area_slope(d);
+        (a, inner)
     }
 
     /// [`Curve::contact_area`] with the δ̂-derivatives: (â, dâ/dδ̂) and
@@ -642,6 +637,12 @@ impl Curve {
         let k = self.panel(d.min(max));
         if d <= max {
             return (self.body().radius[k].at(d), self.body().inner[k].at(d));
+        }
+        if self.limit {
+            // dδ̂/dâ = 2â − (6â)^{1/2}/(3â).
+            let a = jkr_sphere(d).1;
+            let slope = 1.0 / (2.0 * a - (6.0 * a).sqrt() / (3.0 * a));
+            return ((a, slope), self.contact(d));
         }
         let (a, slope) = self.body().radius[k].at(max);
         let (load, load_slope) = self.contact(d);
