@@ -9,8 +9,8 @@ use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
 use crate::model::lennard_jones::table::{
-    INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE, LIMIT_ERROR, SOLVER_ERROR, TABLE_ERROR,
-    TAIL_ERROR, TAIL_SCALES,
+    INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE, LIMIT_CHECK, LIMIT_ERROR, SOLVER_ERROR,
+    TABLE_ERROR, TAIL_ERROR, TAIL_SCALES,
 };
 use crate::model::AttractionKind;
 
@@ -89,6 +89,9 @@ pub fn json(wp: &WorkPrecision) -> String {
             "to_tabor": crate::model::lennard_jones::table::tabor_range().1,
             "pull_off_error": LIMIT_ERROR.0,
             "load_error": LIMIT_ERROR.1,
+            "check_tabor": LIMIT_CHECK.0,
+            "check_pull_off_error": LIMIT_CHECK.1,
+            "check_load_error": LIMIT_CHECK.2,
         },
         "lennard_jones_error": {
             "table_against_solver": TABLE_ERROR,
@@ -196,9 +199,12 @@ pub fn text(wp: &WorkPrecision) -> String {
                 crate::units::format_number(crate::model::lennard_jones::table::solved_range().1);
             let _ = writeln!(
                 out,
-                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s ∝ μ^(-1/2), scaled from the last solved curve) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.2e} of ∫|p| φ̄, falling with μ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3)",
+                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s ∝ μ^(-1/2), scaled from the last solved curve) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.2e} of ∫|p| φ̄ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3); at μ = {}, against a curve the solver wrote there, the law's pull-off within {:.1} %, P̄ within {:.1e}",
                 100.0 * LIMIT_ERROR.0,
-                LIMIT_ERROR.1
+                LIMIT_ERROR.1,
+                crate::units::format_number(LIMIT_CHECK.0),
+                100.0 * LIMIT_CHECK.1,
+                LIMIT_CHECK.2
             );
             let _ = writeln!(
                 out,

@@ -268,3 +268,75 @@ fn the_plastic_rule_on_a_limit_curve_is_jkrs() {
         assert!((dc / jkr - 1.0).abs() < tolerance, "{dc} vs {jkr}");
     }
 }
+
+/// The law above the solved table against a curve the solver wrote there and
+/// the table does not hold (μ = √1000 = 31.6, `tests/data/lennard_jones_above.txt`):
+/// what the law serves (the last solved curve and the limit curves, weighted)
+/// within `LIMIT_CHECK` — the rough surface's pull-off (ℓ = 1 … 100; measured
+/// 1.5e-3, 5.9e-3, 2.1e-5 at ℓ = 1, 3, 10) and P̄ relative to ∫|p| φ̄ (ℓ = 1 …
+/// 100, with and without plasticity, h = −1 … 4; measured 3.5e-3).
+#[test]
+fn the_law_above_the_table_against_a_solved_curve_there() {
+    use wearopt::model::lennard_jones::table::{parse, LIMIT_CHECK};
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/lennard_jones_above.txt"
+    ))
+    .expect("the committed curve");
+    let own = parse(&text).expect("it parses").remove(0);
+    let mu = own.tabor;
+    assert!((mu / LIMIT_CHECK.0 - 1.0).abs() < 1e-3 && mu > solved_range().1);
+    let (mut pull, mut load) = (0.0f64, 0.0f64);
+    for ell in [1.0f64, 3.0, 10.0, 30.0, 100.0] {
+        for c_h in [5.0, f64::INFINITY] {
+            let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
+            let law = RoughLaw::new(c.c_0, c.c_h, spacing(mu) / ell).unwrap();
+            let dc = critical_interference(&own, c_h * ell.sqrt()) / ell;
+            for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+                let (a, size) = reference_load_of(law.curves(), ell, c, h);
+                let (b, _) = reference_load_of([(&own, 1.0, dc)], ell, c, h);
+                load = load.max((a - b).abs() / size);
+            }
+        }
+        let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), f64::INFINITY);
+        let law = RoughLaw::new(c.c_0, c.c_h, spacing(mu) / ell).unwrap();
+        let served = served_pull_off(&law, ell);
+        let solved = pull_off(&own, ell);
+        println!(
+            "ℓ = {ell}: pull-off {solved:.6e}, the law {:+.3e}",
+            served / solved - 1.0
+        );
+        pull = pull.max((served / solved - 1.0).abs());
+    }
+    println!("pull-off within {pull:.3e}, P̄ within {load:.3e}");
+    for (worst, stated) in [(pull, LIMIT_CHECK.1), (load, LIMIT_CHECK.2)] {
+        assert!(
+            (0.5 * stated..=1.05 * stated).contains(&worst),
+            "{worst:e} vs {stated:e}"
+        );
+    }
+}
+
+/// [`pull_off`] of what a law serves (its curves, weighted).
+fn served_pull_off(law: &RoughLaw, ell: f64) -> f64 {
+    let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), f64::INFINITY);
+    let f = |h: f64| reference_load_of(law.curves(), ell, c, h).0;
+    let mut best = (0.0, f64::INFINITY);
+    for i in 0..=100 {
+        let h = -2.0 + 0.1 * i as f64;
+        let v = f(h);
+        if v < best.1 {
+            best = (h, v);
+        }
+    }
+    let (mut a, mut b) = (best.0 - 0.1, best.0 + 0.1);
+    for _ in 0..40 {
+        let (m1, m2) = (a + 0.382 * (b - a), a + 0.618 * (b - a));
+        if f(m1) < f(m2) {
+            b = m2;
+        } else {
+            a = m1;
+        }
+    }
+    f(0.5 * (a + b))
+}
