@@ -97,10 +97,14 @@ fn the_limit_curves_are_jkr_from_the_jump_in() {
 }
 
 /// The pull-off of P̄(h) of one curve alone (no plasticity), by the reference
-/// quadrature: a scan in h, then golden sections.
+/// quadrature.
 fn pull_off(curve: &Curve, ell: f64) -> f64 {
     let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), f64::INFINITY);
-    let f = |h: f64| reference_load_of([(curve, 1.0, f64::INFINITY)], ell, c, h).0;
+    deepest(|h| reference_load_of([(curve, 1.0, f64::INFINITY)], ell, c, h).0)
+}
+
+/// The most negative P̄(h) for h in −2 … 8: a scan in h, then golden sections.
+fn deepest(f: impl Fn(f64) -> f64) -> f64 {
     let mut best = (0.0, f64::INFINITY);
     for i in 0..=100 {
         let h = -2.0 + 0.1 * i as f64;
@@ -320,23 +324,5 @@ fn the_law_above_the_table_against_a_solved_curve_there() {
 /// [`pull_off`] of what a law serves (its curves, weighted).
 fn served_pull_off(law: &RoughLaw, ell: f64) -> f64 {
     let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), f64::INFINITY);
-    let f = |h: f64| reference_load_of(law.curves(), ell, c, h).0;
-    let mut best = (0.0, f64::INFINITY);
-    for i in 0..=100 {
-        let h = -2.0 + 0.1 * i as f64;
-        let v = f(h);
-        if v < best.1 {
-            best = (h, v);
-        }
-    }
-    let (mut a, mut b) = (best.0 - 0.1, best.0 + 0.1);
-    for _ in 0..40 {
-        let (m1, m2) = (a + 0.382 * (b - a), a + 0.618 * (b - a));
-        if f(m1) < f(m2) {
-            b = m2;
-        } else {
-            a = m1;
-        }
-    }
-    f(0.5 * (a + b))
+    deepest(|h| reference_load_of(law.curves(), ell, c, h).0)
 }
