@@ -199,7 +199,7 @@ pub fn text(wp: &WorkPrecision) -> String {
                 crate::units::format_number(crate::model::lennard_jones::table::solved_range().1);
             let _ = writeln!(
                 out,
-                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s ∝ μ^(-1/2), scaled from the last solved curve) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.2e} of ∫|p| φ̄ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3); at μ = {}, against a curve the solver wrote there, the law's pull-off within {:.1} %, P̄ within {:.1e}",
+                "above the solved table (μ = {solved}) to μ = {hi} the law's curves are its closed-form limit, JKR's contact branch from the sphere's jump in (δ̂_s = −(C μ^(-4/7) − D μ^(-1)) through the last two solved curves) and the rigid sphere's approach: at μ = {solved} the rough surface's pull-off under it is within {:.1} % of the solved sphere's, P̄ within {:.2e} of ∫|p| φ̄ (JKR's law there: 33 % at ℓ = 1, 75 % at ℓ = 3); at μ = {}, against a curve the solver wrote there, the law's pull-off within {:.1} %, P̄ within {:.1e}",
                 100.0 * LIMIT_ERROR.0,
                 LIMIT_ERROR.1,
                 crate::units::format_number(LIMIT_CHECK.0),

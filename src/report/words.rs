@@ -228,7 +228,7 @@ pub fn note(n: &Note) -> String {
         } => {
             let solved = format_number(crate::model::lennard_jones::table::solved_range().1);
             format!(
-                "Tabor parameter φ0 = {} lies above the Lennard-Jones sphere's solved table (to {solved}): the law's curves there are its closed-form limit, JKR's contact branch from the sphere's jump in (at interference ≈ −1.08 μ^(-1/2) in Maugis units) with the rigid sphere's attraction before it; at μ = {solved} the rough surface's pull-off under it was within {:.1} % of the solved sphere's, the difference falling as μ grows",
+                "Tabor parameter φ0 = {} lies above the Lennard-Jones sphere's solved table (to {solved}): the law's curves there are its closed-form limit, JKR's contact branch from the sphere's jump in (at interference −(1.49 μ^(-4/7) − 0.565 μ^(-1)) in Maugis units, fitted to the solved curves) with the rigid sphere's attraction before it; at μ = {solved} the rough surface's pull-off under it was within {:.1} % of the solved sphere's, the difference falling as μ grows",
                 sig_exp(*tabor_parameter, 3),
                 100.0 * pull_off_error
             )

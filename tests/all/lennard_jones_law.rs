@@ -311,7 +311,7 @@ fn outside_the_table_the_limits_stand_in() {
             .expect("the stand-in is noted");
         assert_eq!(note.0, limit);
         // Above, the rough surface's pull-off under JKR's law against the
-        // last limit curve's (6.1e-3 where adhesion is strong); below,
+        // last limit curve's (2.9e-3 where adhesion is strong); below,
         // Bradley's 2 against the table's 1.99897 at μ = 0.01.
         assert!(note.1 > 1e-4 && note.1 < 2e-2, "{note:?}");
     }
