@@ -14,10 +14,10 @@
 # Takes about three and a half hours on one core to write (release build; 17–103 s a
 # curve up to μ = 5, 4–23 minutes above); the check took two hours for the
 # first table's 34 curves.
-# `between` writes fifteen curves the table does not hold, at the geometric
+# `between` writes seventeen curves the table does not hold, at the geometric
 # midpoints between eleven pairs of its curves (where the interpolation in μ
-# errs most; three of them beside the cusp), at μ = 0.696, 0.735 and 0.745
-# beside the cusp and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
+# errs most; three of them beside the cusp), at μ = 0.696, 0.72875, 0.73, 0.735
+# and 0.745 beside the cusp and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
 # measures that interpolation against (about 45 minutes, 23 of them at μ = 21). `far` writes three
 # curves of the table (μ = 0.01, 0.105, 0.918) with contact parts twice or
 # three times as far as the table's (to δ̂ = 452 and 150), which the same
@@ -34,13 +34,14 @@ if [[ "${1:-}" == between ]]; then
     # 107.5, 127.5 (88.5 and 89.5 below the cusp, 92.5 above it), the hub's
     # (problems/micro-gear.toml: `wearopt eval --format json`'s
     # tabor_parameter), and beside the cusp μ = 0.696 (below it, beyond the
-    # last single-valued curve) and 0.735, 0.745 (above it, next to the
-    # first S-shaped one, 0.7275; within μ = 0.70 … 0.725 the generator's
+    # last single-valued curve) and 0.72875, 0.73, 0.735, 0.745 (above it,
+    # next to the first S-shaped one, 0.7275, which the generator writes at
+    # refinement 2; within μ = 0.70 … 0.725 the generator's
     # loading trace does not converge: at 0.7241 it stalls at apex gap 1.33).
     # Above 5: the geometric midpoints 5 · 20^{i/24} at i = 0.5, 5.5 and
     # 11.5, next to the table's switch of spacing, in the middle and between
     # its last two curves (where the six-curve stencil is most one-sided).
-    mus=$(python3 -c 'print(" ".join(repr(m) for m in sorted([0.37421544616518193, 0.696, 0.735, 0.745] + [0.01 * 500 ** (i / 132) for i in (23.5, 51.5, 79.5, 88.5, 89.5, 92.5, 107.5, 127.5)] + [5 * 20 ** (i / 24) for i in (0.5, 5.5, 11.5)])))')
+    mus=$(python3 -c 'print(" ".join(repr(m) for m in sorted([0.37421544616518193, 0.696, 0.72875, 0.73, 0.735, 0.745] + [0.01 * 500 ** (i / 132) for i in (23.5, 51.5, 79.5, 88.5, 89.5, 92.5, 107.5, 127.5)] + [5 * 20 ** (i / 24) for i in (0.5, 5.5, 11.5)])))')
     # shellcheck disable=SC2086
     "$bin" 1 $mus > tests/data/lennard_jones_between.txt.new
     mv tests/data/lennard_jones_between.txt.new tests/data/lennard_jones_between.txt
