@@ -48,7 +48,8 @@ const FIRST_S_SHAPED: f64 = 0.7275;
 /// [`FIRST_S_SHAPED`], next to where the loading trace stops converging.
 /// There the curve at refinement 1 was 4.3e-6 of ∫|p| φ̄ off its own at 2
 /// (rough-surface P̄, ℓ = 1 … 100, h = −1 … 4; at μ = 0.73 the two agree
-/// within 8e-9), and P̄ interpolated beside the cusp was 2.7e-6 off the
+/// within 8e-9; at 0.7275 refinement 3, 36 CPU-minutes, agrees with 2
+/// within 4.9e-10), and P̄ interpolated beside the cusp was 2.7e-6 off the
 /// solver's at μ = 0.735, 2.7e-6 at 0.73; from the curve at refinement 2,
 /// 2.1e-7 and 9.6e-8, as between the table's other curves.
 fn refinement_of(mu: f64, refinement: f64) -> f64 {
