@@ -8,8 +8,8 @@ use wearopt::accuracy::lennard_jones::reference_load_of;
 use wearopt::model::lennard_jones::rough::{critical_interference, RoughLaw};
 use wearopt::model::lennard_jones::spacing;
 use wearopt::model::lennard_jones::table::{
-    bradley, curves, jkr_sphere, limit_curve, solved_curves, solved_range, tabor_range, Curve,
-    JumpIn, LIMIT_END_ERROR, LIMIT_ERROR, LIMIT_STEPS,
+    bradley, curves, jkr_sphere, limit_curve, limit_jump_in, parse, solved_curves, solved_range,
+    tabor_range, Curve, JumpIn, LIMIT_END_ERROR, LIMIT_ERROR, LIMIT_STEPS,
 };
 use wearopt::model::{find_pull_off, AsperityLaw, Coefficients, Model, Quadrature};
 
@@ -48,7 +48,7 @@ fn the_limit_curves_are_jkr_from_the_jump_in() {
     let (all, solved) = (curves(), solved_curves());
     assert_eq!(all.len(), solved.len() + LIMIT_STEPS);
     let top = solved.last().unwrap();
-    let jump_in = JumpIn::through(&solved[solved.len() - 2], top);
+    let jump_in = limit_jump_in();
     assert!(solved.iter().all(|c| !c.limit) && all[solved.len()..].iter().all(|c| c.limit));
     assert_eq!(solved_range().1, top.tabor);
     assert!((tabor_range().1 / (top.tabor * 20f64.powi(4)) - 1.0).abs() < 1e-12);
@@ -105,37 +105,37 @@ fn the_limit_curves_are_jkr_from_the_jump_in() {
 /// term alone, C μ^{-4/7}, is 16 % off at 10.6.
 #[test]
 fn the_jump_in_follows_the_solved_curves() {
-    use wearopt::model::lennard_jones::table::parse;
     let solved = solved_curves();
-    let n = solved.len();
-    let jump_in = JumpIn::through(&solved[n - 2], &solved[n - 1]);
+    let jump_in = limit_jump_in();
     assert!((jump_in.leading - 1.4915).abs() < 1e-4 && (jump_in.offset - 0.5648).abs() < 1e-4);
-    let read = |name: &str| {
-        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
-        parse(&std::fs::read_to_string(path).expect("committed")).expect("it parses")
-    };
     let off = |c: &Curve| (jump_in.at(c.tabor) / c.switch - 1.0).abs();
     let below = solved
         .iter()
         .filter(|c| c.tabor > 10.0)
         .map(off)
         .fold(0.0, f64::max);
-    let between = read("lennard_jones_between.txt")
+    let between = committed("lennard_jones_between.txt")
         .iter()
         .filter(|c| c.tabor > 20.0)
         .map(off)
         .fold(0.0, f64::max);
-    let above = off(&read("lennard_jones_above.txt")[0]);
+    let c = &committed("lennard_jones_above.txt")[0];
+    let above = off(c);
     println!(
         "jump in: {below:.2e} on the curves above 10, {between:.2e} at 21.0, {above:.2e} at 31.6"
     );
     assert!(below < 6e-6 && between < 5e-8 && above < 7e-7);
-    let old = top_switch_rule(&solved[n - 1], 31.622_776_601_683_793);
-    let c = &read("lennard_jones_above.txt")[0];
+    let old = top_switch_rule(solved.last().unwrap(), c.tabor);
     assert!((old / c.switch - 1.0 - 9.6e-3).abs() < 1e-4);
     let at = solved.iter().find(|c| c.tabor > 10.0).unwrap();
     let leading = jump_in.leading * at.tabor.powf(-4.0 / 7.0) / -at.switch - 1.0;
     assert!((leading - 0.16).abs() < 0.01, "{leading}");
+}
+
+/// The curves in a committed file of tests/data.
+fn committed(name: &str) -> Vec<Curve> {
+    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    parse(&std::fs::read_to_string(path).expect("committed")).expect("it parses")
 }
 
 /// The switch the limit curves took until 2026-11-28: the last solved
@@ -234,7 +234,7 @@ fn the_limit_curve_stands_in_for_the_sphere_as_stated() {
 fn the_law_between_limit_curves_is_interpolated_as_stated() {
     let all = curves();
     let n = solved_curves().len();
-    let jump_in = JumpIn::through(&solved_curves()[n - 2], &solved_curves()[n - 1]);
+    let jump_in = limit_jump_in();
     for (k, stated) in [(n + 12, 1.7e-5), (n + 36, 1.05e-6), (all.len() - 2, 3.3e-7)] {
         let mu = (all[k].tabor * all[k + 1].tabor).sqrt();
         let own = limit_curve(mu, &jump_in);
@@ -332,13 +332,8 @@ fn the_plastic_rule_on_a_limit_curve_is_jkrs() {
 /// jump in held at μ^{-1/2}, until 2026-11-28, 5.9e-3 and 3.5e-3).
 #[test]
 fn the_law_above_the_table_against_a_solved_curve_there() {
-    use wearopt::model::lennard_jones::table::{parse, LIMIT_CHECK};
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/lennard_jones_above.txt"
-    ))
-    .expect("the committed curve");
-    let own = parse(&text).expect("it parses").remove(0);
+    use wearopt::model::lennard_jones::table::LIMIT_CHECK;
+    let own = committed("lennard_jones_above.txt").remove(0);
     let mu = own.tabor;
     assert!((mu / LIMIT_CHECK.0 - 1.0).abs() < 1e-3 && mu > solved_range().1);
     let (mut pull, mut load) = (0.0f64, 0.0f64);

@@ -1360,6 +1360,15 @@ pub fn curves() -> &'static [Curve] {
     })
 }
 
+/// The jump in the limit curves take ([`JumpIn`] through the solved table's
+/// last two curves).
+pub fn limit_jump_in() -> JumpIn {
+    let [.., below, top] = solved_curves() else {
+        panic!("the table has curves (tested)")
+    };
+    JumpIn::through(below, top)
+}
+
 /// The solver's curves: [`curves`] without the closed-form ones above them.
 pub fn solved_curves() -> &'static [Curve] {
     let all = curves();
