@@ -593,15 +593,16 @@ fn trace_until(
             }
         };
         let (p, q) = (&from_state.point, &next.point);
-        // On the stretching mesh, deep in contact, steps of 5 % in δ̂ and P̂
-        // (a curve to δ̂ = 30 at μ = 100, P̂ = 163, took 1600 steps of 0.1).
-        let (tau_d, tau_p) = if from_state.stretches() {
-            (
-                tau_d.max(0.05 * p.interference.abs()),
-                tau_p.max(0.05 * p.load.abs()),
-            )
+        // Deep in contact, steps of 5 % in P̂ (on the fixed mesh the contact
+        // radius's step, at most 0.2, still binds there: at μ = 0.01 the
+        // trace to δ̂ = 904, P̂ ≈ 2.5e4, would have taken 2.5e5 steps of 0.1,
+        // and stopped at the loop's 1e5); on the stretching mesh in δ̂ too (a
+        // curve to δ̂ = 30 at μ = 100, P̂ = 163, took 1600 steps of 0.1).
+        let tau_p = tau_p.max(0.05 * p.load.abs());
+        let tau_d = if from_state.stretches() {
+            tau_d.max(0.05 * p.interference.abs())
         } else {
-            (tau_d, tau_p)
+            tau_d
         };
         let ratio = ((q.interference - p.interference).abs() / tau_d)
             .max((q.load - p.load).abs() / tau_p)
