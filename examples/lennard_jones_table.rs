@@ -3,7 +3,7 @@
 //!
 //! Usage: `lennard_jones_table [REFINEMENT] [MU ...]` — the Tabor parameters
 //! default to the table's grid (`REACH=R` in the environment: contact parts
-//! to δ̂ = R instead of 50 or 4 ẑ0; `GRID=I..J`: the grid's curves I to J − 1); blocks go to stdout in increasing μ, progress
+//! to δ̂ = R instead of 50 or 16 ẑ0; `GRID=I..J`: the grid's curves I to J − 1); blocks go to stdout in increasing μ, progress
 //! to stderr. `lennard_jones_table check FILE [MU ...]` compares a table with
 //! the solver between its nodes.
 
@@ -60,12 +60,15 @@ fn refinement_of(mu: f64, refinement: f64) -> f64 {
     }
 }
 
-/// δ̂_max: the contact part reaches 50 beyond contact, or four times ẑ0
-/// where that is further (μ < 0.0444: there the contact at δ̂ = 50 is still
-/// narrower than the attraction's reach, and the tail, which follows the
-/// gap a Hertz pressure squeezes, takes over only once it is not).
+/// δ̂_max: the contact part reaches 50 beyond contact, or 16 ẑ0 where that
+/// is further (μ < 0.18: there the contact at δ̂ = 50 is still narrow against
+/// the attraction's reach, and the tail, which follows the gap a Hertz
+/// pressure squeezes, fits the curve's shift well only once it is wide: with
+/// 4 ẑ0, until 2026-11-28, the tail moved P̄ by up to 2.3e-6 around μ = 0.037,
+/// where its departure from the squeezed gap changes sign; with 8 ẑ0 by
+/// 6.6e-7, with 16 ẑ0 by 1.5e-7).
 fn reach_of(mu: f64) -> f64 {
-    50f64.max(4.0 * spacing(mu))
+    50f64.max(16.0 * spacing(mu))
 }
 
 fn main() {

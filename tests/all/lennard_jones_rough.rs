@@ -548,14 +548,16 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     }
 }
 
-/// Beyond the table's reach (δ̂ = 50, or 4 ẑ0 where that is further) the tail
-/// (the Hertz load shifted by the squeezed gap) stands in: P̄ of a curve with
-/// that tail against P̄ of the same curve written by the solver twice or three
-/// times as far (`tests/data/lennard_jones_far.txt`, to δ̂ = 452 at μ = 0.01
-/// and 150 at 0.105 and 0.918; `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
-/// ℓ = 30 and 100 (where summits that deep weigh), with and without
+/// Beyond the table's reach (δ̂ = 50, or 16 ẑ0 where that is further) the
+/// tail (the Hertz load shifted by the squeezed gap) stands in: P̄ of a curve
+/// with that tail against P̄ of the same curve written by the solver two to
+/// eight times as far (`tests/data/lennard_jones_far.txt`, to δ̂ = 1808 at
+/// μ = 0.01, 880 at three curves around 0.041 where the tail's departure
+/// from the squeezed gap changes sign, 400 at 0.105, 0.918 and 4.14;
+/// `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
+/// ℓ = 30 … 1000 (where summits that deep weigh), with and without
 /// plasticity, h = −1 … 4: within what `TAIL_ERROR` states (the reports
-/// quote it), and shrinking with μ.
+/// quote it).
 #[test]
 fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
     use wearopt::accuracy::lennard_jones::reference_load_of;

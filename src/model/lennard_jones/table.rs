@@ -261,16 +261,21 @@ struct Body {
 /// shift tends to the squeezed gap's limit,
 ///
 ///   P̂(δ̂) = P̂_m + ∫_{δ̂_max}^{δ̂} 1.5 (x − C(x))^{1/2} dx,
-///   C(x) = ẑ0 − s(x) (1 + r δ̂_max/x),
+///   C(x) = ẑ0 − s(x) (1 + r exp(−q L − κ L²/2)),  L = ln(x/δ̂_max),
 ///
 /// s(x) the shift's deficit ẑ0 − C_eff of a Hertz contact whose gap inside
 /// is the Lennard-Jones law's at the Hertz pressure ([`squeezed_deficit`]),
 /// r from the last panel's slope at δ̂_max (so P̂ and P̂' run on continuously
-/// there). Deep in contact the surfaces' gap closes as p^{-1/9}, and the
+/// there), q and κ from the departures at δ̂_max/√2 and δ̂_max/2 ([`departure_law`]).
+/// Deep in contact the surfaces' gap closes as p^{-1/9}, and the
 /// deficit is that gap's mean: on the curves written to δ̂ = 150 s(x) alone
 /// is within 0.2 % of their deficit at 150 for μ ≥ 0.1 (0.3 % at μ = 0.01),
-/// and their ratio's departure from 1 falls as 1/δ̂ (as δ̂^{-0.8} … δ̂^{-1.05}
-/// from 50 to 150). The slope and its integral as Chebyshev series on panels
+/// and their ratio's departure from 1 falls as a power of δ̂ that varies
+/// slowly along a curve and from one curve to the next (0.86 at μ = 0.01 on
+/// the curve written to δ̂ = 904, 0.85 by its end; 0.99 … 1.03 at μ = 0.105
+/// and 1.06 … 1.09 at 0.918 from 50 to 150): with the power 1 and no drift, as
+/// until 2026-11-28, the departure at μ = 0.01 and δ̂ = 800 was 17 % short of
+/// the solver's. The slope and its integral as Chebyshev series on panels
 /// doubling in their distance from the branch point, their ends' sums kept.
 #[derive(Debug, Clone, PartialEq)]
 struct Tail {
@@ -296,11 +301,32 @@ struct Tail {
 /// The tail's shift C(x).
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Shift {
-    /// C(x) = ẑ0 − s(x) (1 + r δ̂_max/x).
-    Squeezed { z0: f64, ratio: f64, start: f64 },
+    /// C(x) = ẑ0 − s(x) (1 + the departure at x).
+    Squeezed { z0: f64, departure: Departure },
     /// C constant (where the last slope leaves no deficit to squeeze: none
     /// of the table's curves).
     Constant(f64),
+}
+
+/// The tail's departure from the squeezed deficit,
+/// r exp(−q L − κ L²/2) with L = ln(x/δ̂_max) ([`departure_law`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Departure {
+    /// r, at δ̂_max.
+    ratio: f64,
+    /// δ̂_max.
+    start: f64,
+    /// q.
+    power: f64,
+    /// κ.
+    bend: f64,
+}
+
+impl Departure {
+    fn at(&self, x: f64) -> f64 {
+        let l = (x / self.start).ln();
+        self.ratio * (-self.power * l - 0.5 * self.bend * l * l).exp()
+    }
 }
 
 impl Shift {
@@ -313,10 +339,10 @@ impl Shift {
     /// none) and leaving its own there.
     fn at_from(&self, x: f64, guess: &mut f64) -> f64 {
         match *self {
-            Shift::Squeezed { z0, ratio, start } => {
+            Shift::Squeezed { z0, departure } => {
                 let (deficit, t) = squeezed(z0, x, *guess);
                 *guess = t;
-                z0 - deficit * (1.0 + ratio * start / x)
+                z0 - deficit * (1.0 + departure.at(x))
             }
             Shift::Constant(c) => c,
         }
@@ -388,6 +414,30 @@ fn squeezed(z0: f64, x: f64, guess: f64) -> (f64, f64) {
     (at(t).2, t)
 }
 
+/// The law of the tail's departure from the squeezed deficit,
+/// r exp(−q L − κ L²/2) with L = ln(x/δ̂_max): a power of δ̂ whose exponent
+/// drifts as κ L. Through the departures r at δ̂_max and r_a, r_b at
+/// δ̂_max/√2 and δ̂_max/2 (L_a, L_b): the secant exponents
+/// q_u = ln(r_u/r)/(−L_u) = q + κ L_u/2 give κ = 2 (q_a − q_b)/(L_a − L_b),
+/// within [0, 0.5] (a drift that could turn the departure back up, κ < 0,
+/// is none), and q = q_a − κ L_a/2, within [0.5, 1.5]. On the table's
+/// curves q = 0.87 at μ = 0.01, about 1 from μ = 0.05 to 0.4, rising to 1.2 at
+/// 22.4; κ = 0.02 … 0.13. Where the three departures are not of one sign
+/// (around μ = 0.037, where the departure changes sign and is 2 % of its
+/// size elsewhere) q = 1, κ = 0: the departure's 1/δ̂ of the tail until
+/// 2026-11-28. Returns (q, κ).
+pub fn departure_law(r: f64, (a, r_a): (f64, f64), (b, r_b): (f64, f64), start: f64) -> (f64, f64) {
+    let (l_a, l_b) = ((a / start).ln(), (b / start).ln());
+    let (q_a, q_b) = ((r_a / r).ln() / -l_a, (r_b / r).ln() / -l_b);
+    let bend = (2.0 * (q_a - q_b) / (l_a - l_b)).clamp(0.0, 0.5);
+    let power = (q_a - 0.5 * bend * l_a).clamp(0.5, 1.5);
+    if r * r_a > 0.0 && r * r_b > 0.0 && power.is_finite() && bend.is_finite() {
+        (power, bend)
+    } else {
+        (1.0, 0.0)
+    }
+}
+
 /// One panel of the tail: its ends and the two series' coefficients.
 #[derive(Debug, Clone, PartialEq)]
 struct TailPanel {
@@ -410,12 +460,32 @@ const TAIL_DEGREE: usize = 18;
 impl Tail {
     /// The tail after a last panel ending at δ̂_max = `start` with load
     /// `load` and slope `slope`, for ẑ0 = `z0`: C_m = δ̂_max − (P̂'/1.5)²,
-    /// r = (ẑ0 − C_m)/s(δ̂_max) − 1.
-    fn new(start: f64, load: f64, slope: f64, z0: f64) -> Tail {
+    /// r = (ẑ0 − C_m)/s(δ̂_max) − 1; the slopes at δ̂_max/√2 and δ̂_max/2,
+    /// `before` (δ̂ and P̂' there), give the departure's law ([`departure_law`]).
+    fn new(start: f64, load: f64, slope: f64, before: [(f64, f64); 2], z0: f64) -> Tail {
+        let departure = |x: f64, slope: f64| {
+            let shift = x - (slope.max(0.0) / 1.5).powi(2);
+            (z0 - shift) / squeezed_deficit(z0, x) - 1.0
+        };
+        let ratio = departure(start, slope);
         let shift = start - (slope.max(0.0) / 1.5).powi(2);
-        let ratio = (z0 - shift) / squeezed_deficit(z0, start) - 1.0;
         let law = if ratio > -1.0 && ratio.is_finite() {
-            Shift::Squeezed { z0, ratio, start }
+            let [(a, slope_a), (b, slope_b)] = before;
+            let (power, bend) = departure_law(
+                ratio,
+                (a, departure(a, slope_a)),
+                (b, departure(b, slope_b)),
+                start,
+            );
+            Shift::Squeezed {
+                z0,
+                departure: Departure {
+                    ratio,
+                    start,
+                    power,
+                    bend,
+                },
+            }
         } else {
             Shift::Constant(shift)
         };
@@ -833,8 +903,8 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// beside the cusp μ ≈ 0.71, 0.645 … 0.78 (where the four curves are all on
 /// μ's side of it, reaching past the table's curve nearest the cusp; the
 /// largest at μ = 0.676, 9.6e-8 at 0.73, next to the first S-shaped curve).
-/// The law's largest error against the converged sphere where ℓ = σ/ε is
-/// small enough for the table's reach (below). Not measured within
+/// The law's largest error against the converged sphere (the tail beyond
+/// the table's reach, [`TAIL_ERROR`], moves P̄ by less). Not measured within
 /// μ = 0.70 … 0.725, where the generator's trace does not converge. (Until
 /// 2026-11-28, with the first S-shaped curve, 0.7275, at refinement 1 —
 /// 4.3e-6 off its own at 2, where the trace nearly stops converging —
@@ -851,26 +921,38 @@ pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 3.2e-7);
 /// switch moves about as μ^{-1/2} (δ̂_s ≈ −1.08 μ^{-1/2}), faster than a cubic over
 /// that spacing follows.
 pub const INTERPOLATION_ERROR_SPARSE: f64 = 2.5e-7;
-/// Beyond δ̂_max (50, or 4 ẑ0 where that is further: μ < 0.0444) the tail (a
+/// Beyond δ̂_max (50, or 16 ẑ0 where that is further: μ < 0.18) the tail (a
 /// Hertz load whose shift follows the squeezed gap, [`squeezed_deficit`],
-/// matched to the last panel: [`Curve::contact`]) stands in for the solver;
+/// its departure from it fitted to the contact part's last half:
+/// [`departure_law`], [`Curve::contact`]) stands in for the solver;
 /// summits that deep weigh where ℓ = σ/ε is large (at h = 0 the window
 /// reaches δ̂ ≈ 10ℓ). P̄ of one curve with that tail against P̄ of the same
-/// curve written by the solver twice or three times as far (to δ̂ = 452 at
-/// μ = 0.01, 150 at 0.105 and 0.918: `scripts/lennard_jones_table.sh far`,
-/// its own tail beyond), relative to ∫|p| φ̄ over h = −1 … 4, with and
-/// without plasticity: [μ, then at each ℓ of [`TAIL_SCALES`]] (1e-12:
-/// rounding, the tail not reached). At μ = 0.01 and ℓ ≥ 300 this, not the
-/// interpolation, is the law's largest error; elsewhere it is below the
-/// interpolation's. (With the reach 50 everywhere, at μ = 0.01: 6.7e-5 /
-/// 1.1e-4 / 9.0e-5 / 4.7e-5; with the shift held constant, until 2026-11-27,
-/// at ℓ = 30 / 100: 3.1e-3 / 8.3e-3, 9.2e-5 / 4.9e-4, 1.0e-5 / 5.6e-5; growing
-/// as a fitted power of δ̂: 4.0e-4 / 2.3e-3, 6.1e-7 / 7.3e-6, 1.2e-7 /
-/// 1.2e-6.)
-pub const TAIL_ERROR: [[f64; 5]; 3] = [
-    [0.01, 1e-12, 2.4e-7, 2.0e-6, 1.8e-6],
-    [0.105, 1.7e-8, 1.9e-7, 1.7e-7, 1.4e-7],
-    [0.918, 8.2e-8, 2.9e-7, 2.6e-7, 1.7e-7],
+/// curve written by the solver two to eight times as far (to δ̂ = 1808 at
+/// μ = 0.01, 880 at 0.0374, 0.0411 and 0.0451 — around μ = 0.041 the
+/// departure changes sign, and [`departure_law`] is at a bound —, 400 at
+/// 0.105, 0.918 and 4.14:
+/// `scripts/lennard_jones_table.sh far`, its own tail beyond), relative to
+/// ∫|p| φ̄ over h = −1 … 4, with and without plasticity: [μ, then at each ℓ
+/// of [`TAIL_SCALES`]] (1e-12: rounding, the tail not reached). Everywhere
+/// below the interpolation in μ ([`INTERPOLATION_ERROR`]). (Until
+/// 2026-11-28, the departure falling as 1/δ̂ and the reach 4 ẑ0 below
+/// μ = 0.0444: at μ = 0.01 1e-12 / 2.3e-7 / 2.2e-6 / 2.1e-6, around 0.037 up
+/// to 3.6e-7 / 2.3e-6 / 2.1e-6 / 1.7e-6 — not measured there then —, at
+/// 0.105 1.6e-8 / 2.3e-7 / 2.7e-7 / 2.4e-7 against these curves; the fitted
+/// departure alone took μ = 0.01 to 9.6e-8 and left 2.3e-6 around 0.037;
+/// with it and the reach 8 ẑ0, 6.6e-7 there. With the reach 50 everywhere, at
+/// μ = 0.01: 6.7e-5 / 1.1e-4 / 9.0e-5 / 4.7e-5; with the shift held constant,
+/// until 2026-11-27, at ℓ = 30 / 100: 3.1e-3 / 8.3e-3, 9.2e-5 / 4.9e-4,
+/// 1.0e-5 / 5.6e-5; growing as a fitted power of δ̂: 4.0e-4 / 2.3e-3,
+/// 6.1e-7 / 7.3e-6, 1.2e-7 / 1.2e-6.)
+pub const TAIL_ERROR: [[f64; 5]; 7] = [
+    [0.01, 1e-12, 1e-12, 5.8e-12, 1.4e-9],
+    [0.0374, 1e-12, 7.1e-9, 1.35e-7, 1.6e-7],
+    [0.0411, 1e-12, 2.3e-8, 2.3e-7, 2.2e-7],
+    [0.0451, 1e-12, 2.7e-8, 1.8e-7, 1.7e-7],
+    [0.105, 1.4e-10, 1.5e-8, 2.5e-8, 2.3e-8],
+    [0.918, 3.9e-9, 3.2e-8, 3.3e-8, 2.9e-8],
+    [4.14, 2.2e-9, 1.7e-8, 1.7e-8, 1.5e-8],
 ];
 /// The ℓ = σ/ε of [`TAIL_ERROR`]'s columns.
 pub const TAIL_SCALES: [f64; 4] = [30.0, 100.0, 300.0, 1000.0];
@@ -1203,7 +1285,15 @@ impl Body {
         let last = panels.last().expect("a contact part has a panel");
         let end = last.hi;
         let (load, slope) = last.at(end);
-        let tail = Tail::new(end, load, slope, z0);
+        let slope_at = |x: f64| {
+            let p = panels
+                .iter()
+                .find(|p| p.lo <= x && x <= p.hi)
+                .unwrap_or(last);
+            (x, p.at(x).1)
+        };
+        let before = [slope_at(end * 0.5f64.sqrt()), slope_at(0.5 * end)];
+        let tail = Tail::new(end, load, slope, before, z0);
         let approach_fused = (0..approach_load
             .coefficients
             .len()
@@ -1514,6 +1604,44 @@ mod tests {
         }
     }
 
+    /// The departure's law recovers a departure of its own form exactly (its
+    /// power and drift from three points), holds the drift at 0 where the
+    /// secants would make it negative (a departure that would turn back up),
+    /// and falls back to 1/δ̂ where the three points differ in sign.
+    #[test]
+    fn the_departure_law_recovers_its_own_form() {
+        let start = 226.0;
+        for (r, q, k) in [
+            (-2.2e-3, 0.86, 0.01),
+            (3e-3, 0.98, 0.13),
+            (7.7e-2, 1.19, 0.044),
+        ] {
+            let at = |x: f64| {
+                let l = f64::ln(x / start);
+                r * (-q * l - 0.5 * k * l * l).exp()
+            };
+            let (a, b) = (start * 0.5f64.sqrt(), 0.5 * start);
+            let (power, bend) = departure_law(r, (a, at(a)), (b, at(b)), start);
+            assert!(
+                (power - q).abs() <= 1e-12 && (bend - k).abs() <= 1e-11,
+                "{power} {bend}"
+            );
+        }
+        // A drift the other way: held at 0, the power the nearer secant's.
+        let (a, b) = (start * 0.5f64.sqrt(), 0.5 * start);
+        let at = |x: f64| 1e-3 * (start / x).powf(1.0 + 0.2 * (start / x).ln());
+        let (power, bend) = departure_law(1e-3, (a, at(a)), (b, at(b)), start);
+        let secant = (at(a) / 1e-3).ln() / (start / a).ln();
+        assert_eq!(bend, 0.0);
+        assert!((power - secant).abs() <= 1e-14, "{power} {secant}");
+        // Through zero between the points (μ ≈ 0.037): 1/δ̂.
+        assert_eq!(
+            departure_law(-4e-5, (a, 2e-5), (b, 1.2e-4), start),
+            (1.0, 0.0)
+        );
+        assert_eq!(departure_law(0.0, (a, 0.0), (b, 0.0), start), (1.0, 0.0));
+    }
+
     /// With the shift held constant (where no deficit is left) the tail is
     /// the closed form (δ̂ − C)^{3/2} from its start: the panels doubling
     /// from the branch point integrate its square-root end to rounding.
@@ -1532,19 +1660,25 @@ mod tests {
     /// The tail against the same integral by an independent rule (order 32 on
     /// 4000 panels graded in √x, no shared ends), its slope against the
     /// load's central differences, its value and slope continuing the last
-    /// panel's at δ̂_max, and its shift rising there as the panel's does (to
-    /// 2 %; the fit is within 0.6 %) — on every curve of the table.
+    /// panel's at δ̂_max, and its curvature P̂'' there the panel's, which the
+    /// departure's law does not fit (within 5.0e-6; with the departure 1/δ̂,
+    /// until 2026-11-28, 0.25 %) — on every curve of the table.
     #[test]
     fn the_tail_continues_the_last_panel_and_integrates_its_slope() {
         let rule = crate::model::gauss::rule(32);
         let (mut worst_ratio, mut worst_rise, mut sparse_ratio) = (0.0f64, 0.0f64, 0.0f64);
+        let mut laws = Vec::new();
         // The solver's curves (the limit curves' tails follow JKR's sphere,
         // tests/all/lennard_jones_limit.rs).
         for curve in solved_curves() {
             let tail = &curve.body().tail;
-            let Shift::Squeezed { ratio, .. } = tail.shift else {
+            let Shift::Squeezed { departure, .. } = tail.shift else {
                 panic!("μ = {}: no deficit", curve.tabor)
             };
+            let Departure {
+                ratio, power, bend, ..
+            } = departure;
+            laws.push((curve.tabor, power, bend));
             if curve.tabor <= super::super::rough::SPARSE_ABOVE {
                 worst_ratio = worst_ratio.max(ratio.abs());
             } else {
@@ -1585,11 +1719,34 @@ mod tests {
             }
         }
         println!("the squeezed gap's correction r ≤ {worst_ratio:.2e} (μ ≤ 5), {sparse_ratio:.2e} (above), P̂'' against the panel's within {worst_rise:.2e}");
+        // Away from μ ≈ 0.034 … 0.05, where the departure changes sign and
+        // is small, neither bound of the law binds: it is in its fitted form.
+        let bound = |&&(_, q, k): &&(f64, f64, f64)| {
+            q == 0.5 || q == 1.5 || q == 1.0 && k == 0.0 || k == 0.5
+        };
+        let bounded: Vec<f64> = laws.iter().filter(bound).map(|l| l.0).collect();
+        let free = || laws.iter().filter(|l| !bound(l));
+        let range = |f: fn(&(f64, f64, f64)) -> f64| {
+            free()
+                .map(f)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                    (a.min(x), b.max(x))
+                })
+        };
+        println!(
+            "the departure's power {:.3?}, drift {:.3?}; at a bound at μ = {bounded:.4?}",
+            range(|l| l.1),
+            range(|l| l.2)
+        );
+        assert!(
+            bounded.iter().all(|&mu| (0.033..0.05).contains(&mu)),
+            "{bounded:?}"
+        );
         assert!(worst_ratio <= 0.03 && worst_ratio > 0.02, "{worst_ratio}");
         // Above μ = 5 the curves are JKR-like, whose shift the squeezed gap
         // (DMT's physics) follows less closely: r up to 0.078.
         assert!(sparse_ratio <= 0.08, "{sparse_ratio}");
-        assert!(worst_rise <= 3e-3, "{worst_rise}");
+        assert!(worst_rise <= 1e-5, "{worst_rise}");
     }
 
     /// A block's header carries one sphere's pull-off where it lies on the
