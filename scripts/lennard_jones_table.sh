@@ -10,6 +10,7 @@
 #   scripts/lennard_jones_table.sh check 0.01 1.95   # of the curves at those μ
 #   scripts/lennard_jones_table.sh between    # tests/data/lennard_jones_between.txt
 #   scripts/lennard_jones_table.sh far        # tests/data/lennard_jones_far.txt
+#   scripts/lennard_jones_table.sh cusp       # tests/data/lennard_jones_above_cusp.txt
 #
 # Takes about three and a half hours on one core to write (release build; 17–103 s a
 # curve up to μ = 5, 4–23 minutes above); the check took two hours for the
@@ -47,6 +48,17 @@ if [[ "${1:-}" == between ]]; then
     # shellcheck disable=SC2086
     "$bin" 1 $mus > tests/data/lennard_jones_between.txt.new
     mv tests/data/lennard_jones_between.txt.new tests/data/lennard_jones_between.txt
+    exit 0
+fi
+if [[ "${1:-}" == cusp ]]; then
+    # μ = 0.71, 0.1 % above the cusp (0.7093), at refinement 2 (6 minutes):
+    # where the interpolation from the S-shaped curves errs most.
+    {
+        echo "# Lennard-Jones loading curve (docs/model.md §11), refinement 2, extrapolated, at μ = 0.71, 0.1 % above the cusp:"
+        echo "# written by scripts/lennard_jones_table.sh cusp; read by tests/all/lennard_jones_rough.rs"
+        "$bin" 2 0.71 | grep -v '^#'
+    } > tests/data/lennard_jones_above_cusp.txt.new
+    mv tests/data/lennard_jones_above_cusp.txt.new tests/data/lennard_jones_above_cusp.txt
     exit 0
 fi
 if [[ "${1:-}" == far ]]; then

@@ -9,8 +9,8 @@ use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
 use crate::model::lennard_jones::table::{
-    INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE, LIMIT_CHECK, LIMIT_ERROR, SOLVER_ERROR,
-    TABLE_ERROR, TAIL_ERROR, TAIL_SCALES,
+    INTERPOLATION_ERROR, INTERPOLATION_ERROR_ABOVE_CUSP, INTERPOLATION_ERROR_SPARSE, LIMIT_CHECK,
+    LIMIT_ERROR, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR, TAIL_SCALES,
 };
 use crate::model::AttractionKind;
 
@@ -98,6 +98,10 @@ pub fn json(wp: &WorkPrecision) -> String {
             "solver_against_reference": SOLVER_ERROR,
             "interpolation_in_tabor": INTERPOLATION_ERROR.0,
             "interpolation_in_tabor_at_cusp": INTERPOLATION_ERROR.1,
+            "interpolation_in_tabor_just_above_cusp": {
+                "tabor": INTERPOLATION_ERROR_ABOVE_CUSP.0,
+                "error": INTERPOLATION_ERROR_ABOVE_CUSP.1,
+            },
             "interpolation_in_tabor_sparse": INTERPOLATION_ERROR_SPARSE,
             "sparse_above_tabor": crate::model::lennard_jones::rough::SPARSE_ABOVE,
             "tail": TAIL_ERROR
@@ -167,6 +171,7 @@ pub fn text(wp: &WorkPrecision) -> String {
                 crate::accuracy::lennard_jones::REFERENCE_TOLERANCE
             );
             let (between, cusp) = INTERPOLATION_ERROR;
+            let (above_cusp_tabor, above_cusp) = INTERPOLATION_ERROR_ABOVE_CUSP;
             let (lo, hi) = crate::model::lennard_jones::table::tabor_range();
             let (lo, hi) = (
                 crate::units::format_number(lo),
@@ -174,7 +179,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 16 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71; not measured within μ = 0.70–0.725, where the solver's trace does not converge; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {} to the solved table's end, where the grid is sparser, quintically from six curves); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to eight times as far) by {}",
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 16 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71, but {above_cusp:.1e} at μ = {above_cusp_tabor}, 0.1 % above it, where the S-shape's jumps grow from zero; not measured elsewhere within μ = 0.70–0.725, where the solver's trace does not converge; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {} to the solved table's end, where the grid is sparser, quintically from six curves); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to eight times as far) by {}",
                 crate::units::format_number(crate::model::lennard_jones::rough::SPARSE_ABOVE),
                 TAIL_ERROR
                     .iter()
