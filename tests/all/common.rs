@@ -13,6 +13,14 @@ pub fn data_dir() -> PathBuf {
         .unwrap_or_else(|| PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data")))
 }
 
+/// The Lennard-Jones curves in a committed file of tests/data (the solver's,
+/// written by `scripts/lennard_jones_table.sh`).
+pub fn committed_curves(name: &str) -> Vec<wearopt::model::lennard_jones::table::Curve> {
+    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    wearopt::model::lennard_jones::table::parse(&text).expect("it parses")
+}
+
 /// Rows of a reference table as (column name → text) maps; `#` lines are comments.
 pub fn table(name: &str) -> Vec<HashMap<String, String>> {
     let text = std::fs::read_to_string(data_dir().join(name)).expect("reference table present");

@@ -8,7 +8,7 @@ use wearopt::accuracy::lennard_jones::reference_load_of;
 use wearopt::model::lennard_jones::rough::{critical_interference, RoughLaw};
 use wearopt::model::lennard_jones::spacing;
 use wearopt::model::lennard_jones::table::{
-    bradley, curves, jkr_sphere, limit_curve, limit_jump_in, parse, solved_curves, solved_range,
+    bradley, curves, jkr_sphere, limit_curve, limit_jump_in, solved_curves, solved_range,
     tabor_range, Curve, JumpIn, LIMIT_END_ERROR, LIMIT_ERROR, LIMIT_STEPS,
 };
 use wearopt::model::{find_pull_off, AsperityLaw, Coefficients, Model, Quadrature};
@@ -132,11 +132,7 @@ fn the_jump_in_follows_the_solved_curves() {
     assert!((leading - 0.16).abs() < 0.01, "{leading}");
 }
 
-/// The curves in a committed file of tests/data.
-fn committed(name: &str) -> Vec<Curve> {
-    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
-    parse(&std::fs::read_to_string(path).expect("committed")).expect("it parses")
-}
+use crate::common::committed_curves as committed;
 
 /// The switch the limit curves took until 2026-11-28: the last solved
 /// curve's δ̂_s μ^{1/2}, held.

@@ -6,6 +6,8 @@ use wearopt::model::lennard_jones::rough::{critical_interference, RoughLaw};
 use wearopt::model::lennard_jones::spacing;
 use wearopt::model::lennard_jones::table::curves;
 
+use crate::common::committed_curves;
+
 /// Adaptive Simpson on [a, b] to `rel` of the integral of |f| (estimated
 /// first by a 64-point midpoint sum).
 pub fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, rel: f64) -> f64 {
@@ -485,12 +487,7 @@ fn interpolation_scenes(
 #[test]
 fn the_interpolation_in_tabor_against_curves_between_the_tables() {
     use wearopt::accuracy::lennard_jones::reference_load_of;
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/lennard_jones_between.txt"
-    ))
-    .expect("the committed curves between the table's");
-    let between = wearopt::model::lennard_jones::table::parse(&text).expect("they parse");
+    let between = committed_curves("lennard_jones_between.txt");
     assert_eq!(between.len(), 17);
     use wearopt::model::lennard_jones::rough::SPARSE_ABOVE;
     use wearopt::model::lennard_jones::table::{INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE};
@@ -570,13 +567,8 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
 #[test]
 fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
     use wearopt::accuracy::lennard_jones::reference_load_of;
-    use wearopt::model::lennard_jones::table::{parse, INTERPOLATION_ERROR_ABOVE_CUSP};
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/lennard_jones_above_cusp.txt"
-    ))
-    .expect("the committed curve");
-    let curves = parse(&text).expect("it parses");
+    use wearopt::model::lennard_jones::table::INTERPOLATION_ERROR_ABOVE_CUSP;
+    let curves = committed_curves("lennard_jones_above_cusp.txt");
     let [curve] = curves.as_slice() else {
         panic!("one curve")
     };
@@ -607,14 +599,10 @@ fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
 #[test]
 fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
     use wearopt::accuracy::lennard_jones::reference_load_of;
-    use wearopt::model::lennard_jones::table::{parse, TAIL_ERROR, TAIL_SCALES};
+    use wearopt::model::lennard_jones::table::{TAIL_ERROR, TAIL_SCALES};
     use wearopt::model::Coefficients;
-    let read = |name: &str| {
-        let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
-        parse(&std::fs::read_to_string(path).expect("committed")).expect("parses")
-    };
-    let far = read("lennard_jones_far.txt");
-    let between = read("lennard_jones_between.txt");
+    let far = committed_curves("lennard_jones_far.txt");
+    let between = committed_curves("lennard_jones_between.txt");
     assert_eq!(far.len(), TAIL_ERROR.len());
     for (curve, row) in far.iter().zip(&TAIL_ERROR) {
         let mu = row[0];

@@ -463,12 +463,10 @@ impl Tail {
     /// r = (ẑ0 − C_m)/s(δ̂_max) − 1; the slopes at δ̂_max/√2 and δ̂_max/2,
     /// `before` (δ̂ and P̂' there), give the departure's law ([`departure_law`]).
     fn new(start: f64, load: f64, slope: f64, before: [(f64, f64); 2], z0: f64) -> Tail {
-        let departure = |x: f64, slope: f64| {
-            let shift = x - (slope.max(0.0) / 1.5).powi(2);
-            (z0 - shift) / squeezed_deficit(z0, x) - 1.0
-        };
+        // C_eff = x − (P̂'/1.5)², and its departure from the squeezed gap's.
+        let shift = |x: f64, slope: f64| x - (slope.max(0.0) / 1.5).powi(2);
+        let departure = |x, slope| (z0 - shift(x, slope)) / squeezed_deficit(z0, x) - 1.0;
         let ratio = departure(start, slope);
-        let shift = start - (slope.max(0.0) / 1.5).powi(2);
         let law = if ratio > -1.0 && ratio.is_finite() {
             let [(a, slope_a), (b, slope_b)] = before;
             let (power, bend) = departure_law(
@@ -487,7 +485,7 @@ impl Tail {
                 },
             }
         } else {
-            Shift::Constant(shift)
+            Shift::Constant(shift(start, slope))
         };
         Tail::with_shift(start, load, law)
     }
