@@ -16,10 +16,10 @@ use wearopt::model::lennard_jones::{spacing, SphereSettings};
 /// The table's grid: μ from 0.01 to 5, geometric in 132 steps (49 per
 /// decade; the first table's 33 steps halved twice, so that the cubic
 /// interpolation in μ between its curves errs about 16 times less each time),
-/// but for one: at step 91, μ = 0.7255, just above the cusp (0.7093), the
-/// loading trace does not converge (nor at 0.700, 0.703, 0.7241 or 0.7253,
-/// where the S-shape's two turns lie within a few thousandths of δ̂; it does
-/// at 0.696 and from 0.7275), and the curve at μ = 0.7275 stands in for it.
+/// but for one: at step 91, μ = 0.7255, 4 % above the cusp (0.6972), the
+/// curve at μ = 0.7275 stands in (until 2026-11-29 the loading trace did not
+/// converge at 0.7255, nor at 0.700 … 0.7253: it stepped over the narrow
+/// S-shape whole, and sought the first contact nodes on its unstable branch).
 /// Then on from 5 in steps of 20^{1/24} (18.4 per decade) to 5√20 = 22.4, a
 /// sparser grid because these curves cost more to write (4 minutes at
 /// μ = 5.3, 23 at 21): between them P̄, interpolated from six curves, is
@@ -45,8 +45,8 @@ fn grid() -> Vec<f64> {
 const FIRST_S_SHAPED: f64 = 0.7275;
 
 /// The refinement a curve is written at: the run's, but twice it at
-/// [`FIRST_S_SHAPED`], next to where the loading trace stops converging.
-/// There the curve at refinement 1 was 4.3e-6 of ∫|p| φ̄ off its own at 2
+/// [`FIRST_S_SHAPED`], next to the cusp, where the trace's mesh moves the
+/// jumps by a good part of the S-shape's width. There the curve at refinement 1 was 4.3e-6 of ∫|p| φ̄ off its own at 2
 /// (rough-surface P̄, ℓ = 1 … 100, h = −1 … 4; at μ = 0.73 the two agree
 /// within 8e-9; at 0.7275 refinement 3, 36 CPU-minutes, agrees with 2
 /// within 4.9e-10), and P̄ interpolated beside the cusp was 2.7e-6 off the

@@ -451,6 +451,7 @@ impl From<NotConverged> for CurveError {
 
 /// One step of the trace: the state it starts from (on the mesh of the step),
 /// the arclength, and the state it reaches.
+#[derive(Clone)]
 struct Window {
     start: SphereState,
     length: f64,
@@ -607,7 +608,15 @@ fn trace_until(
         let ratio = ((q.interference - p.interference).abs() / tau_d)
             .max((q.load - p.load).abs() / tau_p)
             .max((q.contact_radius - p.contact_radius).abs() / tau_a.min(from_state.edge_reach()));
-        if ratio > 2.0 || q.apex_gap <= 0.05 || next.turn(&from_state) < 0.9 {
+        if ratio > 2.0
+            || q.apex_gap <= 0.05
+            || next.turn(&from_state) < 0.9
+            || hides_turns(
+                length * p.interference_slope,
+                length * q.interference_slope,
+                q.interference - p.interference,
+            )
+        {
             length *= 0.5;
             continue;
         }
@@ -638,6 +647,30 @@ fn trace_until(
         }
     }
     Err(CurveError::NotConverged(last.point.apex_gap))
+}
+
+/// Whether a step whose δ̂ changes by `change`, with slopes `start` and `end`
+/// (dδ̂/ds times the step's length) of one sign, hides two turns of δ̂: the
+/// derivative of δ̂'s cubic Hermite interpolant over the step changes sign
+/// inside it. Just above the cusp (μ_c = 0.6972) the S-shape's turns lie
+/// within 1.5e-3 of δ̂ at μ = 0.715, and a step of 0.1 went from one side of
+/// the S to the other with δ̂ falling but slopes both positive: the curve was
+/// taken for single-valued (`wearopt asperity` put the cusp at 0.7093), or
+/// no node bracketed its jump.
+fn hides_turns(start: f64, end: f64, change: f64) -> bool {
+    if start * end <= 0.0 {
+        return false;
+    }
+    // The derivative a + b t + c t² on t ∈ [0, 1]: start at 0, end at 1, and
+    // `change` its integral.
+    let (a, c) = (start, 3.0 * (start + end) - 6.0 * change);
+    let b = end - start - c;
+    let vertex = -b / (2.0 * c);
+    if !(c != 0.0 && vertex > 0.0 && vertex < 1.0) {
+        return false;
+    }
+    let least = a + vertex * (b + c * vertex);
+    least * start < 0.0
 }
 
 /// The equilibria of the Lennard-Jones sphere at the apex gaps `gaps` (over
@@ -948,6 +981,25 @@ pub fn lennard_jones_loading(
             finish(&sphere, &root(&sphere, &w, f)?.0, Hold::ApexGap)
         })
         .collect::<Result<Vec<_>, CurveError>>()?;
+    // Where the curve jumps, the contact part from the jump out on: the window
+    // it lies in cut there (just above the cusp the whole S-shape lies in one
+    // or two windows, and a node's δ̂ was found on the unstable branch before
+    // the turn, whose solve at fixed δ̂ on finer meshes did not converge).
+    let contact_windows = if jumps {
+        let w = &windows[contact_from];
+        let (turn, at) = root(&sphere, w, slope)?;
+        let length = w.length - at;
+        let end = sphere.step(&turn, length)?;
+        std::iter::once(Window {
+            start: turn,
+            length,
+            end,
+        })
+        .chain(windows[contact_from + 1..].iter().cloned())
+        .collect()
+    } else {
+        windows[contact_from..].to_vec()
+    };
     let contact = contact_at(switch)
         .into_iter()
         .map(|d| {
@@ -955,9 +1007,7 @@ pub fn lennard_jones_loading(
                 return Ok(end_point);
             }
             let f = |s: &SphereState| s.point.interference - d;
-            let w = bracket(&sphere, &windows[contact_from..], f, |w| {
-                slope(&w.end) > 0.0
-            })?;
+            let w = bracket(&sphere, &contact_windows, f, |w| slope(&w.end) > 0.0)?;
             finish(&sphere, &root(&sphere, &w, f)?.0, Hold::Interference)
         })
         .collect::<Result<Vec<_>, CurveError>>()?;

@@ -98,6 +98,7 @@ pub fn json(wp: &WorkPrecision) -> String {
             "solver_against_reference": SOLVER_ERROR,
             "interpolation_in_tabor": INTERPOLATION_ERROR.0,
             "interpolation_in_tabor_at_cusp": INTERPOLATION_ERROR.1,
+            "cusp_tabor": crate::model::lennard_jones::rough::CUSP_TABOR,
             "interpolation_in_tabor_just_above_cusp": {
                 "tabor": INTERPOLATION_ERROR_ABOVE_CUSP.0,
                 "error": INTERPOLATION_ERROR_ABOVE_CUSP.1,
@@ -172,6 +173,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
             let (between, cusp) = INTERPOLATION_ERROR;
             let (above_cusp_tabor, above_cusp) = INTERPOLATION_ERROR_ABOVE_CUSP;
+            let cusp_tabor = crate::model::lennard_jones::rough::CUSP_TABOR;
             let (lo, hi) = crate::model::lennard_jones::table::tabor_range();
             let (lo, hi) = (
                 crate::units::format_number(lo),
@@ -179,7 +181,7 @@ pub fn text(wp: &WorkPrecision) -> String {
             );
             let _ = writeln!(
                 out,
-                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 16 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ ≈ 0.71, but {above_cusp:.1e} at μ = {above_cusp_tabor}, 0.1 % above it, where the S-shape's jumps grow from zero; not measured elsewhere within μ = 0.70–0.725, where the solver's trace does not converge; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {} to the solved table's end, where the grid is sparser, quintically from six curves); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to eight times as far) by {}",
+                "the table against the sphere (docs/model.md §11), not in the rows below: one summit's load P̂ within {TABLE_ERROR:.0e} of the converged solver between the table's nodes (to δ̂ = 50, or 16 ẑ0 where that is further), the solver {SOLVER_ERROR:.1e} from an independent discretisation; between the table's curves P̄ is interpolated cubically in 1/μ, within {between:.1e} of P̄ from the solver's own curve at the midpoints ({cusp:.1e} beside the cusp μ_c = {cusp_tabor}, where the curves turn S-shaped, {above_cusp:.1e} between it and the first S-shaped curve, at μ = {above_cusp_tabor}, interpolated through the cusp itself; {INTERPOLATION_ERROR_SPARSE:.1e} above μ = {} to the solved table's end, where the grid is sparser, quintically from six curves); beyond that a Hertz tail whose shift follows the squeezed gap stands in, which weighs where ℓ = σ/ε is large: P̄ off the solver's curve (written two to eight times as far) by {}",
                 crate::units::format_number(crate::model::lennard_jones::rough::SPARSE_ABOVE),
                 TAIL_ERROR
                     .iter()

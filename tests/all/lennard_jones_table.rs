@@ -36,17 +36,43 @@ fn the_table_covers_its_grid() {
 }
 
 /// The cusp the interpolation in μ keeps its stencils to one side of
-/// (`CUSP_TABOR`, found by `wearopt asperity`) lies between the table's last
-/// single-valued curve and its first S-shaped one, and the sphere solver finds
-/// no jumps just below it and jumps just above it.
+/// (`CUSP_TABOR`) is the converged solution's: δ̂ against the apex gap G (the
+/// path's regular parameter), each point extrapolated on three meshes, rises
+/// monotonically towards the flat 5e-4 of μ below it (its least slope
+/// −dδ̂/dG, measured +4.8e-4) and turns back 5e-4 above it (−4.8e-4); the
+/// sphere's trace on its own mesh, as `wearopt asperity` runs it, finds no
+/// jumps 1e-3 below and jumps 2e-3 above (its cusp lies within 3e-4 above
+/// the converged one). It lies between the table's last single-valued curve
+/// and its first S-shaped one.
 #[test]
 fn the_cusp_lies_between_the_tables_kinds_of_curve() {
-    use wearopt::model::asperity_curve::{asperity_curve, CurveLaw};
+    use wearopt::model::asperity_curve::{asperity_curve, lennard_jones_at_apex_gaps, CurveLaw};
     use wearopt::model::lennard_jones::rough::CUSP_TABOR;
+    use wearopt::model::lennard_jones::SphereSettings;
     let c = solved_curves();
     let first = c.iter().position(|curve| curve.jumps).unwrap();
     assert!(c[first - 1].tabor < CUSP_TABOR && CUSP_TABOR < c[first].tabor);
-    for (mu, s_shaped) in [(CUSP_TABOR - 1e-4, false), (CUSP_TABOR + 1e-4, true)] {
+    // The least slope −dδ̂/dG over G = 1.27 … 1.235, where the S-shape opens
+    // (the steepest point lies at G = 1.253).
+    let extrapolated = SphereSettings {
+        refinement: 1.0,
+        extrapolate: true,
+    };
+    let gaps: Vec<f64> = (0..=35).map(|i| 1.27 - 1e-3 * i as f64).collect();
+    let least_slope = |mu: f64| {
+        let points = lennard_jones_at_apex_gaps(mu, &gaps, extrapolated).unwrap();
+        points
+            .windows(2)
+            .map(|w| (w[1].interference - w[0].interference) / (w[0].apex_gap - w[1].apex_gap))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (below, above) = (
+        least_slope(CUSP_TABOR - 5e-4),
+        least_slope(CUSP_TABOR + 5e-4),
+    );
+    assert!(below > 2e-4 && below < 1e-3, "{below:e}");
+    assert!(above < -2e-4 && above > -1e-3, "{above:e}");
+    for (mu, s_shaped) in [(CUSP_TABOR - 1e-3, false), (CUSP_TABOR + 2e-3, true)] {
         let (curve, _) = asperity_curve(CurveLaw::LennardJones, mu, -1.2, 1.0, 3).unwrap();
         assert_eq!(curve.jump_in.is_some(), s_shaped, "μ = {mu}");
     }

@@ -135,15 +135,22 @@ pub fn stand_in_pull_off_error(above: bool) -> f64 {
     ((-2.0 - end) / end).abs()
 }
 
-/// The Tabor parameter where the sphere's loading curve turns S-shaped:
-/// `wearopt asperity` finds no jumps at μ = 0.7092 and jumps at 0.7094 (the
-/// table's last single-valued curve is at 0.692, its first S-shaped one at
-/// 0.7275: test `the_cusp_lies_between_the_tables_kinds_of_curve`).
-pub const CUSP_TABOR: f64 = 0.7093;
+/// The Tabor parameter where the sphere's loading curve turns S-shaped (the
+/// converged solution's: δ̂ against the apex gap G, each point extrapolated
+/// on three meshes, has a least slope −dδ̂/dG of +2.07e-4 at μ = 0.697 and
+/// −7.5e-4 at 0.698, falling linearly with μ (+1.17e-3 at 0.696); the
+/// trace's own mesh puts the cusp within 3e-4 of it). Until 2026-11-29 it
+/// stood at 0.7093, where `wearopt asperity` first found jumps: its trace
+/// stepped over the S-shape whole where that is narrower than a step (1.5e-3
+/// of δ̂ at μ = 0.715). The table's last single-valued curve is at 0.692,
+/// its first S-shaped one at 0.7275 (test
+/// `the_cusp_lies_between_the_tables_kinds_of_curve`).
+pub const CUSP_TABOR: f64 = 0.6972;
 
 /// The Lagrange weights of the four nodes around μ, cubic in 1/μ (∝ ẑ0, the
 /// attraction's range in the sphere's units), all on μ's side of the cusp
-/// (eight, two sides' four blended, within [`CUSP_BLEND`] of it), or one at a node;
+/// ([`CUSP_TABOR`]; just above it the cusp and three, the cusp's value the
+/// four single-valued curves' there), or one at a node;
 /// None outside the table. Each node comes with a second weight, cubic in
 /// ln μ, for the single summit's pull-off. In 1/μ the integrals: the shares
 /// vary with μ at fixed ℓ much like powers of the range (the far attraction
@@ -186,60 +193,88 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     } else {
         first.max(solved.saturating_sub(1))
     };
-    // The four weights of cubic Lagrange interpolation in `variable` over the
-    // four curves from `first` on.
-    let lagrange = |first: usize, variable: fn(f64) -> f64| -> Vec<f64> {
-        let ks = &kept[first..first + width];
-        let x = variable(tabor);
-        let xs: Vec<f64> = ks.iter().map(|&k| variable(c[k].tabor)).collect();
-        (0..width)
+    // The weights of Lagrange interpolation at `at` in `variable` over the
+    // curves at `xs`.
+    let lagrange = |at: f64, xs: &[f64], variable: fn(f64) -> f64| -> Vec<f64> {
+        let x = variable(at);
+        let xs: Vec<f64> = xs.iter().map(|&m| variable(m)).collect();
+        (0..xs.len())
             .map(|i| {
-                (0..width)
+                (0..xs.len())
                     .filter(|&j| j != i)
                     .map(|j| (x - xs[j]) / (xs[i] - xs[j]))
                     .product::<f64>()
             })
             .collect()
     };
-    let weights = |first: usize, share: f64| -> Vec<(usize, f64, f64)> {
-        // The pull-off in ln μ up to 5, in μ^{-2/3} above, where it nears
-        // JKR's 1.5 about as a power of μ.
-        let pull_off_variable: fn(f64) -> f64 = if tabor <= SPARSE_ABOVE {
-            f64::ln
-        } else {
-            |m| m.powf(-2.0 / 3.0)
-        };
+    // The pull-off in ln μ up to 5, in μ^{-2/3} above, where it nears JKR's
+    // 1.5 about as a power of μ.
+    let pull_off_variable: fn(f64) -> f64 = if tabor <= SPARSE_ABOVE {
+        f64::ln
+    } else {
+        |m| m.powf(-2.0 / 3.0)
+    };
+    // The weights at `at` of the `width` curves from `first` on.
+    let weights = |first: usize, at: f64| -> Vec<(usize, f64, f64)> {
+        let ks = &kept[first..first + width];
+        let xs: Vec<f64> = ks.iter().map(|&k| c[k].tabor).collect();
         let (integrals, pull_off) = (
-            lagrange(first, f64::recip),
-            lagrange(first, pull_off_variable),
+            lagrange(at, &xs, f64::recip),
+            lagrange(at, &xs, pull_off_variable),
         );
         (0..width)
-            .map(|i| (kept[first + i], share * integrals[i], share * pull_off[i]))
+            .map(|i| (ks[i], integrals[i], pull_off[i]))
             .collect()
     };
     // A stencil that reaches across the cusp is moved to μ's side of it (the
-    // integrals are not smooth in μ there): the nearest four on that side;
-    // within CUSP_BLEND of it the two sides' are blended linearly in ln μ, so
-    // that P̄ stays continuous in μ.
+    // integrals are not smooth in μ there): the nearest four on that side.
+    let side = tabor >= CUSP_TABOR;
     let one_sided = |f: usize, side: bool| (f..f + width).all(|i| c[kept[i]].jumps == side);
     let nearest = |side: bool| {
         (0..=kept.len() - width)
             .filter(|&f| one_sided(f, side))
             .min_by_key(|&f| f.abs_diff(first))
     };
-    let to_cusp = (tabor / CUSP_TABOR).ln() / CUSP_BLEND;
-    if one_sided(first, to_cusp >= 0.0) {
-        return Some(weights(first, 1.0));
-    }
-    match (nearest(false), nearest(true)) {
-        (Some(below), Some(above)) if to_cusp.abs() < 1.0 => {
-            let t = 0.5 * (to_cusp + 1.0);
-            Some([weights(below, 1.0 - t), weights(above, t)].concat())
+    let first = if one_sided(first, side) {
+        first
+    } else {
+        match nearest(side) {
+            Some(f) => f,
+            None => return Some(weights(first, tabor)),
         }
-        (Some(below), _) if to_cusp < 0.0 => Some(weights(below, 1.0)),
-        (_, Some(above)) if to_cusp >= 0.0 => Some(weights(above, 1.0)),
-        _ => Some(weights(first, 1.0)),
+    };
+    // Between the cusp and the second S-shaped curve the cusp itself is the
+    // stencil's first node, its value the single-valued side's there (four
+    // curves): there the S-shape's loop closes, and the loading path's
+    // integrals continue those of the single-valued curves, which are smooth
+    // in μ through the cusp (in the apex gap the path is regular), plus the
+    // loop's share, which grows from zero as (μ − μ_c)² (the jump in load as
+    // (μ − μ_c)^{1/2}, the loop's width in δ̂ as (μ − μ_c)^{3/2}). P̄ is so
+    // continuous in μ across the cusp, and extrapolating the S-shaped
+    // curves' integrals down to it from 0.7275 erred by 1.5e-5 at μ = 0.71.
+    let s_shaped: Vec<usize> = (0..kept.len()).filter(|&i| c[kept[i]].jumps).collect();
+    let below = nearest(false);
+    if side && s_shaped.len() > width && s_shaped[0] == first {
+        if let Some(below) = below {
+            let second = c[kept[s_shaped[1]]].tabor;
+            if tabor < second {
+                let ks = &kept[first..first + width - 1];
+                let xs: Vec<f64> = std::iter::once(CUSP_TABOR)
+                    .chain(ks.iter().map(|&k| c[k].tabor))
+                    .collect();
+                let (integrals, pull_off) = (
+                    lagrange(tabor, &xs, f64::recip),
+                    lagrange(tabor, &xs, pull_off_variable),
+                );
+                let at_cusp = weights(below, CUSP_TABOR)
+                    .into_iter()
+                    .map(|(k, w, wp)| (k, integrals[0] * w, pull_off[0] * wp));
+                let above = (0..width - 1).map(|i| (ks[i], integrals[i + 1], pull_off[i + 1]));
+                return Some(at_cusp.chain(above).collect());
+            }
+        }
     }
+    Some(weights(first, tabor))
 }
 
 /// The Tabor parameter above which the table's grid is sparser (18.4
@@ -251,10 +286,6 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
 /// curves written between, μ = 5.32, 9.93 and 21.0, within 3.3e-8, 1.1e-10
 /// and 1.1e-10).
 pub const SPARSE_ABOVE: f64 = 5.0;
-
-/// The half-width in ln μ of the blend between the two sides' stencils at
-/// the cusp ([`CUSP_TABOR`]): μ = 0.7058 … 0.7129.
-const CUSP_BLEND: f64 = 5e-3;
 
 impl RoughLaw {
     /// The law for the load coefficients c_0 > 0 (adhesion), c_h (∞: no

@@ -898,28 +898,26 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// P̄ between the table's curves (cubic in 1/μ) against P̄ of the solver's
 /// own curve there, relative to ∫|p| φ̄ (`tests/data/lennard_jones_between.txt`,
 /// ℓ = 1 … 100, z0 ≤ 3, h = −1 … 4): at the midpoints between curves, and
-/// beside the cusp μ ≈ 0.71, 0.645 … 0.78 (where the four curves are all on
+/// beside the cusp (μ_c = 0.6972), 0.645 … 0.78 (where the curves are all on
 /// μ's side of it, reaching past the table's curve nearest the cusp; the
-/// largest at μ = 0.676, 9.6e-8 at 0.73, next to the first S-shaped curve).
-/// Except just above the cusp (below), the law's largest error against the
-/// converged sphere (the tail beyond the table's reach, [`TAIL_ERROR`],
-/// moves P̄ by less). Not measured within
-/// μ = 0.70 … 0.725, where the generator's trace does not converge, but at
-/// μ = 0.71, 0.1 % above the cusp, where it does: there 1.5e-5 — the
-/// S-shape's jumps grow from zero at the cusp, which a cubic through the
-/// curves from 0.7275 up does not follow. (Until
-/// 2026-11-28, with the first S-shaped curve, 0.7275, at refinement 1 —
-/// 4.3e-6 off its own at 2, where the trace nearly stops converging —
-/// 2.7e-6 beside the cusp; on the table of 67 curves: 4.0e-6 and 9.2e-6.)
+/// largest at μ = 0.676, 3.1e-8 at 0.73, next to the first S-shaped curve).
+/// The law's largest error against the converged sphere (the tail beyond
+/// the table's reach, [`TAIL_ERROR`], moves P̄ by less). (Until 2026-11-28,
+/// with the first S-shaped curve, 0.7275, at refinement 1 — 4.3e-6 off its
+/// own at 2, where the trace nearly stops converging — 2.7e-6 beside the
+/// cusp; on the table of 67 curves: 4.0e-6 and 9.2e-6.)
 pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 3.2e-7);
-/// Just above the cusp (μ = 0.7093), as [`INTERPOLATION_ERROR`]: (μ, P̄'s
-/// error there). At μ = 0.71, 0.1 % above it, P̄ interpolated from the
-/// S-shaped curves 0.7275, 0.7605, … is 1.5e-5 of ∫|p| φ̄ off the solver's
-/// own curve (`tests/data/lennard_jones_above_cusp.txt`, refinement 2; at 1
-/// the same to three digits; ℓ = 1, c_h = 5, h = 2): the S-shape's jumps
-/// grow from zero at the cusp faster than a cubic in 1/μ through those
-/// curves follows. Above the 1e-6 the law is to meet: open (2026-11-28).
-pub const INTERPOLATION_ERROR_ABOVE_CUSP: (f64, f64) = (0.71, 1.5e-5);
+/// Just above the cusp, between it and the first S-shaped curve (0.7275),
+/// as [`INTERPOLATION_ERROR`]: (μ, P̄'s error there), the largest of four
+/// curves the solver wrote at refinement 2 (μ = 0.705, 0.71, 0.715, 0.72:
+/// `tests/data/lennard_jones_above_cusp.txt`; 2.8e-7, 2.8e-7, 2.2e-7,
+/// 1.4e-7). There the stencil is the cusp itself — its value the four
+/// single-valued curves' below it, extrapolated to μ_c — and the first
+/// three S-shaped curves: at the cusp the S-shape's loop closes, and the
+/// loading path's integrals are those of a curve smooth in μ through it
+/// plus the loop's share, which grows from zero as (μ − μ_c)². Until
+/// 2026-11-29, extrapolated from the S-shaped curves alone, 1.5e-5 at 0.71.
+pub const INTERPOLATION_ERROR_ABOVE_CUSP: (f64, f64) = (0.71, 2.9e-7);
 /// As [`INTERPOLATION_ERROR`] above μ = 5 (`rough::SPARSE_ABOVE`) up to the
 /// solved table's end, where the grid is sparser (18.4 curves a decade, each
 /// 4–23 minutes to write on the stretching mesh) and six curves serve a
