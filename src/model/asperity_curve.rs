@@ -787,17 +787,26 @@ pub fn lennard_jones_curve(
     // A target between one step's end and the next's regraded start is found
     // in both: the branch holds one point per interference.
     rows.dedup_by(|a, b| a.interference == b.interference && a.branch == b.branch);
+    // The steps' ends and the turns between them (each turn ends the branch
+    // before it: a plot's branches then meet at the jumps, where the
+    // unstable branch drawn from the last step's end before the turn had
+    // reached up the approach branch by as much as a step).
     let path = windows
         .iter()
         .enumerate()
-        .map(|(k, w)| {
-            let p = w.end.point;
-            CurvePoint {
-                interference: p.interference,
-                load: p.load,
-                contact_radius: p.contact_radius,
-                branch: branch_after(k, w.length, &p),
-            }
+        .flat_map(|(k, w)| {
+            turns
+                .iter()
+                .filter(move |t| t.0 == k)
+                .map(|t| (t.1, t.2.point))
+                .chain(std::iter::once((w.length, w.end.point)))
+                .map(move |(at, p)| (k, at, p))
+        })
+        .map(|(k, at, p)| CurvePoint {
+            interference: p.interference,
+            load: p.load,
+            contact_radius: p.contact_radius,
+            branch: branch_after(k, at, &p),
         })
         .collect();
     // The marks extrapolated to the converged solution where the settings
