@@ -51,14 +51,16 @@ if [[ "${1:-}" == between ]]; then
     exit 0
 fi
 if [[ "${1:-}" == cusp ]]; then
-    # μ = 0.705, 0.71, 0.715 and 0.72, between the cusp (μ_c = 0.6972) and
-    # the table's first S-shaped curve (0.7275), at refinement 2 (5 minutes
-    # each; at refinement 1 the trace's mesh moves the jumps by 5e-4 of δ̂,
-    # more than the S-shape is wide below μ ≈ 0.707, and the contact nodes
-    # next to the jump find no solution on it).
+    # μ = 0.70, 0.705, 0.71, 0.715 and 0.72, between the cusp (μ_c = 0.6972)
+    # and the table's first S-shaped curve (0.7275), at refinement 2 (5
+    # minutes each; at refinement 1 the trace's mesh moves the jumps by 5e-4
+    # of δ̂, more than the S-shape is wide below μ ≈ 0.707, and the contact
+    # nodes next to the jump find no solution on it), 0.70 at 3 (27 minutes:
+    # there the S-shape is 9.4e-5 wide).
     {
-        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 2, extrapolated, just above the cusp (μ_c = 0.6972): μ = 0.705, 0.71, 0.715, 0.72:"
+        echo "# Lennard-Jones loading curves (docs/model.md §11), extrapolated, just above the cusp (μ_c = 0.6972): μ = 0.70 at refinement 3, 0.705, 0.71, 0.715, 0.72 at refinement 2:"
         echo "# written by scripts/lennard_jones_table.sh cusp; read by tests/all/lennard_jones_rough.rs"
+        "$bin" 3 0.70 | grep -v '^#'
         "$bin" 2 0.705 0.71 0.715 0.72 | grep -v '^#'
     } > tests/data/lennard_jones_above_cusp.txt.new
     mv tests/data/lennard_jones_above_cusp.txt.new tests/data/lennard_jones_above_cusp.txt

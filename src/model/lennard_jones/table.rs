@@ -908,10 +908,10 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// cusp; on the table of 67 curves: 4.0e-6 and 9.2e-6.)
 pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 3.2e-7);
 /// Just above the cusp, between it and the first S-shaped curve (0.7275),
-/// as [`INTERPOLATION_ERROR`]: (μ, P̄'s error there), the largest of four
-/// curves the solver wrote at refinement 2 (μ = 0.705, 0.71, 0.715, 0.72:
-/// `tests/data/lennard_jones_above_cusp.txt`; 2.8e-7, 2.8e-7, 2.2e-7,
-/// 1.4e-7). There the stencil is the cusp itself — its value the four
+/// as [`INTERPOLATION_ERROR`]: (μ, P̄'s error there), the largest of five
+/// curves the solver wrote (μ = 0.70 at refinement 3, 0.705, 0.71, 0.715,
+/// 0.72 at 2: `tests/data/lennard_jones_above_cusp.txt`; 2.7e-7, 2.8e-7,
+/// 2.8e-7, 2.2e-7, 1.4e-7). There the stencil is the cusp itself — its value the four
 /// single-valued curves' below it, extrapolated to μ_c — and the first
 /// three S-shaped curves: at the cusp the S-shape's loop closes, and the
 /// loading path's integrals are those of a curve smooth in μ through it
