@@ -252,26 +252,25 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     // (μ − μ_c)^{1/2}, the loop's width in δ̂ as (μ − μ_c)^{3/2}). P̄ is so
     // continuous in μ across the cusp, and extrapolating the S-shaped
     // curves' integrals down to it from 0.7275 erred by 1.5e-5 at μ = 0.71.
-    let s_shaped: Vec<usize> = (0..kept.len()).filter(|&i| c[kept[i]].jumps).collect();
-    let below = nearest(false);
-    if side && s_shaped.len() > width && s_shaped[0] == first {
-        if let Some(below) = below {
-            let second = c[kept[s_shaped[1]]].tabor;
-            if tabor < second {
-                let ks = &kept[first..first + width - 1];
-                let xs: Vec<f64> = std::iter::once(CUSP_TABOR)
-                    .chain(ks.iter().map(|&k| c[k].tabor))
-                    .collect();
-                let (integrals, pull_off) = (
-                    lagrange(tabor, &xs, f64::recip),
-                    lagrange(tabor, &xs, pull_off_variable),
-                );
-                let at_cusp = weights(below, CUSP_TABOR)
-                    .into_iter()
-                    .map(|(k, w, wp)| (k, integrals[0] * w, pull_off[0] * wp));
-                let above = (0..width - 1).map(|i| (ks[i], integrals[i + 1], pull_off[i + 1]));
-                return Some(at_cusp.chain(above).collect());
-            }
+    // (The S-shaped curves are the table's last ones below the limit curves,
+    // all from the first: `first` is the first when the curve before it is
+    // single-valued.)
+    let at_first_s_shaped = side && first > 0 && !c[kept[first - 1]].jumps;
+    if at_first_s_shaped && tabor < c[kept[first + 1]].tabor {
+        if let Some(below) = nearest(false) {
+            let ks = &kept[first..first + width - 1];
+            let xs: Vec<f64> = std::iter::once(CUSP_TABOR)
+                .chain(ks.iter().map(|&k| c[k].tabor))
+                .collect();
+            let (integrals, pull_off) = (
+                lagrange(tabor, &xs, f64::recip),
+                lagrange(tabor, &xs, pull_off_variable),
+            );
+            let at_cusp = weights(below, CUSP_TABOR)
+                .into_iter()
+                .map(|(k, w, wp)| (k, integrals[0] * w, pull_off[0] * wp));
+            let above = (0..width - 1).map(|i| (ks[i], integrals[i + 1], pull_off[i + 1]));
+            return Some(at_cusp.chain(above).collect());
         }
     }
     Some(weights(first, tabor))
