@@ -19,12 +19,12 @@
 # midpoints between eleven pairs of its curves (where the interpolation in μ
 # errs most; three of them beside the cusp), at μ = 0.696, 0.72875, 0.73, 0.735
 # and 0.745 beside the cusp and at the shipped hub's μ, which tests/all/lennard_jones_rough.rs
-# measures that interpolation against (about 45 minutes, 23 of them at μ = 21). `far` writes six
+# measures that interpolation against (about 45 minutes, 23 of them at μ = 21). `far` writes eight
 # curves of the table (μ = 0.01, three around 0.041 where the tail's
-# departure from the squeezed gap changes sign, 0.105, 0.918 and 4.14) with contact
+# departure from the squeezed gap changes sign, 0.105, 0.918, 4.14 and 5.66) with contact
 # parts two to eight times as far as the table's (to δ̂ = 1808, 880 and 400),
-# which the same tests measure the table's tail against (about 20 minutes, 8 of them at
-# μ = 4.14). The contact
+# which the same tests measure the table's tail against (about 40 minutes, 8 of them at
+# μ = 4.14, 18 at 5.66). The contact
 # parts reach δ̂ = 50, or 16 ẑ0 where that is further (μ < 0.18: `GRID=0..62`
 # in the environment writes only those 62 curves, 30 minutes on two processes).
 set -euo pipefail
@@ -69,13 +69,14 @@ fi
 if [[ "${1:-}" == far ]]; then
     # The table's first curve (twice its reach of 16 ẑ0), its 29th, 31st and
     # 33rd (four times their reach of 16 ẑ0, 242 … 200), its 52nd (4.7 times
-    # its 86), its 98th and its 129th (eight times the reach of 50).
+    # its 86), its 98th and its 129th (eight times the reach of 50), and its
+    # 134th, the first above 5, on the stretching mesh (18 minutes).
     {
-        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 1, extrapolated, contact parts to δ̂ = 1808 (32 ẑ0) at μ = 0.01, 880 at 0.0374, 0.0411 and 0.0451, 400 at 0.105, 0.918 and 4.14:"
+        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 1, extrapolated, contact parts to δ̂ = 1808 (32 ẑ0) at μ = 0.01, 880 at 0.0374, 0.0411 and 0.0451, 400 at 0.105, 0.918, 4.14 and 5.66:"
         echo "# written by scripts/lennard_jones_table.sh far; read by tests/all/lennard_jones_rough.rs"
         REACH=1808 "$bin" 1 0.01 | grep -v '^#'
         REACH=880 "$bin" 1 0.03736876876070855 0.04105842385440056 0.045112381951961454 | grep -v '^#'
-        REACH=400 "$bin" 1 0.10527787805206623 0.9180942678743859 4.141741928025571 | grep -v '^#'
+        REACH=400 "$bin" 1 0.10527787805206623 0.9180942678743859 4.141741928025571 5.664734861651771 | grep -v '^#'
     } > tests/data/lennard_jones_far.txt.new
     mv tests/data/lennard_jones_far.txt.new tests/data/lennard_jones_far.txt
     exit 0

@@ -609,7 +609,7 @@ fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
 /// with that tail against P̄ of the same curve written by the solver two to
 /// eight times as far (`tests/data/lennard_jones_far.txt`, to δ̂ = 1808 at
 /// μ = 0.01, 880 at three curves around 0.041 where the tail's departure
-/// from the squeezed gap changes sign, 400 at 0.105, 0.918 and 4.14;
+/// from the squeezed gap changes sign, 400 at 0.105, 0.918, 4.14 and 5.66;
 /// `scripts/lennard_jones_table.sh far`), both by the same quadrature, at
 /// ℓ = 30 … 1000 (where summits that deep weigh), with and without
 /// plasticity, h = −1 … 4: within what `TAIL_ERROR` states (the reports

@@ -938,7 +938,8 @@ pub const INTERPOLATION_ERROR_SPARSE: f64 = 2.5e-7;
 /// curve written by the solver two to eight times as far (to δ̂ = 1808 at
 /// μ = 0.01, 880 at 0.0374, 0.0411 and 0.0451 — around μ = 0.041 the
 /// departure changes sign, and [`departure_law`] is at a bound —, 400 at
-/// 0.105, 0.918 and 4.14:
+/// 0.105, 0.918, 4.14 and 5.66, the last on the stretching mesh, where
+/// summits that deep weigh only at ℓ ≤ 18 (z0 ≥ 1e-3):
 /// `scripts/lennard_jones_table.sh far`, its own tail beyond), relative to
 /// ∫|p| φ̄ over h = −1 … 4, with and without plasticity: [μ, then at each ℓ
 /// of [`TAIL_SCALES`]] (1e-12: rounding, the tail not reached). Everywhere
@@ -953,7 +954,7 @@ pub const INTERPOLATION_ERROR_SPARSE: f64 = 2.5e-7;
 /// until 2026-11-27, at ℓ = 30 / 100: 3.1e-3 / 8.3e-3, 9.2e-5 / 4.9e-4,
 /// 1.0e-5 / 5.6e-5; growing as a fitted power of δ̂: 4.0e-4 / 2.3e-3,
 /// 6.1e-7 / 7.3e-6, 1.2e-7 / 1.2e-6.)
-pub const TAIL_ERROR: [[f64; 5]; 7] = [
+pub const TAIL_ERROR: [[f64; 5]; 8] = [
     [0.01, 1e-12, 1e-12, 5.8e-12, 1.4e-9],
     [0.0374, 1e-12, 7.1e-9, 1.35e-7, 1.6e-7],
     [0.0411, 1e-12, 2.3e-8, 2.3e-7, 2.2e-7],
@@ -961,6 +962,7 @@ pub const TAIL_ERROR: [[f64; 5]; 7] = [
     [0.105, 1.4e-10, 1.5e-8, 2.5e-8, 2.3e-8],
     [0.918, 3.9e-9, 3.2e-8, 3.3e-8, 2.9e-8],
     [4.14, 2.2e-9, 1.7e-8, 1.7e-8, 1.5e-8],
+    [5.66, 2.3e-9, 1.65e-8, 1.65e-8, 1.5e-8],
 ];
 /// The ℓ = σ/ε of [`TAIL_ERROR`]'s columns.
 pub const TAIL_SCALES: [f64; 4] = [30.0, 100.0, 300.0, 1000.0];
