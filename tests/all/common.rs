@@ -232,3 +232,43 @@ pub fn under_law(stem: &str, law: &str) -> PathBuf {
     std::fs::rename(&own, &path).expect("tmp is writable");
     path
 }
+
+/// How much of an accuracy campaign a test runs. The default run keeps one
+/// representative case of each claim (the law holds its stated error there);
+/// the full campaign, behind `#[ignore]`, measures the stated error over every
+/// case and checks that it is the worst one found (within [0.5, margin] of it).
+/// Run every campaign before changing a law or its table:
+/// `cargo test --release --test all -- --ignored campaign`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scope {
+    /// One representative case per claim: fast, in the default run.
+    Representative,
+    /// Every case the stated error was measured on.
+    Every,
+}
+
+impl Scope {
+    /// `all` under `Every`; the items of `all` at `picks` under `Representative`.
+    pub fn pick<T: Clone>(self, all: &[T], picks: &[usize]) -> Vec<T> {
+        match self {
+            Scope::Every => all.to_vec(),
+            Scope::Representative => picks.iter().map(|&i| all[i].clone()).collect(),
+        }
+    }
+
+    /// The measured `worst` against the `stated` error: at most `margin` times it
+    /// always, and at least half of it over the whole campaign (the statement is
+    /// the measurement, not a loose bound).
+    pub fn as_stated(self, worst: f64, stated: f64, margin: f64) {
+        assert!(
+            worst <= margin * stated,
+            "{worst:e} above the stated {stated:e}"
+        );
+        if self == Scope::Every {
+            assert!(
+                worst >= 0.5 * stated,
+                "{worst:e} far below the stated {stated:e}"
+            );
+        }
+    }
+}

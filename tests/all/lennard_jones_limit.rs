@@ -133,6 +133,7 @@ fn the_jump_in_follows_the_solved_curves() {
 }
 
 use crate::common::committed_curves as committed;
+use crate::common::Scope;
 
 /// The switch the limit curves took until 2026-11-28: the last solved
 /// curve's δ̂_s μ^{1/2}, held.
@@ -179,13 +180,23 @@ fn deepest(f: impl Fn(f64) -> f64) -> f64 {
 /// grows: at μ = 19.7 the pull-off's is 1.2e-2).
 #[test]
 fn the_limit_curve_stands_in_for_the_sphere_as_stated() {
+    limit_curve_stands_in(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored limit_curve_stands_in_campaign"]
+fn limit_curve_stands_in_campaign() {
+    limit_curve_stands_in(Scope::Every);
+}
+
+fn limit_curve_stands_in(scope: Scope) {
     let solved = solved_curves();
     let mut worst_by_mu = Vec::new();
-    for k in [solved.len() - 2, solved.len() - 1] {
+    for k in scope.pick(&[solved.len() - 2, solved.len() - 1], &[1]) {
         let own = &solved[k];
         let limit = limit_curve(own.tabor, &JumpIn::through(&solved[k - 1], own));
         let mut pull = 0.0f64;
-        for ell in [1.0, 3.0, 10.0] {
+        for ell in scope.pick(&[1.0, 3.0, 10.0], &[0]) {
             let (a, b) = (pull_off(own, ell), pull_off(&limit, ell));
             println!(
                 "μ = {}, ℓ = {ell}: pull-off {a:.6e}, limit curve {:+.3e}",
@@ -195,11 +206,11 @@ fn the_limit_curve_stands_in_for_the_sphere_as_stated() {
             pull = pull.max((b / a - 1.0).abs());
         }
         let mut load = 0.0f64;
-        for ell in [1.0f64, 3.0, 10.0, 30.0, 100.0] {
-            for c_h in [5.0, f64::INFINITY] {
+        for ell in scope.pick(&[1.0f64, 3.0, 10.0, 30.0, 100.0], &[0]) {
+            for c_h in scope.pick(&[5.0, f64::INFINITY], &[1]) {
                 let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
                 let dc = |k: &Curve| critical_interference(k, c_h * ell.sqrt()) / ell;
-                for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+                for h in scope.pick(&[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0], &[1, 4]) {
                     let (a, size) = reference_load_of([(own, 1.0, dc(own))], ell, c, h);
                     let (b, _) = reference_load_of([(&limit, 1.0, dc(&limit))], ell, c, h);
                     load = load.max((a - b).abs() / size);
@@ -212,14 +223,13 @@ fn the_limit_curve_stands_in_for_the_sphere_as_stated() {
         );
         worst_by_mu.push((pull, load));
     }
-    let (pull, load) = worst_by_mu[1];
+    let (pull, load) = *worst_by_mu.last().unwrap();
     for (worst, stated) in [(pull, LIMIT_ERROR.0), (load, LIMIT_ERROR.1)] {
-        assert!(
-            worst <= 1.05 * stated && worst >= 0.5 * stated,
-            "{worst:e} vs {stated:e}"
-        );
+        scope.as_stated(worst, stated, 1.05);
     }
-    assert!(worst_by_mu[0].0 > pull && worst_by_mu[0].1 > load);
+    if scope == Scope::Every {
+        assert!(worst_by_mu[0].0 > pull && worst_by_mu[0].1 > load);
+    }
 }
 
 /// Between the limit curves P̄ is interpolated (cubically in 1/μ) within
@@ -228,19 +238,30 @@ fn the_limit_curve_stands_in_for_the_sphere_as_stated() {
 /// plasticity, h = −1 … 4.
 #[test]
 fn the_law_between_limit_curves_is_interpolated_as_stated() {
+    between_limit_curves(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored between_limit_curves_campaign"]
+fn between_limit_curves_campaign() {
+    between_limit_curves(Scope::Every);
+}
+
+fn between_limit_curves(scope: Scope) {
     let all = curves();
     let n = solved_curves().len();
     let jump_in = limit_jump_in();
-    for (k, stated) in [(n + 12, 1.7e-5), (n + 36, 1.05e-6), (all.len() - 2, 3.3e-7)] {
+    let cases = [(n + 12, 1.7e-5), (n + 36, 1.05e-6), (all.len() - 2, 3.3e-7)];
+    for (k, stated) in scope.pick(&cases, &[0]) {
         let mu = (all[k].tabor * all[k + 1].tabor).sqrt();
         let own = limit_curve(mu, &jump_in);
         let mut worst = 0.0f64;
-        for ell in [0.3f64, 1.0, 3.0, 10.0, 30.0, 100.0] {
-            for c_h in [5.0, f64::INFINITY] {
+        for ell in scope.pick(&[0.3f64, 1.0, 3.0, 10.0, 30.0, 100.0], &[1]) {
+            for c_h in scope.pick(&[5.0, f64::INFINITY], &[0]) {
                 let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
                 let law = RoughLaw::new(c.c_0, c.c_h, spacing(mu) / ell).unwrap();
                 let dc = critical_interference(&own, c_h * ell.sqrt()) / ell;
-                for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+                for h in scope.pick(&[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0], &[1, 4]) {
                     let (a, size) = reference_load_of(law.curves(), ell, c, h);
                     let (b, _) = reference_load_of([(&own, 1.0, dc)], ell, c, h);
                     worst = worst.max((a - b).abs() / size);
@@ -248,10 +269,7 @@ fn the_law_between_limit_curves_is_interpolated_as_stated() {
             }
         }
         println!("μ = {mu:.4e}: P̄ within {worst:.2e}");
-        assert!(
-            worst <= 1.1 * stated && worst >= 0.5 * stated,
-            "{worst:e} vs {stated:e}"
-        );
+        scope.as_stated(worst, stated, 1.1);
     }
 }
 
@@ -328,17 +346,27 @@ fn the_plastic_rule_on_a_limit_curve_is_jkrs() {
 /// jump in held at μ^{-1/2}, until 2026-11-28, 5.9e-3 and 3.5e-3).
 #[test]
 fn the_law_above_the_table_against_a_solved_curve_there() {
+    above_the_table(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored above_the_table_campaign"]
+fn above_the_table_campaign() {
+    above_the_table(Scope::Every);
+}
+
+fn above_the_table(scope: Scope) {
     use wearopt::model::lennard_jones::table::LIMIT_CHECK;
     let own = committed("lennard_jones_above.txt").remove(0);
     let mu = own.tabor;
     assert!((mu / LIMIT_CHECK.0 - 1.0).abs() < 1e-3 && mu > solved_range().1);
     let (mut pull, mut load) = (0.0f64, 0.0f64);
-    for ell in [1.0f64, 3.0, 10.0, 30.0, 100.0] {
-        for c_h in [5.0, f64::INFINITY] {
+    for ell in scope.pick(&[1.0f64, 3.0, 10.0, 30.0, 100.0], &[0]) {
+        for c_h in scope.pick(&[5.0, f64::INFINITY], &[1]) {
             let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
             let law = RoughLaw::new(c.c_0, c.c_h, spacing(mu) / ell).unwrap();
             let dc = critical_interference(&own, c_h * ell.sqrt()) / ell;
-            for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+            for h in scope.pick(&[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0], &[1, 4]) {
                 let (a, size) = reference_load_of(law.curves(), ell, c, h);
                 let (b, _) = reference_load_of([(&own, 1.0, dc)], ell, c, h);
                 load = load.max((a - b).abs() / size);
@@ -356,10 +384,7 @@ fn the_law_above_the_table_against_a_solved_curve_there() {
     }
     println!("pull-off within {pull:.3e}, P̄ within {load:.3e}");
     for (worst, stated) in [(pull, LIMIT_CHECK.1), (load, LIMIT_CHECK.2)] {
-        assert!(
-            (0.5 * stated..=1.05 * stated).contains(&worst),
-            "{worst:e} vs {stated:e}"
-        );
+        scope.as_stated(worst, stated, 1.05);
     }
 }
 

@@ -6,7 +6,7 @@ use wearopt::model::lennard_jones::rough::{critical_interference, RoughLaw};
 use wearopt::model::lennard_jones::spacing;
 use wearopt::model::lennard_jones::table::curves;
 
-use crate::common::committed_curves;
+use crate::common::{committed_curves, Scope};
 
 /// Adaptive Simpson on [a, b] to `rel` of the integral of |f| (estimated
 /// first by a 64-point midpoint sum).
@@ -360,18 +360,32 @@ fn the_scene_grid_matches_the_windowed_quadrature() {
 /// (measured: 5e-14 at ℓ = 8…9.5 and 30, 6.4e-13 at ℓ = 0.59).
 #[test]
 fn the_stretched_grid_matches_an_adaptive_quadrature() {
+    stretched_grid(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored stretched_grid_campaign"]
+fn stretched_grid_campaign() {
+    stretched_grid(Scope::Every);
+}
+
+/// The grid's moments against Simpson's rule to 1e-12: two scenes at the
+/// grid's stretching edges, two separations, in the default run; five scenes
+/// and five separations in the campaign.
+fn stretched_grid(scope: Scope) {
     let mut worst = 0.0f64;
-    for (ell, c_h) in [
+    let scenes = [
         (8.0, 6.0),
         (9.0, 6.0),
         (8.0 * 2f64.powf(0.25) * (1.0 - 1e-12), 6.0),
         (0.5 * 2f64.powf(0.25) * (1.0 - 1e-12), f64::INFINITY),
         (30.0, 40.0),
-    ] {
+    ];
+    for (ell, c_h) in scope.pick(&scenes, &[2, 3]) {
         let c_0 = 2.0 * f64::powf(ell, -1.5);
         let law = RoughLaw::new(c_0, c_h, spacing(0.374) / ell).expect("in the table");
         let grid = law.grid();
-        for h in [-6.0f64, -4.15, -2.0, 0.5, 3.0] {
+        for h in scope.pick(&[-6.0f64, -4.15, -2.0, 0.5, 3.0], &[1, 3]) {
             let (mut noncontact, mut elastic) = ([0.0; 3], [0.0; 3]);
             for (curve, w, dc) in law.curves() {
                 let switch = curve.switch / ell;
@@ -488,20 +502,39 @@ fn interpolation_scenes(
 
 #[test]
 fn the_interpolation_in_tabor_against_curves_between_the_tables() {
+    between_the_tables(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored between_the_tables_campaign"]
+fn between_the_tables_campaign() {
+    between_the_tables(Scope::Every);
+}
+
+fn between_the_tables(scope: Scope) {
     use wearopt::accuracy::lennard_jones::reference_load_of;
     let between = committed_curves("lennard_jones_between.txt");
     assert_eq!(between.len(), 17);
     use wearopt::model::lennard_jones::rough::SPARSE_ABOVE;
+    // One curve of each kind in the default run: a midpoint, one beside the
+    // cusp, one where the grid is sparse.
+    let first = |f: &dyn Fn(f64) -> bool| between.iter().position(|c| f(c.tabor)).unwrap();
+    let representative = [
+        first(&|mu| mu <= 0.6),
+        first(&|mu| mu > 0.6 && mu < 0.8),
+        first(&|mu| mu > SPARSE_ABOVE),
+    ];
     use wearopt::model::lennard_jones::table::{INTERPOLATION_ERROR, INTERPOLATION_ERROR_SPARSE};
     // The midpoints away from the cusp, the seven beside it, and the three
     // where the grid is sparse.
     let (mut midpoints, mut cusp, mut sparse) = (0.0f64, 0.0f64, 0.0f64);
     let (mut midpoint_slopes, mut cusp_slopes, mut sparse_slopes) = (0.0f64, 0.0f64, 0.0f64);
-    for curve in &between {
+    for curve in &scope.pick(&between, &representative) {
         let (mut worst, mut slopes) = (0.0f64, 0.0f64);
-        for (ell, c, law, dc) in interpolation_scenes(curve) {
+        let scenes = interpolation_scenes(curve);
+        for (ell, c, law, dc) in scope.pick(&scenes, &[0]) {
             let c_h = c.c_h;
-            for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+            for h in scope.pick(&[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0], &[1, 4]) {
                 let (served, _) = reference_load_of(law.curves(), ell, c, h);
                 let (own, size) = reference_load_of([(curve, 1.0, dc)], ell, c, h);
                 let err = (served - own).abs() / size;
@@ -553,10 +586,7 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
         (cusp, INTERPOLATION_ERROR.1),
         (sparse, INTERPOLATION_ERROR_SPARSE),
     ] {
-        assert!(
-            worst <= 1.05 * stated && worst >= 0.5 * stated,
-            "{worst:e} vs {stated:e}"
-        );
+        scope.as_stated(worst, stated, 1.05);
     }
 }
 
@@ -572,6 +602,16 @@ fn the_interpolation_in_tabor_against_curves_between_the_tables() {
 /// from the S-shaped curves alone, 1.5e-5 at 0.71.
 #[test]
 fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
+    above_the_cusp(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored above_the_cusp_campaign"]
+fn above_the_cusp_campaign() {
+    above_the_cusp(Scope::Every);
+}
+
+fn above_the_cusp(scope: Scope) {
     use wearopt::accuracy::lennard_jones::reference_load_of;
     use wearopt::model::lennard_jones::rough::CUSP_TABOR;
     use wearopt::model::lennard_jones::table::INTERPOLATION_ERROR_ABOVE_CUSP;
@@ -579,15 +619,18 @@ fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
     assert_eq!(written.len(), 5);
     let first_s_shaped = curves().iter().find(|c| c.jumps).unwrap().tabor;
     let (stated_mu, stated) = INTERPOLATION_ERROR_ABOVE_CUSP;
+    // The representative curve is the one the stated error was measured on.
+    let at_stated = written.iter().position(|c| c.tabor == stated_mu).unwrap();
     let mut worst = (0.0f64, 0.0f64);
-    for curve in &written {
+    for curve in scope.pick(&written, &[at_stated]) {
         assert!(curve.tabor > CUSP_TABOR && curve.tabor < first_s_shaped);
         assert!(curve.jumps && curve.max_interference() > 0.0);
         let mut error = 0.0f64;
-        for (ell, c, law, dc) in interpolation_scenes(curve) {
-            for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+        let scenes = interpolation_scenes(&curve);
+        for (ell, c, law, dc) in scope.pick(&scenes, &[0, 1]) {
+            for h in scope.pick(&[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0], &[1, 4]) {
                 let (served, _) = reference_load_of(law.curves(), ell, c, h);
-                let (own, size) = reference_load_of([(curve, 1.0, dc)], ell, c, h);
+                let (own, size) = reference_load_of([(&curve, 1.0, dc)], ell, c, h);
                 error = error.max((served - own).abs() / size);
             }
         }
@@ -597,11 +640,10 @@ fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
         }
     }
     println!("worst {worst:?} (stated {stated:.1e} at μ = {stated_mu})");
-    assert_eq!(worst.0, stated_mu);
-    assert!(
-        worst.1 <= 1.05 * stated && worst.1 >= 0.5 * stated,
-        "{worst:?}"
-    );
+    if scope == Scope::Every {
+        assert_eq!(worst.0, stated_mu);
+    }
+    scope.as_stated(worst.1, stated, 1.05);
 }
 
 /// Beyond the table's reach (δ̂ = 50, or 16 ẑ0 where that is further) the
@@ -616,13 +658,24 @@ fn just_above_the_cusp_the_interpolation_is_what_the_reports_say() {
 /// quote it).
 #[test]
 fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
+    tail_beyond_reach(Scope::Representative);
+}
+
+#[test]
+#[ignore = "campaign (minutes): cargo test --release --test all -- --ignored tail_beyond_reach_campaign"]
+fn tail_beyond_reach_campaign() {
+    tail_beyond_reach(Scope::Every);
+}
+
+fn tail_beyond_reach(scope: Scope) {
     use wearopt::accuracy::lennard_jones::reference_load_of;
     use wearopt::model::lennard_jones::table::{TAIL_ERROR, TAIL_SCALES};
     use wearopt::model::Coefficients;
     let far = committed_curves("lennard_jones_far.txt");
     let between = committed_curves("lennard_jones_between.txt");
     assert_eq!(far.len(), TAIL_ERROR.len());
-    for (curve, row) in far.iter().zip(&TAIL_ERROR) {
+    let pairs: Vec<_> = far.iter().zip(&TAIL_ERROR).collect();
+    for (curve, row) in scope.pick(&pairs, &[1]) {
         let mu = row[0];
         assert!((curve.tabor / mu - 1.0).abs() < 1e-2);
         let near = curves()
@@ -635,10 +688,10 @@ fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
             let z0 = spacing(curve.tabor) / ell;
             assert!(z0 <= 3.0);
             let mut worst = 0.0f64;
-            for c_h in [5.0, f64::INFINITY] {
+            for c_h in scope.pick(&[5.0, f64::INFINITY], &[1]) {
                 let c = Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
                 let dc = |k| critical_interference(k, c_h * ell.sqrt()) / ell;
-                for h in [-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0] {
+                for h in scope.pick(&[-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0], &[0, 1]) {
                     let (tail, size) = reference_load_of([(near, 1.0, dc(near))], ell, c, h);
                     let (solver, _) = reference_load_of([(curve, 1.0, dc(curve))], ell, c, h);
                     worst = worst.max((tail - solver).abs() / size);
@@ -646,10 +699,11 @@ fn the_tail_beyond_the_tables_reach_is_what_the_reports_say() {
             }
             println!("μ = {mu}, ℓ = {ell}: the tail moves P̄ by {worst:.3e} (stated {stated:.1e})");
             // (Where the tail is not reached, both are the same panels: rounding.)
-            assert!(
-                worst <= 1.05 * stated && (worst >= 0.5 * stated || stated <= 1e-12),
-                "{worst:e}"
-            );
+            if stated <= 1e-12 {
+                assert!(worst <= 1.05 * stated, "{worst:e}");
+            } else {
+                scope.as_stated(worst, stated, 1.05);
+            }
         }
     }
 }
