@@ -26,15 +26,7 @@ impl Dimensioned for SceneParameter {
 
 impl Dimensioned for ConstraintQuantity {
     fn dimension(self) -> Dimension {
-        match self {
-            ConstraintQuantity::PullOffForce | ConstraintQuantity::FrictionForce => {
-                Dimension::Force
-            }
-            ConstraintQuantity::MeanRealPressure => Dimension::Pressure,
-            ConstraintQuantity::Separation => Dimension::Length,
-            ConstraintQuantity::WearRate => Dimension::WearRate,
-            _ => Dimension::Dimensionless,
-        }
+        self.quantity().dimension()
     }
 }
 
