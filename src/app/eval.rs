@@ -75,7 +75,11 @@ pub fn eval(
         scene: problem.scene.clone(),
         input_notes: problem.notes.clone(),
         scan: problem.scan.clone(),
-        sensitivities: model::sensitivities(&problem.scene, evaluation_options.quadrature),
+        sensitivities: model::sensitivities(
+            &problem.scene,
+            evaluation_options.quadrature,
+            model::Quantity::WearRate,
+        ),
         evaluation,
         load_curve,
     })

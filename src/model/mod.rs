@@ -1,7 +1,9 @@
 //! The physics of docs/model.md: coefficients and indices, the asperity laws
 //! ([`law`]: JKR, §3, and DMT with van der Waals or Dugdale attraction of the
 //! asperities out of contact, §7), the load and area integrals, the separation
-//! solve, Archard wear, and the dimensional layer that ties them to a [`Scene`].
+//! solve, Archard wear, and the dimensional layer that ties them to a [`Scene`],
+//! with the scene's parameters and the evaluation's outputs each in one table
+//! ([`SceneParameter`], [`Quantity`]).
 //! No I/O, no printing, no English: outcomes are values ([`Status`], [`Warning`],
 //! [`Note`]) that the report stage words.
 //!
@@ -24,6 +26,7 @@ pub mod load_curve;
 mod material;
 mod parameter;
 pub mod quadrature;
+pub mod quantity;
 mod registry;
 pub mod scaled;
 mod scene;
@@ -43,6 +46,7 @@ pub use load_curve::{load_curve, LoadCurve};
 pub use material::Material;
 pub use parameter::SceneParameter;
 pub use quadrature::Quadrature;
+pub use quantity::{Quantity, Role};
 pub use scaled::Scaled;
 pub use scene::{Cantilever, InputError, Requirements, Scene, WearArea};
 pub use sensitivity::{sensitivities, Sensitivity, SensitivityGap};

@@ -52,6 +52,13 @@ pub enum SceneParameter {
     ContactAngleB,
     /// T, the temperature of the air and the liquid (K).
     Temperature,
+    /// k, the Archard wear coefficient (docs/model.md §1, §3).
+    WearCoefficient,
+    /// L, the sliding distance (m; docs/model.md §1, §3).
+    SlidingDistance,
+    /// RH, the relative humidity of the air (docs/model.md §10): read where the
+    /// scene has an environment ([`SceneParameter::value`]).
+    RelativeHumidity,
 }
 
 /// One row of the table.
@@ -62,13 +69,13 @@ struct Row {
     design_variable: bool,
     sensitivity: bool,
     /// The range of magnitudes found in MEMS, NEMS and storage contacts; `None`:
-    /// not checked.
+    /// none known. Only [`SceneParameter::CHECKED`] warn outside it.
     plausible: Option<(f64, f64)>,
 }
 
 impl SceneParameter {
     /// Every parameter, in table order.
-    pub const ALL: [SceneParameter; 16] = [
+    pub const ALL: [SceneParameter; 19] = [
         SceneParameter::YoungsModulus,
         SceneParameter::YoungsModulusA,
         SceneParameter::YoungsModulusB,
@@ -85,6 +92,9 @@ impl SceneParameter {
         SceneParameter::ContactAngleA,
         SceneParameter::ContactAngleB,
         SceneParameter::Temperature,
+        SceneParameter::WearCoefficient,
+        SceneParameter::SlidingDistance,
+        SceneParameter::RelativeHumidity,
     ];
 
     /// The parameters a design may move (the keys of `[design]`), in the order
@@ -134,7 +144,9 @@ impl SceneParameter {
     /// 10 J/m²; Z0 0.05 – 2 nm: generously wide, so that outside a value is more
     /// likely a forgotten unit than a design. Zero loads and γ, and infinite E or H
     /// (a rigid body, no plasticity) are limits the model treats exactly and are
-    /// not checked.
+    /// not checked. Known but not checked: k 10⁻¹² (a lubricated diamond-like
+    /// film) – 1; L 1 nm (one stroke of a switch) – 10⁹ m (a year of a
+    /// micro-motor's rim at 30 m/s); RH 0 – 1.
     fn row(self) -> Row {
         let row = |key, symbol, dimension, design_variable, sensitivity, plausible| Row {
             key,
@@ -219,6 +231,30 @@ impl SceneParameter {
                 row("contact_angle_b", "θ_b", Angle, true, false, None)
             }
             SceneParameter::Temperature => row("temperature", "T", Temperature, true, false, None),
+            SceneParameter::WearCoefficient => row(
+                "wear_coefficient",
+                "k",
+                Dimensionless,
+                false,
+                false,
+                Some((1e-12, 1.0)),
+            ),
+            SceneParameter::SlidingDistance => row(
+                "sliding_distance",
+                "L",
+                Length,
+                false,
+                false,
+                Some((1e-9, 1e9)),
+            ),
+            SceneParameter::RelativeHumidity => row(
+                "relative_humidity",
+                "RH",
+                Dimensionless,
+                false,
+                false,
+                Some((0.0, 1.0)),
+            ),
         }
     }
 
@@ -252,14 +288,35 @@ impl SceneParameter {
         self.row().sensitivity
     }
 
-    /// The range of plausible magnitudes (SI), for the parameters checked.
+    /// The range of plausible magnitudes (SI), where one is known; the scene's
+    /// warnings check those of [`SceneParameter::CHECKED`].
     pub fn plausible_range(self) -> Option<(f64, f64)> {
         self.row().plausible
     }
 
+    /// Whether it is one of the environment's values (relative humidity,
+    /// temperature, contact angles), which a dry scene does not have.
+    pub fn is_environmental(self) -> bool {
+        matches!(
+            self,
+            SceneParameter::ContactAngle
+                | SceneParameter::ContactAngleA
+                | SceneParameter::ContactAngleB
+                | SceneParameter::Temperature
+                | SceneParameter::RelativeHumidity
+        )
+    }
+
+    /// Its value in `scene` where the scene has it ([`SceneParameter::get`]):
+    /// None for the environment's values of a scene without an environment (dry
+    /// air, docs/model.md §10), whose defaults mean nothing to its evaluation.
+    pub fn value(self, s: &Scene) -> Option<f64> {
+        (s.environment.is_some() || !self.is_environmental()).then(|| self.get(s))
+    }
+
     /// Its value in `scene` (SI; |W| for the load; body a's for a shared modulus or
     /// Poisson ratio; the dry air's defaults for the environment's values of a scene
-    /// without one).
+    /// without one: RH = 0, T = 298.15 K, θ = 0).
     pub fn get(self, s: &Scene) -> f64 {
         match self {
             SceneParameter::YoungsModulus | SceneParameter::YoungsModulusA => s.youngs_modulus_a,
@@ -278,14 +335,18 @@ impl SceneParameter {
             }
             SceneParameter::ContactAngleB => s.environment.unwrap_or_default().contact_angle_b,
             SceneParameter::Temperature => s.environment.unwrap_or_default().temperature,
+            SceneParameter::WearCoefficient => s.wear_coefficient,
+            SceneParameter::SlidingDistance => s.sliding_distance,
+            SceneParameter::RelativeHumidity => s.environment.unwrap_or_default().relative_humidity,
         }
     }
 
     /// Sets its value in `scene` (SI). `youngs_modulus` and `poisson_ratio` move
     /// body b's value too when the bodies share modulus and Poisson ratio (one film
     /// on itself), as a design variable and a sensitivity both mean them; the load
-    /// keeps its sign. An environment's value set on a dry scene gives it dry air
-    /// (RH = 0) with that value.
+    /// keeps its sign. An environment's value set on a dry scene gives it the dry
+    /// air's defaults with that value: water at 25 °C on fully wetting surfaces
+    /// (θ = 0) for a relative humidity, dry air (RH = 0) for the others.
     pub fn set(self, s: &mut Scene, value: f64) {
         let shared =
             s.youngs_modulus_b == s.youngs_modulus_a && s.poisson_ratio_b == s.poisson_ratio_a;
@@ -332,6 +393,13 @@ impl SceneParameter {
                     .get_or_insert_with(Default::default)
                     .temperature = value
             }
+            SceneParameter::WearCoefficient => s.wear_coefficient = value,
+            SceneParameter::SlidingDistance => s.sliding_distance = value,
+            SceneParameter::RelativeHumidity => {
+                s.environment
+                    .get_or_insert_with(Default::default)
+                    .relative_humidity = value
+            }
         }
     }
 }
@@ -371,11 +439,78 @@ mod tests {
         }
         for p in SceneParameter::ALL {
             assert_eq!(SceneParameter::from_key(p.as_str()), Some(p));
-            assert_eq!(
-                p.plausible_range().is_some(),
-                SceneParameter::CHECKED.contains(&p),
-                "{p}"
-            );
         }
+        for p in SceneParameter::CHECKED {
+            assert!(p.plausible_range().is_some(), "{p}");
+        }
+    }
+
+    fn scene(file: &str) -> Scene {
+        crate::problem::load(std::path::Path::new(file))
+            .unwrap()
+            .scene
+    }
+
+    /// What `set` puts in, `get` reads back, for every row, on a dry and a humid
+    /// scene.
+    #[test]
+    fn get_returns_what_set_put() {
+        for file in ["problems/micro-gear.toml", "problems/micro-gear-humid.toml"] {
+            for p in SceneParameter::ALL {
+                let mut s = scene(file);
+                let x = match p {
+                    SceneParameter::RelativeHumidity => 0.3,
+                    SceneParameter::PoissonRatio => 0.25,
+                    SceneParameter::ContactAngle
+                    | SceneParameter::ContactAngleA
+                    | SceneParameter::ContactAngleB => 0.5,
+                    _ => p.get(&s) * 1.25,
+                };
+                p.set(&mut s, x);
+                assert_eq!(p.get(&s), x, "{file}: {p}");
+                assert_eq!(p.value(&s), Some(x), "{file}: {p}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_dry_scene_has_no_humidity() {
+        let dry = scene("problems/micro-gear.toml");
+        assert_eq!(SceneParameter::RelativeHumidity.value(&dry), None);
+        assert_eq!(SceneParameter::RelativeHumidity.get(&dry), 0.0);
+        assert_eq!(SceneParameter::Temperature.value(&dry), None);
+        assert_eq!(
+            SceneParameter::WearCoefficient.value(&dry),
+            Some(dry.wear_coefficient)
+        );
+        let humid = scene("problems/micro-gear-humid.toml");
+        assert_eq!(SceneParameter::RelativeHumidity.value(&humid), Some(0.5));
+    }
+
+    /// The rows an uncertainty study samples besides the design variables.
+    #[test]
+    fn the_uncertain_rows_are_no_design_variables() {
+        for p in [
+            SceneParameter::WearCoefficient,
+            SceneParameter::SlidingDistance,
+            SceneParameter::RelativeHumidity,
+        ] {
+            assert!(!p.is_design_variable(), "{p}");
+            assert!(!SceneParameter::CHECKED.contains(&p), "{p}");
+            let (lo, hi) = p.plausible_range().unwrap();
+            assert!(lo < hi, "{p}");
+        }
+        assert_eq!(
+            SceneParameter::from_key("wear_coefficient"),
+            Some(SceneParameter::WearCoefficient)
+        );
+        assert_eq!(
+            SceneParameter::RelativeHumidity.dimension(),
+            Dimension::Dimensionless
+        );
+        assert_eq!(
+            SceneParameter::SlidingDistance.dimension(),
+            Dimension::Length
+        );
     }
 }

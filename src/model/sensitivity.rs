@@ -1,5 +1,8 @@
-//! Sensitivities of the wear rate as elasticities `d ln(wear rate) / d ln x`,
-//! by central finite differences in ln x with Richardson extrapolation.
+//! Sensitivities of an output quantity ([`Quantity`]; `eval` reports the wear
+//! rate's) as elasticities `d ln q / d ln x`, by central finite differences in
+//! ln x with Richardson extrapolation. ln q is read from the quantity's log10
+//! ([`Quantity::log10_value`]: the evaluation's log10 companions, so a wear rate
+//! that underflows still has one).
 //!
 //! Step rule: x -> x e^{+-d} and x e^{+-2d}, d = 1e-3. The evaluator is accurate
 //! to about eta = 1e-13 relative, so the rounding error of a central difference is
@@ -14,6 +17,7 @@
 use serde::Serialize;
 
 use super::parameter::SceneParameter;
+use super::quantity::Quantity;
 use super::scene::Scene;
 use super::wear::{evaluate, EvaluationOptions, Status};
 
@@ -23,7 +27,7 @@ pub const LOG_STEP: f64 = 1e-3;
 /// The smallest scale in ln x on which the derivatives are assumed to vary.
 pub const VARIATION_SCALE: f64 = 0.1;
 
-/// Relative accuracy assumed of one wear-rate evaluation in the error estimate.
+/// Relative accuracy assumed of one evaluation of the quantity in the error estimate.
 pub const EVALUATION_ACCURACY: f64 = 1e-13;
 
 /// One elasticity with its error estimate, or the reason there is none.
@@ -31,7 +35,7 @@ pub const EVALUATION_ACCURACY: f64 = 1e-13;
 pub struct Sensitivity {
     /// Which parameter.
     pub parameter: SceneParameter,
-    /// d ln(wear rate) / d ln x; None where it is not defined.
+    /// d ln q / d ln x; None where it is not defined.
     pub elasticity: Option<f64>,
     /// Estimated absolute error of the elasticity.
     pub error: Option<f64>,
@@ -43,7 +47,8 @@ pub struct Sensitivity {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SensitivityGap {
-    /// The scene itself has no wear (separated, or zero wear).
+    /// The scene itself has no value of the quantity (for the wear rate: no
+    /// wear, separated or zero).
     NoWear,
     /// The parameter is infinite in the scene.
     InfiniteParameter,
@@ -53,19 +58,31 @@ pub enum SensitivityGap {
     SeparatesWithinStep,
 }
 
-/// The elasticities of the wear rate with respect to E1, H, γ, σ and R.
-pub fn sensitivities(scene: &Scene, quadrature: super::quadrature::Quadrature) -> Vec<Sensitivity> {
+/// The elasticities of `quantity` with respect to E1, H, γ, σ and R
+/// ([`SceneParameter::SENSITIVITIES`]), each where the quantity is positive and
+/// finite at the scene and at the four steps around it. The pull-off search runs
+/// only for a quantity that needs it ([`Quantity::needs_pull_off`]).
+pub fn sensitivities(
+    scene: &Scene,
+    quadrature: super::quadrature::Quadrature,
+    quantity: Quantity,
+) -> Vec<Sensitivity> {
     let options = EvaluationOptions {
-        pull_off: false,
+        pull_off: quantity.needs_pull_off(),
         quadrature,
         work_of_adhesion: false,
     };
-    let ln_wear = |sc: &Scene| -> Option<f64> {
+    let ln_q = |sc: &Scene| -> Option<f64> {
         let ev = evaluate(sc, &options);
-        (ev.status == Status::Ok && ev.log10_wear_rate.is_finite())
-            .then_some(ev.log10_wear_rate * std::f64::consts::LN_10)
+        if ev.status != Status::Ok {
+            return None;
+        }
+        quantity
+            .log10_value(&ev, sc)
+            .filter(|l| l.is_finite())
+            .map(|l| l * std::f64::consts::LN_10)
     };
-    let base_ok = ln_wear(scene).is_some();
+    let base_ok = ln_q(scene).is_some();
     SceneParameter::SENSITIVITIES
         .iter()
         .map(|&p| {
@@ -88,7 +105,7 @@ pub fn sensitivities(scene: &Scene, quadrature: super::quadrature::Quadrature) -
             let at = |j: f64| {
                 let mut sc = scene.clone();
                 p.set(&mut sc, x * (j * LOG_STEP).exp());
-                ln_wear(&sc)
+                ln_q(&sc)
             };
             match (at(1.0), at(-1.0), at(2.0), at(-2.0)) {
                 (Some(f1), Some(m1), Some(f2), Some(m2)) => {

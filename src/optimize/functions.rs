@@ -2,6 +2,7 @@
 //! the constraint rows `g_j(x) ≤ 0`, scaled so that all are O(1).
 
 use super::study::{Constraint, ConstraintQuantity, Objective};
+use crate::model::quantity::LN_CEIL;
 use crate::model::{evaluate_from, Evaluation, EvaluationOptions, Quadrature, SearchHints, Status};
 
 use super::design::DesignSpace;
@@ -11,18 +12,6 @@ use super::program::{NonlinearProgram, Values};
 /// limit): a row that far from its limit cannot matter, and its value must
 /// not swamp the subproblem (a pull-off of 10^-2.6e8 N against a 1 µN cap).
 pub const ROW_FLOOR: f64 = -700.0;
-
-/// ln of the smallest/largest magnitudes kept finite (ln of 1e-323 and 1e308 ≈ ±744/709).
-const LN_FLOOR: f64 = -744.0;
-const LN_CEIL: f64 = 709.0;
-
-fn ln_clamped(x: f64) -> f64 {
-    if x.is_nan() {
-        LN_FLOOR
-    } else {
-        x.ln().clamp(LN_FLOOR, LN_CEIL)
-    }
-}
 
 /// Which side of a constraint a row enforces (or of a bound the design lies on).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -91,120 +80,31 @@ impl Row {
     }
 }
 
-/// The value of a constraint quantity in SI (None where it does not exist).
+/// The value of a constraint quantity in SI (None where it does not exist): its
+/// row of the quantity table's ([`crate::model::Quantity::value`]).
 pub fn quantity_value(
     q: ConstraintQuantity,
     ev: &Evaluation,
     scene: &crate::model::Scene,
 ) -> Option<f64> {
-    Some(match q {
-        ConstraintQuantity::PullOffForce => ev.pull_off_force?,
-        ConstraintQuantity::PlasticityIndex => ev.indices.plasticity_index,
-        ConstraintQuantity::ElasticAdhesionIndex => ev.indices.elastic_adhesion_index,
-        ConstraintQuantity::PlasticAdhesionIndex => ev.indices.plastic_adhesion_index,
-        ConstraintQuantity::TaborParameter => ev.indices.tabor_parameter,
-        ConstraintQuantity::HardnessToModulus => scene.hardness / scene.youngs_modulus_a,
-        ConstraintQuantity::RealAreaFraction => ev.real_area_fraction,
-        ConstraintQuantity::PlasticAreaFraction => ev.plastic_area_fraction,
-        ConstraintQuantity::MeanRealPressure => ev.mean_real_pressure?,
-        ConstraintQuantity::ContactCount => ev.contact_count,
-        ConstraintQuantity::Separation => ev.separation?,
-        ConstraintQuantity::WearRate => ev.wear_rate,
-        ConstraintQuantity::StictionMargin => ev.stiction?.margin,
-        ConstraintQuantity::FrictionForce => ev.friction_force?,
-        ConstraintQuantity::FrictionCoefficient => ev.friction_coefficient?,
-        ConstraintQuantity::ReleaseMargin => ev.pull_off_force? / scene.load.abs(),
-    })
+    q.quantity().value(ev, scene)
 }
 
-/// ln of a positive quantity, using the log10 companions where the value can underflow.
-fn ln_quantity(q: ConstraintQuantity, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
-    let ln10 = std::f64::consts::LN_10;
-    match q {
-        // Not clamped: a pull-off of 10^-8000 N still has a slope in ln, which
-        // lets a start there find the designs whose pull-off is meaningful.
-        ConstraintQuantity::PullOffForce => ev
-            .log10_pull_off_force
-            .filter(|l| l.is_finite())
-            .map_or(LN_FLOOR, |l| l * ln10),
-        ConstraintQuantity::WearRate => (ev.log10_wear_rate * ln10).clamp(LN_FLOOR, LN_CEIL),
-        ConstraintQuantity::RealAreaFraction => {
-            (ev.log10_real_area * ln10 - scene.nominal_area.ln()).clamp(LN_FLOOR, LN_CEIL)
-        }
-        // Like the pull-off force: a slope in ln even where the margin underflows.
-        ConstraintQuantity::StictionMargin => ev
-            .log10_pull_off_force
-            .filter(|l| l.is_finite())
-            .map_or(LN_FLOOR, |l| {
-                l * ln10 - scene.requirements.restoring_force.unwrap_or(1.0).ln()
-            }),
-        ConstraintQuantity::ReleaseMargin => ev
-            .log10_pull_off_force
-            .filter(|l| l.is_finite())
-            .map_or(LN_FLOOR, |l| l * ln10 - scene.load.abs().ln()),
-        ConstraintQuantity::FrictionForce | ConstraintQuantity::FrictionCoefficient => {
-            ln_friction(q == ConstraintQuantity::FrictionCoefficient, ev, scene)
-        }
-        _ => ln_clamped(quantity_value(q, ev, scene).unwrap_or(0.0)),
-    }
-}
-
-/// ln of the friction force τ A_r (or of its ratio to the load), from log10 A_r so that
-/// it keeps a slope where A_r underflows.
-fn ln_friction(per_load: bool, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
-    let tau = scene.requirements.shear_strength.unwrap_or(1.0);
-    let mut v = ev.log10_real_area * std::f64::consts::LN_10 + tau.ln();
-    if per_load {
-        v -= scene.load.abs().max(f64::MIN_POSITIVE).ln();
-    }
-    if v.is_nan() {
-        LN_CEIL
-    } else {
-        v.clamp(LN_FLOOR, LN_CEIL)
-    }
-}
-
-/// The objective's ln value at an evaluation.
+/// The objective's ln value at an evaluation: the quantity table's
+/// ([`crate::model::Quantity::ln_value`]), with NaN (no value to compare) as
+/// [`LN_CEIL`], the worst.
 pub fn ln_objective(o: Objective, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
-    let ln10 = std::f64::consts::LN_10;
-    let v = match o {
-        Objective::WearRate => ev.log10_wear_rate * ln10,
-        Objective::WearVolume => {
-            ev.log10_wear_rate * ln10
-                + if scene.sliding_distance > 0.0 {
-                    scene.sliding_distance.ln()
-                } else {
-                    0.0
-                }
-        }
-        Objective::RealArea => ev.log10_real_area * ln10,
-        Objective::FrictionForce => return ln_friction(false, ev, scene),
-        Objective::FrictionCoefficient => return ln_friction(true, ev, scene),
-        Objective::PullOffForce => {
-            return ev
-                .log10_pull_off_force
-                .filter(|l| l.is_finite())
-                .map_or(LN_FLOOR, |l| l * ln10)
-        }
-    };
+    let v = o.quantity().ln_value(ev, scene);
     if v.is_nan() {
         LN_CEIL
     } else {
-        v.clamp(LN_FLOOR, LN_CEIL)
+        v
     }
 }
 
-/// The objective in SI at an evaluation.
-pub fn objective_value(o: Objective, ev: &Evaluation) -> f64 {
-    match o {
-        Objective::WearRate => ev.wear_rate,
-        Objective::WearVolume => ev.wear_volume,
-        Objective::RealArea => ev.real_area,
-        Objective::PullOffForce => ev.pull_off_force.unwrap_or(0.0),
-        Objective::FrictionForce => ev.friction_force.unwrap_or(0.0),
-        Objective::FrictionCoefficient => ev.friction_coefficient.unwrap_or(0.0),
-    }
-    .max(0.0)
+/// The objective in SI at an evaluation, 0 where it does not exist or is negative.
+pub fn objective_value(o: Objective, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
+    o.quantity().value(ev, scene).unwrap_or(0.0).max(0.0)
 }
 
 /// The study's functions at a design point.
@@ -307,15 +207,10 @@ impl StudyFunctions {
                 });
             }
         }
-        let pull_off = objective == Objective::PullOffForce
-            || constraints.iter().any(|c| {
-                matches!(
-                    c.quantity,
-                    ConstraintQuantity::PullOffForce
-                        | ConstraintQuantity::StictionMargin
-                        | ConstraintQuantity::ReleaseMargin
-                )
-            });
+        let pull_off = objective.quantity().needs_pull_off()
+            || constraints
+                .iter()
+                .any(|c| c.quantity.quantity().needs_pull_off());
         let options = EvaluationOptions {
             pull_off,
             quadrature: Quadrature::default(),
@@ -475,7 +370,7 @@ impl StudyFunctions {
 fn row_value(r: &Row, ev: &Evaluation, scene: &crate::model::Scene) -> f64 {
     let g: f64 = match r.scaling {
         Scaling::Log => {
-            let lq = ln_quantity(r.quantity, ev, scene);
+            let lq = r.quantity.quantity().ln_value(ev, scene);
             match r.side {
                 Side::Max => lq - r.limit.ln(),
                 Side::Min => r.limit.ln() - lq,

@@ -349,7 +349,7 @@ pub fn run_case(
                 MaterialStatus::Violated
             },
             MaterialOutcome::Evaluated {
-                objective: objective_value(objective, &ev),
+                objective: objective_value(objective, &ev, &case.scene),
                 evaluation: Box::new(ev),
                 constraints,
             },

@@ -621,12 +621,12 @@ fn assemble(
 
     let scene = functions.scene_at(&best_point.x);
     let evaluation = crate::model::evaluate(&scene, &functions.options);
+    let baseline_scene = match functions.objective_humidity {
+        Some(h) => functions::at_humidity(study.scene.clone(), h),
+        None => study.scene.clone(),
+    };
     let baseline_evaluation = {
-        let baseline = match functions.objective_humidity {
-            Some(h) => functions::at_humidity(study.scene.clone(), h),
-            None => study.scene.clone(),
-        };
-        let ev = crate::model::evaluate(&baseline, &functions.options);
+        let ev = crate::model::evaluate(&baseline_scene, &functions.options);
         (ev.status == crate::model::Status::Ok).then_some(ev)
     };
     let constraints = constraint_reports(
@@ -700,10 +700,10 @@ fn assemble(
         baseline_design: functions.space.values(&baseline_x),
         names,
         design,
-        objective: functions::objective_value(objective, &evaluation),
-        baseline_objective: baseline_evaluation
-            .as_ref()
-            .map_or(f64::NAN, |ev| functions::objective_value(objective, ev)),
+        objective: functions::objective_value(objective, &evaluation, &scene),
+        baseline_objective: baseline_evaluation.as_ref().map_or(f64::NAN, |ev| {
+            functions::objective_value(objective, ev, &baseline_scene)
+        }),
         objective_name: objective,
         constraints,
         active_bounds,

@@ -324,19 +324,12 @@ pub enum ParetoError {
     Points(usize),
 }
 
-/// The measure's value and log10 at an evaluation (None where it does not exist).
+/// The measure's value and log10 at an evaluation (None where it does not exist):
+/// its row of the quantity table's ([`crate::model::Quantity::value`],
+/// [`crate::model::Quantity::log10_value`]).
 pub fn measure_of(m: AdhesionMeasure, ev: &Evaluation, scene: &Scene) -> Option<(f64, f64)> {
-    match m {
-        AdhesionMeasure::PullOffForce => ev.pull_off_force.zip(ev.log10_pull_off_force),
-        AdhesionMeasure::ElasticAdhesionIndex => {
-            let t = ev.indices.elastic_adhesion_index;
-            Some((t, t.log10()))
-        }
-        AdhesionMeasure::WorkOfAdhesion => {
-            let g = scene.work_of_adhesion;
-            Some((g, g.log10()))
-        }
-    }
+    let q = m.quantity();
+    q.value(ev, scene).zip(q.log10_value(ev, scene))
 }
 
 /// Strength (log10 units, larger = more adhesion) of a measure's log10.
@@ -357,11 +350,7 @@ pub fn value_at(m: AdhesionMeasure, strength: f64) -> f64 {
 
 /// The SI unit of a measure ("" for θ).
 pub fn unit_of(m: AdhesionMeasure) -> &'static str {
-    match m {
-        AdhesionMeasure::PullOffForce => "N",
-        AdhesionMeasure::WorkOfAdhesion => "J/m²",
-        AdhesionMeasure::ElasticAdhesionIndex => "",
-    }
+    m.quantity().dimension().si_unit()
 }
 
 /// One solve of the ε-constrained study.
@@ -412,7 +401,7 @@ impl Sweep<'_> {
         Some(Reference {
             adhesion: value,
             log10_adhesion: log10,
-            objective: super::functions::objective_value(self.objective, &ev),
+            objective: super::functions::objective_value(self.objective, &ev, scene),
             wear_rate: ev.wear_rate,
             design: self.design_at(scene),
             feasible,
@@ -432,10 +421,10 @@ impl Sweep<'_> {
         let mut constraints: Vec<Constraint> = self.study.constraints.to_vec();
         let (Target::Equal(s) | Target::AtMost(s) | Target::AtLeast(s)) = target;
         let v = value_at(self.measure, s);
-        let quantity = match self.measure {
-            AdhesionMeasure::PullOffForce => ConstraintQuantity::PullOffForce,
-            AdhesionMeasure::ElasticAdhesionIndex => ConstraintQuantity::ElasticAdhesionIndex,
-            AdhesionMeasure::WorkOfAdhesion => {
+        let quantity = match ConstraintQuantity::from_quantity(self.measure.quantity()) {
+            Some(q) => q,
+            // γ is no constraint: the design holds it.
+            None => {
                 let i = design
                     .iter()
                     .position(|d| d.name == SceneParameter::WorkOfAdhesion)?;
@@ -531,7 +520,7 @@ impl Sweep<'_> {
         Some(Solved {
             status,
             feasible,
-            objective: super::functions::objective_value(self.objective, &ev),
+            objective: super::functions::objective_value(self.objective, &ev, &scene),
             wear_rate: ev.wear_rate,
             value,
             log10,
@@ -567,10 +556,9 @@ impl Sweep<'_> {
 /// The study's own limits on the measure, as (lowest, highest) strength.
 fn study_limits(m: AdhesionMeasure, constraints: &[Constraint]) -> (f64, f64) {
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    let q = match m {
-        AdhesionMeasure::PullOffForce => ConstraintQuantity::PullOffForce,
-        AdhesionMeasure::ElasticAdhesionIndex => ConstraintQuantity::ElasticAdhesionIndex,
-        AdhesionMeasure::WorkOfAdhesion => return (lo, hi),
+    // γ is no constraint: the study cannot limit it but by its design bounds.
+    let Some(q) = ConstraintQuantity::from_quantity(m.quantity()) else {
+        return (lo, hi);
     };
     for c in constraints.iter().filter(|c| c.quantity == q) {
         for (bound, is_max) in [(c.min, false), (c.max, true)] {

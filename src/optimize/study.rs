@@ -11,7 +11,7 @@ use std::time::Duration;
 
 use serde::Serialize;
 
-pub use crate::model::SceneParameter;
+pub use crate::model::{Quantity, SceneParameter};
 
 /// A closed set of names as written in problem files.
 pub trait Named: Copy + Sized + 'static {
@@ -30,7 +30,7 @@ pub trait Named: Copy + Sized + 'static {
 }
 
 macro_rules! named_enum {
-    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident => $text:literal,)+ }) => {
+    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident => $text:expr,)+ }) => {
         $(#[$meta])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
         #[serde(rename_all = "snake_case")]
@@ -54,6 +54,36 @@ macro_rules! named_enum {
         impl std::fmt::Display for $name {
             fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
                 f.pad(self.as_str())
+            }
+        }
+    };
+}
+
+/// A role subset of the quantity table: each variant is the [`Quantity`] of the
+/// same name (its value, logarithm, dimension and range), and its name is the
+/// row's key.
+macro_rules! quantity_subset {
+    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident,)+ }) => {
+        named_enum! {
+            $(#[$meta])*
+            $name {
+                $(
+                    #[doc = concat!("[`Quantity::", stringify!($variant), "`].")]
+                    $(#[$vmeta])*
+                    $variant => Quantity::$variant.as_str(),
+                )+
+            }
+        }
+        impl $name {
+            /// Its row of the quantity table.
+            pub fn quantity(self) -> Quantity {
+                match self {
+                    $($name::$variant => Quantity::$variant,)+
+                }
+            }
+            /// The one whose row is `q`, if `q` is one of them.
+            pub fn from_quantity(q: Quantity) -> Option<Self> {
+                <Self as Named>::ALL.iter().copied().find(|v| v.quantity() == q)
             }
         }
     };
@@ -83,60 +113,43 @@ pub struct DesignVariable {
     pub max: f64,
 }
 
-named_enum! {
+quantity_subset! {
     /// What `[objective] minimize = …` asks to make small.
     Objective {
-        /// Wear volume per sliding distance, k·A_r (m³/m = m²).
-        WearRate => "wear_rate",
-        /// Wear volume k·A_r·L (m³).
-        WearVolume => "wear_volume",
-        /// Real contact area A_r (m²).
-        RealArea => "real_area",
-        /// Pull-off force of the rough surface (N).
-        PullOffForce => "pull_off_force",
-        /// Bowden–Tabor friction τ·A_r (N); needs `interface.shear_strength`.
-        FrictionForce => "friction_force",
-        /// Friction force over load; needs `interface.shear_strength`.
-        FrictionCoefficient => "friction_coefficient",
+        WearRate,
+        WearVolume,
+        RealArea,
+        PullOffForce,
+        /// Needs `interface.shear_strength`.
+        FrictionForce,
+        /// Needs `interface.shear_strength`.
+        FrictionCoefficient,
     }
 }
 
-named_enum! {
+quantity_subset! {
     /// A quantity a `[[constraint]]` bounds.
     ConstraintQuantity {
-        /// Pull-off force of the rough surface (N).
-        PullOffForce => "pull_off_force",
-        /// ψ = (E/H)(σ/R)^{1/2}.
-        PlasticityIndex => "plasticity_index",
-        /// θ = K σ^{3/2} R^{1/2} / (γ R).
-        ElasticAdhesionIndex => "elastic_adhesion_index",
-        /// λ = π² R H⁴ σ / (18 K² γ²).
-        PlasticAdhesionIndex => "plastic_adhesion_index",
-        /// φ0 = (R γ² / (E² Z0³))^{1/3}.
-        TaborParameter => "tabor_parameter",
-        /// H/E.
-        HardnessToModulus => "hardness_to_modulus",
-        /// A_r / A_n.
-        RealAreaFraction => "real_area_fraction",
-        /// A_rp / A_n.
-        PlasticAreaFraction => "plastic_area_fraction",
-        /// W / A_r (Pa).
-        MeanRealPressure => "mean_real_pressure",
-        /// Number of asperities in contact.
-        ContactCount => "contact_count",
-        /// d, mean-plane separation (m).
-        Separation => "separation",
-        /// k·A_r (m³/m = m²).
-        WearRate => "wear_rate",
-        /// Pull-off force over `contact.restoring_force`: ≥ 1 sticks.
-        StictionMargin => "stiction_margin",
-        /// Bowden–Tabor friction τ·A_r (N); needs `interface.shear_strength`.
-        FrictionForce => "friction_force",
-        /// Friction force over load; needs `interface.shear_strength`.
-        FrictionCoefficient => "friction_coefficient",
-        /// Pull-off force over |load|, for a tensile load only: how far the
-        /// contact is from snapping apart (1 = at the pull-off).
-        ReleaseMargin => "release_margin",
+        PullOffForce,
+        PlasticityIndex,
+        ElasticAdhesionIndex,
+        PlasticAdhesionIndex,
+        TaborParameter,
+        HardnessToModulus,
+        RealAreaFraction,
+        PlasticAreaFraction,
+        MeanRealPressure,
+        ContactCount,
+        Separation,
+        WearRate,
+        /// Needs `contact.restoring_force`.
+        StictionMargin,
+        /// Needs `interface.shear_strength`.
+        FrictionForce,
+        /// Needs `interface.shear_strength`.
+        FrictionCoefficient,
+        /// For a tensile load only.
+        ReleaseMargin,
     }
 }
 
@@ -149,15 +162,7 @@ impl ConstraintQuantity {
     /// The values the quantity can take, `(lowest, highest)`; bounds outside can never
     /// be met and are refused.
     pub fn natural_range(self) -> (f64, f64) {
-        match self {
-            ConstraintQuantity::PullOffForce | ConstraintQuantity::Separation => {
-                (f64::NEG_INFINITY, f64::INFINITY)
-            }
-            ConstraintQuantity::RealAreaFraction | ConstraintQuantity::PlasticAreaFraction => {
-                (0.0, 1.0)
-            }
-            _ => (0.0, f64::INFINITY),
-        }
+        self.quantity().natural_range()
     }
 }
 
@@ -178,15 +183,13 @@ pub struct Constraint {
     pub only_at_objective_humidity: bool,
 }
 
-named_enum! {
+quantity_subset! {
     /// The adhesion measure on the second axis of a Pareto front.
     AdhesionMeasure {
-        /// Pull-off force of the rough surface (N).
-        PullOffForce => "pull_off_force",
-        /// γ (J/m²); needs `work_of_adhesion` among the design variables.
-        WorkOfAdhesion => "work_of_adhesion",
-        /// θ, the elastic adhesion index.
-        ElasticAdhesionIndex => "elastic_adhesion_index",
+        PullOffForce,
+        /// Needs `work_of_adhesion` among the design variables.
+        WorkOfAdhesion,
+        ElasticAdhesionIndex,
     }
 }
 
@@ -320,6 +323,113 @@ mod tests {
         }
         assert_eq!(Objective::from_name("wear_rate"), Some(Objective::WearRate));
         assert_eq!(Objective::from_name("Wear_Rate"), None);
+    }
+
+    /// The names files and messages accept, in the order messages list them: a
+    /// changed spelling or order fails here.
+    #[test]
+    fn accepted_names_are_unchanged() {
+        assert_eq!(
+            Objective::names(),
+            [
+                "wear_rate",
+                "wear_volume",
+                "real_area",
+                "pull_off_force",
+                "friction_force",
+                "friction_coefficient",
+            ]
+        );
+        assert_eq!(
+            ConstraintQuantity::names(),
+            [
+                "pull_off_force",
+                "plasticity_index",
+                "elastic_adhesion_index",
+                "plastic_adhesion_index",
+                "tabor_parameter",
+                "hardness_to_modulus",
+                "real_area_fraction",
+                "plastic_area_fraction",
+                "mean_real_pressure",
+                "contact_count",
+                "separation",
+                "wear_rate",
+                "stiction_margin",
+                "friction_force",
+                "friction_coefficient",
+                "release_margin",
+            ]
+        );
+        assert_eq!(
+            AdhesionMeasure::names(),
+            [
+                "pull_off_force",
+                "work_of_adhesion",
+                "elastic_adhesion_index"
+            ]
+        );
+        assert_eq!(
+            <SceneParameter as Named>::names(),
+            [
+                "youngs_modulus",
+                "youngs_modulus_a",
+                "youngs_modulus_b",
+                "poisson_ratio",
+                "hardness",
+                "work_of_adhesion",
+                "sigma",
+                "asperity_radius",
+                "asperity_density",
+                "contact_angle",
+                "contact_angle_a",
+                "contact_angle_b",
+                "temperature",
+            ]
+        );
+    }
+
+    /// Each subset is its role's rows of the quantity table, and serialises as
+    /// the row's key.
+    #[test]
+    fn subsets_are_the_table_roles() {
+        use crate::model::Role;
+        fn check<T: Named + Serialize + PartialEq + std::fmt::Debug>(
+            role: Role,
+            quantity: fn(T) -> Quantity,
+            from: fn(Quantity) -> Option<T>,
+        ) {
+            let mut ours: Vec<Quantity> = T::ALL.iter().map(|&v| quantity(v)).collect();
+            let mut table = Quantity::with_role(role);
+            for &v in T::ALL {
+                assert_eq!(v.as_str(), quantity(v).as_str());
+                assert_eq!(from(quantity(v)), Some(v));
+                let json = serde_json::to_string(&v).unwrap();
+                assert_eq!(json, format!("\"{}\"", v.as_str()));
+            }
+            ours.sort_by_key(|q| q.as_str());
+            table.sort_by_key(|q| q.as_str());
+            assert_eq!(ours, table);
+        }
+        check(
+            Role::Objective,
+            Objective::quantity,
+            Objective::from_quantity,
+        );
+        check(
+            Role::Constraint,
+            ConstraintQuantity::quantity,
+            ConstraintQuantity::from_quantity,
+        );
+        check(
+            Role::FrontMeasure,
+            AdhesionMeasure::quantity,
+            AdhesionMeasure::from_quantity,
+        );
+        assert_eq!(
+            ConstraintQuantity::from_quantity(Quantity::WearVolume),
+            None
+        );
     }
 
     #[test]

@@ -1267,17 +1267,13 @@ impl Reader<'_> {
                     // Not design variables (SceneParameter::DESIGN leaves them out).
                     SceneParameter::NominalArea
                     | SceneParameter::Load
-                    | SceneParameter::InteratomicDistance => &None,
+                    | SceneParameter::InteratomicDistance
+                    | SceneParameter::WearCoefficient
+                    | SceneParameter::SlidingDistance
+                    | SceneParameter::RelativeHumidity => &None,
                 };
                 if let Some(bound) = bound {
-                    let environmental = matches!(
-                        q,
-                        SceneParameter::ContactAngle
-                            | SceneParameter::ContactAngleA
-                            | SceneParameter::ContactAngleB
-                            | SceneParameter::Temperature
-                    );
-                    if environmental && scene.environment.is_none() {
+                    if q.is_environmental() && scene.environment.is_none() {
                         return Err(self.invalid(
                             &format!("design.{}", q.as_str()),
                             &bound.span(),

@@ -26,15 +26,7 @@ impl Dimensioned for SceneParameter {
 
 impl Dimensioned for ConstraintQuantity {
     fn dimension(self) -> Dimension {
-        match self {
-            ConstraintQuantity::PullOffForce | ConstraintQuantity::FrictionForce => {
-                Dimension::Force
-            }
-            ConstraintQuantity::MeanRealPressure => Dimension::Pressure,
-            ConstraintQuantity::Separation => Dimension::Length,
-            ConstraintQuantity::WearRate => Dimension::WearRate,
-            _ => Dimension::Dimensionless,
-        }
+        self.quantity().dimension()
     }
 }
 
@@ -66,6 +58,9 @@ impl DesignKeys for SceneParameter {
             SceneParameter::ContactAngleA => "interface.contact_angle_a",
             SceneParameter::ContactAngleB => "interface.contact_angle_b",
             SceneParameter::Temperature => "environment.temperature",
+            SceneParameter::WearCoefficient => "contact.wear_coefficient",
+            SceneParameter::SlidingDistance => "contact.sliding_distance",
+            SceneParameter::RelativeHumidity => "environment.relative_humidity",
         }
     }
 
@@ -87,7 +82,10 @@ impl DesignKeys for SceneParameter {
             // Not design variables: bounds no message asks for.
             SceneParameter::NominalArea
             | SceneParameter::Load
-            | SceneParameter::InteratomicDistance => "",
+            | SceneParameter::InteratomicDistance
+            | SceneParameter::WearCoefficient
+            | SceneParameter::SlidingDistance
+            | SceneParameter::RelativeHumidity => "",
         }
     }
 }

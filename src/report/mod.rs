@@ -40,14 +40,7 @@ pub fn json_text(v: &serde_json::Value) -> String {
 
 /// The SI unit of an objective.
 pub(crate) fn objective_unit(objective: crate::optimize::Objective) -> &'static str {
-    use crate::optimize::Objective;
-    match objective {
-        Objective::WearRate => "m³/m",
-        Objective::WearVolume => "m³",
-        Objective::RealArea => "m²",
-        Objective::FrictionCoefficient => "",
-        _ => "N",
-    }
+    objective.quantity().dimension().si_unit()
 }
 
 /// Why a scene's wear is exactly zero (its logarithm -∞), in words: no wear

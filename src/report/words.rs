@@ -29,6 +29,9 @@ fn input_words(i: SceneParameter) -> (&'static str, Dimension) {
         SceneParameter::ContactAngleA => "contact angle θ_a",
         SceneParameter::ContactAngleB => "contact angle θ_b",
         SceneParameter::Temperature => "temperature T",
+        SceneParameter::WearCoefficient => "wear coefficient k",
+        SceneParameter::SlidingDistance => "sliding distance L",
+        SceneParameter::RelativeHumidity => "relative humidity RH",
     };
     (words, i.dimension())
 }

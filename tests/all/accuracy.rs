@@ -196,7 +196,11 @@ fn finite_differences_against_the_reference_derivative() {
     let r = finite_difference::reference_elasticity(scene, p).expect("reference derivative");
     assert!(r.error < 1e-10, "{r:?}");
     // The model's own sensitivity (Richardson, δ = 1e-4) is the default rule.
-    let model = wearopt::model::sensitivities(scene, Quadrature::default());
+    let model = wearopt::model::sensitivities(
+        scene,
+        Quadrature::default(),
+        wearopt::model::Quantity::WearRate,
+    );
     let own = model
         .iter()
         .find(|s| s.parameter == p)
@@ -414,7 +418,11 @@ fn accuracy_and_sensitivities_move_a_shared_modulus_alike() {
     assert_eq!(moved.youngs_modulus_a, moved.youngs_modulus_b);
     let reference =
         finite_difference::reference_elasticity(scene, SceneParameter::YoungsModulus).unwrap();
-    let sens = wearopt::model::sensitivities(scene, Default::default());
+    let sens = wearopt::model::sensitivities(
+        scene,
+        Default::default(),
+        wearopt::model::Quantity::WearRate,
+    );
     let e = sens
         .iter()
         .find(|s| s.parameter == SceneParameter::YoungsModulus)

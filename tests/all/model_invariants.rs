@@ -200,7 +200,11 @@ fn sensitivities_match_plain_central_differences() {
     use wearopt::model::{evaluate, sensitivities, EvaluationOptions, SceneParameter};
     let p = wearopt::problem::load(std::path::Path::new("problems/gold-switch.toml")).unwrap();
     let opts = EvaluationOptions::default();
-    let sens = sensitivities(&p.scene, opts.quadrature);
+    let sens = sensitivities(
+        &p.scene,
+        opts.quadrature,
+        wearopt::model::Quantity::WearRate,
+    );
     let ln_wear =
         |s: &wearopt::model::Scene| evaluate(s, &opts).log10_wear_rate * std::f64::consts::LN_10;
     let d: f64 = 1e-5;
@@ -260,7 +264,11 @@ fn sensitivities_say_why_they_are_missing() {
     use wearopt::model::{sensitivities, Quadrature, SceneParameter, SensitivityGap};
     let p = wearopt::problem::load(std::path::Path::new("problems/micro-gear.toml")).unwrap();
     let gap = |scene: &wearopt::model::Scene, which: SceneParameter| {
-        let s = sensitivities(scene, Quadrature::default());
+        let s = sensitivities(
+            scene,
+            Quadrature::default(),
+            wearopt::model::Quantity::WearRate,
+        );
         let s = s.iter().find(|s| s.parameter == which).unwrap();
         assert_eq!(s.elasticity.is_none(), s.note.is_some(), "{s:?}");
         s.note
