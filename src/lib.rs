@@ -12,7 +12,9 @@
 //!    synthetic maps in its tests only).
 //! 3. [`optimize`]: the constrained design search (SQP on clarabel subproblems,
 //!    argmin-driven, multistart with rayon); [`accuracy`] and [`figures`].
-//! 4. [`sweep`]: design-space sampling; [`problem`]: the TOML problem-file schema,
+//! 4. [`sweep`]: design-space sampling; [`uq`]: uncertainty quantification
+//!    (Sobol′ and Morris sensitivity, sampling statistics, FORM/SORM reliability)
+//!    on any model closure; [`problem`]: the TOML problem-file schema,
 //!    the material catalogue and validation with precise errors; [`calibrate`].
 //! 5. [`app`]: one function per command, typed options in, a typed document out,
 //!    for the command line and the Python package alike.
@@ -32,3 +34,4 @@ pub mod report;
 pub mod surface;
 pub mod sweep;
 pub mod units;
+pub mod uq;

@@ -40,3 +40,4 @@ mod surface_problem;
 mod surface_read;
 mod svg_bounds;
 mod sweep;
+mod uq;
