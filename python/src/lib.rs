@@ -145,6 +145,35 @@ fn humidity_json(
     })
 }
 
+/// `wearopt uncertainty FILE --method M [--samples N] [--seed S] --format json`.
+#[pyfunction]
+#[pyo3(signature = (source, is_path, method, samples, seed))]
+fn uncertainty_json(
+    py: Python<'_>,
+    source: String,
+    is_path: bool,
+    method: String,
+    samples: Option<u64>,
+    seed: Option<u64>,
+) -> PyResult<String> {
+    detached(py, || {
+        let method = app::uncertainty::method(app::OptionName("method"), &method).map_err(words)?;
+        let (problem, origin) = load(&source, is_path)?;
+        let doc = app::uncertainty::uncertainty(
+            &problem,
+            &origin,
+            &app::uncertainty::UncertaintyOptions {
+                method,
+                samples,
+                seed,
+            },
+            &app::Quiet,
+        )
+        .map_err(words)?;
+        Ok(report::uncertainty::json(&doc))
+    })
+}
+
 /// `wearopt asperity --tabor MU --from D0 --to D1 --points N --adhesion-model LAW --format json`.
 #[pyfunction]
 #[pyo3(signature = (tabor, from_, to, points, adhesion_model))]
@@ -726,6 +755,7 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(optimize_json, m)?)?;
     m.add_function(wrap_pyfunction!(pareto_json, m)?)?;
     m.add_function(wrap_pyfunction!(humidity_json, m)?)?;
+    m.add_function(wrap_pyfunction!(uncertainty_json, m)?)?;
     m.add_function(wrap_pyfunction!(asperity_json, m)?)?;
     m.add_function(wrap_pyfunction!(curve_arrays, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_text, m)?)?;

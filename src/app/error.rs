@@ -83,6 +83,16 @@ pub enum AppError {
         /// The problem's origin.
         origin: String,
     },
+    /// An uncertainty study was asked of a problem without `[uncertainty]`.
+    NoUncertainty {
+        /// The problem's origin.
+        origin: String,
+    },
+    /// A reliability study was asked of a problem without `[[uncertainty.event]]`.
+    NoEvent {
+        /// The problem's origin.
+        origin: String,
+    },
     /// A Pareto front was asked of a problem without an `[objective]`.
     NoObjective {
         /// The problem's origin.
@@ -199,6 +209,12 @@ impl AppError {
             AppError::NoPareto { origin } => format!(
                 "{origin}: no [pareto] section: give the front on the command line (--adhesion, --points, --direction: any one, the rest defaulting to pull_off_force, {0} points, low) or add a section to trade wear against adhesion, e.g.\n\n[pareto]\nadhesion = \"pull_off_force\"   # or \"work_of_adhesion\", \"elastic_adhesion_index\"\npoints = {0}\ndirection = \"low\"             # \"high\" when more adhesion is wanted (a latch, a switch)",
                 ParetoSpec::DEFAULT_POINTS
+            ),
+            AppError::NoUncertainty { origin } => format!(
+                "{origin}: no [uncertainty] section: say which inputs are uncertain, e.g.\n\n[uncertainty]\nsamples = 4096\noutputs = [\"wear_rate\", \"pull_off_force\"]\n[uncertainty.inputs]\nsigma = {{ distribution = \"lognormal\", median = \"3 nm\", factor = 1.5 }}\nwork_of_adhesion = {{ distribution = \"normal\", mean = \"0.1 J/m^2\", sd = \"0.01 J/m^2\" }}"
+            ),
+            AppError::NoEvent { origin } => format!(
+                "{origin}: the reliability method needs an event: add [[uncertainty.event]] name = \"stiction\" (or \"wear_out\", or quantity = \"wear_rate\", above = \"50 um^3/m\")"
             ),
             AppError::NoObjective { origin } => format!(
                 "{origin}: no [objective]: add [objective] minimize = \"wear_rate\" to say what the front trades against adhesion"

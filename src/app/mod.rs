@@ -27,6 +27,7 @@ pub mod optimize;
 pub mod pareto;
 pub mod roughness;
 pub mod sweep;
+pub mod uncertainty;
 
 mod error;
 

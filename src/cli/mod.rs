@@ -11,6 +11,7 @@ mod pareto;
 mod progress;
 mod roughness;
 mod sweep;
+mod uncertainty;
 mod verbose;
 
 use std::path::PathBuf;
@@ -86,6 +87,14 @@ Example:\n  wearopt asperity --tabor 1 --from -1.5 --to 1 --points 11\n  \
 wearopt asperity --tabor 3 --from -1.2 --to 1 --points 45 --format csv --plot asperity.svg"
     )]
     Asperity(AsperityArgs),
+    /// The scene under the scatter of its [uncertainty] inputs: Sobol′ indices, Morris screening, percentiles and life, or the probability of each event (stiction, wear-out, a threshold) by FORM, SORM and importance sampling.
+    #[command(
+        after_help = "Every index, percentile and probability comes with its 95 % interval or its status.\n\
+Example:\n  wearopt uncertainty problems/micro-gear-scatter.toml\n  \
+wearopt uncertainty problems/micro-gear-scatter.toml --method reliability --format json\n  \
+wearopt uncertainty problems/micro-gear-scatter.toml --method sampling --samples 8192 --format html --out scatter.html"
+    )]
+    Uncertainty(uncertainty::UncertaintyArgs),
     /// Search the design variables of a study for the least wear under its constraints.
     #[command(
         after_help = "Example:\n  wearopt optimize problems/micro-gear-study.toml\n  \
@@ -281,6 +290,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::Curve(args) => curve(args),
         Command::Humidity(args) => humidity(args),
         Command::Asperity(args) => asperity(args),
+        Command::Uncertainty(args) => uncertainty::run(args),
     }
 }
 

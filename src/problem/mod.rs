@@ -52,6 +52,7 @@ pub(crate) mod raw;
 pub mod scan_contact;
 mod study;
 mod topography;
+pub mod uncertainty;
 
 use std::ops::Range;
 use std::path::Path;
@@ -66,6 +67,7 @@ pub use notes::{BodyKey, CatalogueProperty, InputNote};
 pub(crate) use study::DesignKeys;
 pub use study::{Dimensioned, Study};
 pub use topography::{ContactModel, ScanSource};
+pub use uncertainty::{Event, UncertainInput, Uncertainty};
 
 use crate::model::{
     AdhesionModel, AttractionKind, Cantilever, Environment, HumidityRange, Liquid, Scene, WearArea,
@@ -97,6 +99,8 @@ pub struct Problem {
     pub notes: Vec<InputNote>,
     /// The measured scan σ, R and N came from (`[roughness] topography`), if any.
     pub scan: Option<ScanSource>,
+    /// `[uncertainty]`: the inputs' distributions, outputs and events, if given.
+    pub uncertainty: Option<Uncertainty>,
 }
 
 /// Reads and validates a problem file. The file must be UTF-8; its path (as given) is
@@ -932,12 +936,18 @@ impl Problem {
 
         let (scene, scan) = r.bem_correction(&raw, scene, scan)?;
         let study = r.study(&raw, &scene)?;
+        let uncertainty = raw
+            .uncertainty
+            .as_ref()
+            .map(|u| r.uncertainty(u, &scene))
+            .transpose()?;
         Ok(Problem {
             name,
             scene,
             study,
             notes: r.notes,
             scan,
+            uncertainty,
         })
     }
 }

@@ -116,6 +116,7 @@ pub struct RawProblem {
     pub optimizer: Option<Spanned<RawOptimizer>>,
     pub environment: Option<Spanned<RawEnvironment>>,
     pub stiction: Option<Spanned<RawStiction>>,
+    pub uncertainty: Option<Spanned<super::uncertainty::RawUncertainty>>,
 }
 
 /// `[environment]`: the humid air around the contact (docs/model.md §9).

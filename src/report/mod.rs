@@ -28,6 +28,7 @@ pub mod roughness;
 pub mod svg;
 pub mod sweep;
 pub mod trace;
+pub mod uncertainty;
 
 pub mod words;
 

@@ -40,4 +40,5 @@ mod surface_problem;
 mod surface_read;
 mod svg_bounds;
 mod sweep;
+mod uncertainty;
 mod uq;

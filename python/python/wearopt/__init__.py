@@ -42,6 +42,7 @@ __all__ = [
     "optimize",
     "pareto",
     "humidity",
+    "uncertainty",
     "asperity",
     "roughness",
     "contact",
@@ -149,6 +150,55 @@ def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str
     if points < 0:
         raise ValueError(f"points={points}: must lie in 2..=100000")
     return json.loads(_wearopt.humidity_json(*_source(problem), float(from_), float(to), points))
+
+
+def uncertainty(
+    problem: Problem,
+    method: str = "sobol",
+    samples: Optional[int] = None,
+    seed: Optional[int] = None,
+) -> Dict[str, Any]:
+    """The scene under the scatter of its ``[uncertainty]`` inputs (the JSON of
+    ``wearopt uncertainty FILE --method M [--samples N] [--seed S] --format json``):
+    ``method`` is ``"sobol"`` (indices with bootstrap intervals), ``"morris"``,
+    ``"sampling"`` (percentiles with intervals, the empirical CDF as the numpy
+    array ``cdf``, life B1/B10/B50) or ``"reliability"`` (the probability of each
+    event with its interval, β, FORM, SORM, design points). Interval pairs come
+    back as numpy arrays.
+
+    >>> r = wearopt.uncertainty("problems/micro-gear-scatter.toml", "sampling", samples=256)
+    >>> r["method"], r["samples"], [o["name"] for o in r["outputs"]]
+    ('sampling', 256, ['wear_rate', 'pull_off_force', 'life_cycles'])
+    """
+    if not isinstance(method, str):
+        raise TypeError(f"method must be a str, not {type(method).__name__}")
+    for name, value in (("samples", samples), ("seed", seed)):
+        if value is None:
+            continue
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+            raise TypeError(f"{name} must be an int, not {type(value).__name__}")
+        if value < 0:
+            raise ValueError(f"{name}={value}: must be >= 0")
+    doc = json.loads(
+        _wearopt.uncertainty_json(
+            *_source(problem),
+            method,
+            None if samples is None else int(samples),
+            None if seed is None else int(seed),
+        )
+    )
+    return _arrays(doc)
+
+
+def _arrays(value: Any) -> Any:
+    """Lists of numbers (intervals, the CDF) as numpy arrays, recursively."""
+    if isinstance(value, dict):
+        return {k: _arrays(v) for k, v in value.items()}
+    if isinstance(value, list):
+        if value and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value):
+            return np.asarray(value, dtype=float)
+        return [_arrays(v) for v in value]
+    return value
 
 
 def asperity(

@@ -30,6 +30,12 @@ def asperity(
     """The JSON of `wearopt asperity --tabor MU --from D0 --to D1 --points N --format json` as a dict."""
     ...
 
+def uncertainty(
+    problem: Problem, method: str = "sobol", samples: Optional[int] = None, seed: Optional[int] = None
+) -> Dict[str, Any]:
+    """The JSON of `wearopt uncertainty FILE --method M --format json` as a dict (intervals and the CDF as numpy arrays)."""
+    ...
+
 def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:
     """The JSON of `wearopt humidity FILE --from RH0 --to RH1 --points N --format json` as a dict."""
     ...
