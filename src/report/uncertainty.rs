@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 use serde_json::{json, Value};
 
 use super::format::FormatError;
-use super::svg::{escape, Axis, LinePlot, Series};
+use super::svg::{escape, Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp, Format};
 use crate::app::uncertainty::{Analysis, Method, OutputInfo, UncertaintyDocument};
 use crate::model::Quantity;
@@ -854,7 +854,8 @@ pub fn indices_svg(
         "<line x1=\"{left}\" y1=\"{base}\" x2=\"{}\" y2=\"{base}\" stroke=\"black\"/>\n",
         w - right
     );
-    let mut t = (lo * 4.0).ceil() / 4.0;
+    // (+ 0.0: a tick at −0 is written 0.)
+    let mut t = (lo * 4.0).ceil() / 4.0 + 0.0;
     while t <= hi + 1e-9 {
         let _ = write!(
             s,
@@ -862,7 +863,7 @@ pub fn indices_svg(
             x(t),
             base + 5.0,
             base + 18.0,
-            sig_exp(t, 2)
+            sig_exp(t + 0.0, 2)
         );
         t += 0.25;
     }
@@ -896,7 +897,7 @@ fn cdf_svg(title: &str, quantity: Quantity, sorted: &[f64], label: &str) -> Stri
         xa = xa.with_unit(unit);
     }
     LinePlot::new(title, xa, Axis::linear(label).with_range(0.0, 1.0))
-        .with_series(Series::new("empirical", points))
+        .with_series(Series::new("sampled parts", points).with_marker(Marker::None))
         .to_svg()
 }
 

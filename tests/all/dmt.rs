@@ -455,6 +455,7 @@ fn shipped_scenes_use_the_law_their_tabor_parameter_calls_for() {
         let want = if [
             "micro-gear",
             "micro-gear-humid",
+            "micro-gear-scatter",
             "gold-switch",
             "latch-pareto",
         ]
