@@ -312,7 +312,16 @@ fn g_function_indices() {
     assert!((s[0] - 0.716192).abs() < 1e-6 && (st[0] - 0.787144).abs() < 1e-6);
     assert!((s[4] - 7.16e-5).abs() < 1e-7 && (st[4] - 1.0495e-4).abs() < 1e-7);
     let model = InputModel::independent(vec![uniform(0.0, 1.0); 8]).unwrap();
-    let r = sobol::indices(&model, |x| Some(g_function(&a, x)), 1 << 14, 2);
+    // The batch interface, with 200 bootstrap resamples to keep the test fast.
+    let values: Vec<Vec<Option<f64>>> = (0..1u64 << 14)
+        .map(|k| {
+            sobol::points(&model, k, 2)
+                .iter()
+                .map(|x| Some(g_function(&a, x)))
+                .collect()
+        })
+        .collect();
+    let r = sobol::analyze_with(8, &values, 2, 200);
     let mut worst = 0.0f64;
     for i in 0..8 {
         worst = worst
