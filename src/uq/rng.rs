@@ -3,9 +3,15 @@
 
 use crate::sweep::sequence::splitmix;
 
-/// A hash of (seed, stream, index): independent streams per purpose.
+/// A hash of (seed, stream, index): draw `index` of the SplitMix64 sequence
+/// whose state starts at a key drawn from (seed, stream), mixed once more (a
+/// counter keyed by XOR, `mix(key ^ index)`, feeds the mixer inputs that differ
+/// in their low bits only).
 pub(crate) fn hash(seed: u64, stream: u64, index: u64) -> u64 {
-    splitmix(splitmix(splitmix(seed) ^ stream.wrapping_mul(0xD6E8_FEB8_6659_FD93)) ^ index)
+    let key = splitmix(splitmix(seed) ^ stream.wrapping_mul(0xD6E8_FEB8_6659_FD93));
+    splitmix(splitmix(
+        key.wrapping_add(index.wrapping_mul(0x9E37_79B9_7F4A_7C15)),
+    ))
 }
 
 /// A uniform double in the open interval (0, 1) from 53 bits of a hash.

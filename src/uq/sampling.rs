@@ -23,11 +23,22 @@ use serde::Serialize;
 use super::model::InputModel;
 use super::special::binomial_cdf;
 use super::Estimate;
-use crate::sweep::sequence::sobol_owen;
+use crate::sweep::sequence::{sobol_owen, MAX_DIMENSIONS};
+
+/// The most inputs a sample takes (the Sobol′ sequence's dimensions).
+pub const MAX_INPUTS: usize = MAX_DIMENSIONS;
 
 /// The inputs of sample point `k` (an Owen-scrambled Sobol′ point in the model's
 /// dimension, mapped through the model).
+///
+/// # Panics
+/// If the model has more than [`MAX_INPUTS`] inputs.
 pub fn point(model: &InputModel, k: u64, seed: u64) -> Vec<f64> {
+    assert!(
+        model.dim() <= MAX_INPUTS,
+        "sampling takes at most {MAX_INPUTS} inputs, not {}",
+        model.dim()
+    );
     model.from_unit(&sobol_owen(k, model.dim(), seed))
 }
 
