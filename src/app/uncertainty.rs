@@ -209,8 +209,25 @@ enum Cause {
     Undefined,
 }
 
-fn evaluate(scene: &Scene) -> Evaluation {
-    model::evaluate(scene, &EvaluationOptions::default())
+/// The evaluation, with the pull-off search only where something read needs it
+/// (it is most of an evaluation's cost).
+fn evaluate(scene: &Scene, pull_off: bool) -> Evaluation {
+    model::evaluate(
+        scene,
+        &EvaluationOptions {
+            pull_off,
+            ..EvaluationOptions::default()
+        },
+    )
+}
+
+/// Whether an event's limit state reads the pull-off force.
+fn event_needs_pull_off(event: &Event) -> bool {
+    match event {
+        Event::Stiction => true,
+        Event::WearOut => false,
+        Event::Threshold { quantity, .. } => quantity.needs_pull_off(),
+    }
 }
 
 /// The outputs at one evaluation.
@@ -331,11 +348,12 @@ pub fn uncertainty(
     let model = u.input_model();
     let nominal = &problem.scene;
     let outputs = &u.outputs;
-    let nominal_ev = evaluate(nominal);
+    let nominal_ev = evaluate(nominal, true);
+    let pull_off = outputs.iter().any(|q| q.needs_pull_off());
     let nominal_values = outputs_of(&nominal_ev, nominal, outputs);
     let run = |x: &[f64]| -> Sample {
         let s = scene_at(nominal, &u.inputs, x);
-        outputs_of(&evaluate(&s), &s, outputs)
+        outputs_of(&evaluate(&s, pull_off), &s, outputs)
     };
     let d = model.dim();
     let mut all_samples: Vec<Sample> = Vec::new();
@@ -430,7 +448,7 @@ pub fn uncertainty(
             for event in &u.events {
                 let g = |x: &[f64]| {
                     let s = scene_at(nominal, &u.inputs, x);
-                    limit_state(event, &evaluate(&s), &s)
+                    limit_state(event, &evaluate(&s, event_needs_pull_off(event)), &s)
                 };
                 let r = reliability::analyze(&model, g, &settings);
                 evaluations += r.evaluations;
