@@ -249,7 +249,7 @@ pub fn limit_state(event: &Event, ev: &Evaluation, scene: &Scene) -> Option<f64>
         }
         Event::WearOut => {
             let allowed = scene.requirements.allowed_wear_depth?;
-            if ev.status == Status::Separated || !(ev.wear_rate > 0.0) {
+            if ev.status == Status::Separated || ev.wear_rate.is_nan() || ev.wear_rate <= 0.0 {
                 return Some(LN_CEIL);
             }
             let ln_depth = ev.log10_wear_rate * ln10 + scene.sliding_distance.max(1e-300).ln()

@@ -807,12 +807,12 @@ pub fn indices_svg(
         escape(title)
     );
     // Legend.
-    let _ = write!(s, "<rect x=\"{left}\" y=\"28\" width=\"12\" height=\"8\" fill=\"#1f77b4\"/><text x=\"{}\" y=\"36\">first order S1</text><rect x=\"{}\" y=\"28\" width=\"12\" height=\"8\" fill=\"#ff7f0e\"/><text x=\"{}\" y=\"36\">total ST</text><text x=\"{}\" y=\"36\">(whiskers: 95 % intervals)</text>\n", left + 16.0, left + 130.0, left + 146.0, left + 230.0);
+    let _ = writeln!(s, "<rect x=\"{left}\" y=\"28\" width=\"12\" height=\"8\" fill=\"#1f77b4\"/><text x=\"{}\" y=\"36\">first order S1</text><rect x=\"{}\" y=\"28\" width=\"12\" height=\"8\" fill=\"#ff7f0e\"/><text x=\"{}\" y=\"36\">total ST</text><text x=\"{}\" y=\"36\">(whiskers: 95 % intervals)</text>", left + 16.0, left + 130.0, left + 146.0, left + 230.0);
     for (k, name) in names.iter().enumerate() {
         let y0 = top + row * k as f64;
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>\n",
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
             left - 8.0,
             y0 + row / 2.0 + 4.0,
             escape(name)
@@ -823,17 +823,17 @@ pub fn indices_svg(
         {
             let yb = y0 + 5.0 + 12.0 * j as f64;
             let (a, b) = (x(0.0), x(v));
-            let _ = write!(
+            let _ = writeln!(
                 s,
-                "<rect x=\"{:.1}\" y=\"{yb:.1}\" width=\"{:.1}\" height=\"10\" fill=\"{color}\"/>\n",
+                "<rect x=\"{:.1}\" y=\"{yb:.1}\" width=\"{:.1}\" height=\"10\" fill=\"{color}\"/>",
                 a.min(b),
                 (b - a).abs().max(0.5)
             );
             if iv[0].is_finite() && iv[1].is_finite() {
                 let yc = yb + 5.0;
-                let _ = write!(
+                let _ = writeln!(
                     s,
-                    "<line x1=\"{:.1}\" y1=\"{yc:.1}\" x2=\"{:.1}\" y2=\"{yc:.1}\" stroke=\"black\"/><line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"black\"/><line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"black\"/>\n",
+                    "<line x1=\"{:.1}\" y1=\"{yc:.1}\" x2=\"{:.1}\" y2=\"{yc:.1}\" stroke=\"black\"/><line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"black\"/><line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"black\"/>",
                     x(iv[0]),
                     x(iv[1]),
                     x(iv[0]),
@@ -849,17 +849,17 @@ pub fn indices_svg(
         }
     }
     let base = top + row * names.len() as f64 + 6.0;
-    let _ = write!(
+    let _ = writeln!(
         s,
-        "<line x1=\"{left}\" y1=\"{base}\" x2=\"{}\" y2=\"{base}\" stroke=\"black\"/>\n",
+        "<line x1=\"{left}\" y1=\"{base}\" x2=\"{}\" y2=\"{base}\" stroke=\"black\"/>",
         w - right
     );
     // (+ 0.0: a tick at −0 is written 0.)
     let mut t = (lo * 4.0).ceil() / 4.0 + 0.0;
     while t <= hi + 1e-9 {
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "<line x1=\"{0:.1}\" y1=\"{base}\" x2=\"{0:.1}\" y2=\"{1}\" stroke=\"black\"/><text x=\"{0:.1}\" y=\"{2}\" text-anchor=\"middle\">{3}</text>\n",
+            "<line x1=\"{0:.1}\" y1=\"{base}\" x2=\"{0:.1}\" y2=\"{1}\" stroke=\"black\"/><text x=\"{0:.1}\" y=\"{2}\" text-anchor=\"middle\">{3}</text>",
             x(t),
             base + 5.0,
             base + 18.0,
