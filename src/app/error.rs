@@ -184,6 +184,13 @@ pub enum AppError {
     },
     /// The figures' settings are out of range.
     Figures(FigureError),
+    /// Parts of an uncertainty study that cannot be merged.
+    Part {
+        /// The part (a file name), or "N parts" when the set is at fault.
+        origin: String,
+        /// What is wrong.
+        error: crate::app::uncertainty::PartError,
+    },
     /// A directory or file the command must write cannot be made.
     Output {
         /// The option that named it.
@@ -281,6 +288,7 @@ impl AppError {
             ),
             AppError::Read(e) => read_message(e, vocabulary),
             AppError::Surface { origin, error } => format!("{origin}: {error}"),
+            AppError::Part { origin, error } => format!("{origin}: {error}"),
             AppError::Contact { origin, error } => format!("{origin}: {error}"),
             AppError::Calibration(e) => calibration_message(e, vocabulary),
             AppError::Sweep {

@@ -3,6 +3,8 @@
 //! probability of each event (FORM, SORM, then sampling) — on the generic
 //! engines of [`crate::uq`].
 
+use std::ops::Range;
+
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -10,6 +12,8 @@ use crate::model::{
     self, quantity::LN_CEIL, Evaluation, EvaluationOptions, Quantity, Scene, SceneParameter, Status,
 };
 use crate::problem::{Event, Problem, UncertainInput, Uncertainty};
+use crate::sweep::Shard;
+use crate::uq::model::InputModel;
 use crate::uq::morris::{self, MorrisResult, MorrisSettings};
 use crate::uq::reliability::{self, EventResult, ReliabilitySettings};
 use crate::uq::sampling::{self, LifePercentiles, SamplingSummary};
@@ -198,19 +202,50 @@ fn of_the_operating_point(q: Quantity) -> bool {
     )
 }
 
-/// One sample: the outputs' values, or the cause of their absence.
-type Sample = Vec<Result<f64, Cause>>;
+/// One model evaluation: the value of each output (in the order of
+/// [`Uncertainty::outputs`]), or the cause of its absence.
+pub type Point = Vec<Result<f64, Cause>>;
 
+/// Why an evaluation has no value of an output.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Cause {
+pub enum Cause {
+    /// The surfaces separated (a quantity of the operating point).
     Separated,
+    /// The separation solve did not converge.
     NotConverged,
+    /// Outside the model's range.
     OutOfRange,
+    /// The quantity does not exist there.
     Undefined,
 }
 
+impl Cause {
+    /// Every cause.
+    pub const ALL: [Cause; 4] = [
+        Cause::Separated,
+        Cause::NotConverged,
+        Cause::OutOfRange,
+        Cause::Undefined,
+    ];
+
+    /// The name, as in the `failed` counts of the JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Cause::Separated => "separated",
+            Cause::NotConverged => "not_converged",
+            Cause::OutOfRange => "out_of_range",
+            Cause::Undefined => "undefined",
+        }
+    }
+
+    /// The cause of that name.
+    pub fn named(name: &str) -> Option<Cause> {
+        Cause::ALL.into_iter().find(|c| c.as_str() == name)
+    }
+}
+
 /// The evaluation, with the pull-off search only where something read needs it
-/// (it is most of an evaluation's cost).
+/// (a root search of its own that the wear outputs do not need).
 fn evaluate(scene: &Scene, pull_off: bool) -> Evaluation {
     model::evaluate(
         scene,
@@ -231,7 +266,7 @@ fn event_needs_pull_off(event: &Event) -> bool {
 }
 
 /// The outputs at one evaluation.
-fn outputs_of(ev: &Evaluation, scene: &Scene, outputs: &[Quantity]) -> Sample {
+fn outputs_of(ev: &Evaluation, scene: &Scene, outputs: &[Quantity]) -> Point {
     outputs
         .iter()
         .map(|&q| match ev.status {
@@ -309,14 +344,81 @@ fn fingerprint(scene: &Scene, u: &Uncertainty, method: Method, samples: u64, see
     format!("{hash:016x}")
 }
 
-/// Runs the problem's uncertainty study. `origin` names the problem in errors;
-/// `progress` hears of each sample (or, under `reliability`, each event).
-pub fn uncertainty(
-    problem: &Problem,
+/// The units a study's samples come in, which shards divide: Sobol′ and
+/// sampling, the N samples (a Sobol′ sample is d + 2 evaluations); Morris, its
+/// ⌈N / (d + 1)⌉ trajectories (at least 4); reliability, none (it is sequential).
+pub fn units(method: Method, samples: u64, d: usize) -> u64 {
+    match method {
+        Method::Sobol | Method::Sampling => samples,
+        Method::Morris => samples.div_ceil(d as u64 + 1).max(4),
+        Method::Reliability => 0,
+    }
+}
+
+/// The evaluations in one unit (see [`units`]): d + 2 for Sobol′, d + 1 for a
+/// Morris trajectory, 1 for sampling.
+pub fn points_per_unit(method: Method, d: usize) -> usize {
+    match method {
+        Method::Sobol => d + 2,
+        Method::Morris => d + 1,
+        Method::Sampling => 1,
+        Method::Reliability => 0,
+    }
+}
+
+/// What the units of a method are called in messages.
+pub fn unit_name(method: Method) -> &'static str {
+    match method {
+        Method::Morris => "trajectories",
+        _ => "samples",
+    }
+}
+
+/// A study checked, its N, seed and joint law fixed.
+struct Setup<'a> {
+    problem: &'a Problem,
+    u: &'a Uncertainty,
+    method: Method,
+    samples: u64,
+    samples_asked: Option<u64>,
+    seed: u64,
+    model: InputModel,
+}
+
+impl Setup<'_> {
+    fn d(&self) -> usize {
+        self.model.dim()
+    }
+
+    fn units(&self) -> u64 {
+        units(self.method, self.samples, self.d())
+    }
+
+    fn morris_settings(&self) -> MorrisSettings {
+        MorrisSettings {
+            trajectories: self.units() as usize,
+            seed: self.seed,
+            ..MorrisSettings::default()
+        }
+    }
+
+    fn fingerprint(&self) -> String {
+        fingerprint(
+            &self.problem.scene,
+            self.u,
+            self.method,
+            self.samples,
+            self.seed,
+        )
+    }
+}
+
+/// Checks the problem and the options, and fixes the study.
+fn setup<'a>(
+    problem: &'a Problem,
     origin: &str,
     options: &UncertaintyOptions,
-    progress: &dyn Progress,
-) -> Result<UncertaintyDocument, AppError> {
+) -> Result<Setup<'a>, AppError> {
     valid_scene(problem, origin)?;
     let u = problem
         .uncertainty
@@ -343,27 +445,36 @@ pub fn uncertainty(
             origin: origin.to_string(),
         });
     }
-    let seed = options.seed.unwrap_or(u.seed);
     let (samples, samples_asked) = samples_for(options.method, asked);
-    let model = u.input_model();
-    let nominal = &problem.scene;
-    let outputs = &u.outputs;
-    let nominal_ev = evaluate(nominal, true);
-    let pull_off = outputs.iter().any(|q| q.needs_pull_off());
-    let nominal_values = outputs_of(&nominal_ev, nominal, outputs);
-    let run = |x: &[f64]| -> Sample {
-        let s = scene_at(nominal, &u.inputs, x);
-        outputs_of(&evaluate(&s, pull_off), &s, outputs)
+    Ok(Setup {
+        problem,
+        u,
+        method: options.method,
+        samples,
+        samples_asked,
+        seed: options.seed.unwrap_or(u.seed),
+        model: u.input_model(),
+    })
+}
+
+/// Evaluates the units `range` (see [`units`]): their points, unit after unit.
+/// Every point depends on its index alone, so any split of the units over
+/// threads or shards gives the same values.
+fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<Point> {
+    let nominal = &s.problem.scene;
+    let u = s.u;
+    let pull_off = u.outputs.iter().any(|q| q.needs_pull_off());
+    let run = |x: &[f64]| -> Point {
+        let sc = scene_at(nominal, &u.inputs, x);
+        outputs_of(&evaluate(&sc, pull_off), &sc, &u.outputs)
     };
-    let d = model.dim();
-    let mut all_samples: Vec<Sample> = Vec::new();
-    let (analysis, evaluations) = match options.method {
+    match s.method {
         Method::Sobol => {
-            progress.begin(samples as usize);
-            let per_k: Vec<Vec<Sample>> = (0..samples)
+            progress.begin((range.end - range.start) as usize);
+            let per_k: Vec<Vec<Point>> = range
                 .into_par_iter()
                 .map(|k| {
-                    let r = sobol::points(&model, k, seed)
+                    let r = sobol::points(&s.model, k, s.seed)
                         .iter()
                         .map(|x| run(x))
                         .collect();
@@ -371,62 +482,73 @@ pub fn uncertainty(
                     r
                 })
                 .collect();
-            let results = (0..outputs.len())
-                .map(|o| {
-                    let values: Vec<Vec<Option<f64>>> = per_k
-                        .iter()
-                        .map(|pts| pts.iter().map(|s| s[o].ok()).collect())
-                        .collect();
-                    sobol::analyze(d, &values, seed)
-                })
-                .collect();
-            all_samples = per_k.into_iter().flatten().collect();
-            (Analysis::Sobol(results), samples as usize * (d + 2))
+            per_k.into_iter().flatten().collect()
         }
         Method::Morris => {
-            let trajectories = (samples as usize).div_ceil(d + 1).max(4);
-            let settings = MorrisSettings {
-                trajectories,
-                seed,
-                ..MorrisSettings::default()
-            };
-            let points: Vec<Vec<f64>> = (0..trajectories)
-                .flat_map(|r| morris::points(&model, r, &settings))
+            let settings = s.morris_settings();
+            let points: Vec<Vec<f64>> = range
+                .flat_map(|r| morris::points(&s.model, r as usize, &settings))
                 .collect();
             progress.begin(points.len());
-            let values: Vec<Sample> = points
+            points
                 .par_iter()
                 .map(|x| {
                     let r = run(x);
                     progress.advance();
                     r
                 })
-                .collect();
+                .collect()
+        }
+        Method::Sampling => {
+            progress.begin((range.end - range.start) as usize);
+            range
+                .into_par_iter()
+                .map(|k| {
+                    let r = run(&sampling::point(&s.model, k, s.seed));
+                    progress.advance();
+                    r
+                })
+                .collect()
+        }
+        Method::Reliability => Vec::new(),
+    }
+}
+
+/// The analysis of all the study's points (in unit order; none for
+/// reliability, which evaluates as it goes and tells `progress` of each event).
+fn analyse(s: &Setup, points: Vec<Point>, progress: &dyn Progress) -> UncertaintyDocument {
+    let nominal = &s.problem.scene;
+    let u = s.u;
+    let outputs = &u.outputs;
+    let (d, seed, samples) = (s.d(), s.seed, s.samples);
+    let column = |o: usize| -> Vec<Option<f64>> { points.iter().map(|p| p[o].ok()).collect() };
+    let (analysis, evaluations) = match s.method {
+        Method::Sobol => {
             let results = (0..outputs.len())
                 .map(|o| {
-                    let per_t: Vec<Vec<Option<f64>>> = values
+                    let values: Vec<Vec<Option<f64>>> = points
+                        .chunks(d + 2)
+                        .map(|pts| pts.iter().map(|p| p[o].ok()).collect())
+                        .collect();
+                    sobol::analyze(d, &values, seed)
+                })
+                .collect();
+            (Analysis::Sobol(results), samples as usize * (d + 2))
+        }
+        Method::Morris => {
+            let settings = s.morris_settings();
+            let results = (0..outputs.len())
+                .map(|o| {
+                    let per_t: Vec<Vec<Option<f64>>> = points
                         .chunks(d + 1)
-                        .map(|c| c.iter().map(|s| s[o].ok()).collect())
+                        .map(|c| c.iter().map(|p| p[o].ok()).collect())
                         .collect();
                     morris::analyze(d, &per_t, &settings)
                 })
                 .collect();
-            let n = values.len();
-            all_samples = values;
-            (Analysis::Morris(results), n)
+            (Analysis::Morris(results), points.len())
         }
         Method::Sampling => {
-            progress.begin(samples as usize);
-            let values: Vec<Sample> = (0..samples)
-                .into_par_iter()
-                .map(|k| {
-                    let r = run(&sampling::point(&model, k, seed));
-                    progress.advance();
-                    r
-                })
-                .collect();
-            let column =
-                |o: usize| -> Vec<Option<f64>> { values.iter().map(|s| s[o].ok()).collect() };
             let summaries = (0..outputs.len())
                 .map(|o| sampling::summarize(&column(o)))
                 .collect();
@@ -434,7 +556,6 @@ pub fn uncertainty(
                 .iter()
                 .position(|&q| matches!(q, Quantity::LifeCycles | Quantity::LifeSlidingDistance))
                 .map(|o| (outputs[o], sampling::life_percentiles(&column(o))));
-            all_samples = values;
             (Analysis::Sampling { summaries, life }, samples as usize)
         }
         Method::Reliability => {
@@ -447,10 +568,10 @@ pub fn uncertainty(
             let mut evaluations = 0;
             for event in &u.events {
                 let g = |x: &[f64]| {
-                    let s = scene_at(nominal, &u.inputs, x);
-                    limit_state(event, &evaluate(&s, event_needs_pull_off(event)), &s)
+                    let sc = scene_at(nominal, &u.inputs, x);
+                    limit_state(event, &evaluate(&sc, event_needs_pull_off(event)), &sc)
                 };
-                let r = reliability::analyze(&model, g, &settings);
+                let r = reliability::analyze(&s.model, g, &settings);
                 evaluations += r.evaluations;
                 results.push((event.clone(), r));
                 progress.advance();
@@ -458,13 +579,14 @@ pub fn uncertainty(
             (Analysis::Reliability(results), evaluations)
         }
     };
+    let nominal_values = outputs_of(&evaluate(nominal, true), nominal, outputs);
     let outputs_info = outputs
         .iter()
         .enumerate()
         .map(|(o, &quantity)| {
             let mut failed = Failures::default();
-            for s in &all_samples {
-                match s[o] {
+            for p in &points {
+                match p[o] {
                     Ok(_) => {}
                     Err(Cause::Separated) => failed.separated += 1,
                     Err(Cause::NotConverged) => failed.not_converged += 1,
@@ -479,19 +601,390 @@ pub fn uncertainty(
             }
         })
         .collect();
-    Ok(UncertaintyDocument {
-        name: problem.name.clone(),
-        method: options.method,
+    UncertaintyDocument {
+        name: s.problem.name.clone(),
+        method: s.method,
         samples,
-        samples_asked,
+        samples_asked: s.samples_asked,
         seed,
-        fingerprint: fingerprint(nominal, u, options.method, samples, seed),
+        fingerprint: s.fingerprint(),
         inputs: u.inputs.clone(),
         correlations: u.correlations.clone(),
         outputs: outputs_info,
         evaluations,
         analysis,
+    }
+}
+
+/// Runs the problem's uncertainty study. `origin` names the problem in errors;
+/// `progress` hears of each sample (Morris: each evaluation; reliability: each
+/// event).
+pub fn uncertainty(
+    problem: &Problem,
+    origin: &str,
+    options: &UncertaintyOptions,
+    progress: &dyn Progress,
+) -> Result<UncertaintyDocument, AppError> {
+    let s = setup(problem, origin, options)?;
+    let points = evaluate_units(&s, 0..s.units(), progress);
+    Ok(analyse(&s, points, progress))
+}
+
+// ---------------------------------------------------------------- shards
+
+/// What marks a part (the value of its first key, `wearopt`).
+pub const PART_MARKER: &str = "uncertainty part";
+
+/// One shard of a study (`wearopt uncertainty FILE --shard I/N`): the values of
+/// its units, and all that [`merge`] needs to rebuild the study — the problem's
+/// text among them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UncertaintyPart {
+    /// The study's fingerprint (the unsharded document's).
+    pub fingerprint: String,
+    /// The wearopt version that wrote it.
+    pub version: String,
+    /// The problem's name.
+    pub name: String,
+    /// The analysis.
+    pub method: Method,
+    /// N used.
+    pub samples: u64,
+    /// N as asked, when it was rounded up.
+    pub samples_asked: Option<u64>,
+    /// The seed.
+    pub seed: u64,
+    /// The shard.
+    pub shard: Shard,
+    /// The study's units ([`units`]): the shards divide `0..units`.
+    pub units: u64,
+    /// The units this part holds.
+    pub range: Range<u64>,
+    /// Evaluations per unit ([`points_per_unit`]).
+    pub points_per_unit: usize,
+    /// The outputs, by name, in the order of each point's values.
+    pub outputs: Vec<String>,
+    /// The problem's origin (its path as given): its default name, and where a
+    /// `topography` scan is looked for.
+    pub origin: String,
+    /// The problem's text.
+    pub problem: String,
+    /// The values: `points_per_unit` points per unit of `range`, in order.
+    pub points: Vec<Point>,
+}
+
+/// Why parts cannot be merged (bad input).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PartError {
+    /// Not a part, or one whose fields cannot be read.
+    #[error(
+        "not a wearopt uncertainty part (the JSON of `wearopt uncertainty FILE --shard I/N`): {0}"
+    )]
+    NotAPart(String),
+    /// Written by another version.
+    #[error("written by wearopt {found}, this is wearopt {ours}: merge with the version that wrote the parts")]
+    Version {
+        /// The part's version.
+        found: String,
+        /// Ours.
+        ours: String,
+    },
+    /// Another study's part.
+    #[error("its fingerprint {found} is not {expected}, the fingerprint of {first}: parts of different studies (problem, method, samples, seed or version) cannot be merged")]
+    Foreign {
+        /// The part's fingerprint.
+        found: String,
+        /// The first part's.
+        expected: String,
+        /// The first part, as named.
+        first: String,
+    },
+    /// Fields that contradict the fingerprint.
+    #[error("its {field} differs from {first}'s under the same fingerprint: an edited part")]
+    Inconsistent {
+        /// The field.
+        field: &'static str,
+        /// The first part, as named.
+        first: String,
+    },
+    /// A range outside the study, or values that do not fill it.
+    #[error("{0}: cut short or edited (rerun that shard)")]
+    Values(String),
+    /// Units no part holds.
+    #[error("{what} {missing} of 0..{units} are missing: no part holds them (a shard not given?)")]
+    Missing {
+        /// "samples" or "trajectories".
+        what: &'static str,
+        /// The missing ranges, `a..b, c..d`.
+        missing: String,
+        /// The study's units.
+        units: u64,
+    },
+    /// Units two parts hold.
+    #[error("{what} {start}..{end} are in both {a} and {b} (one shard given twice?)")]
+    Overlap {
+        /// "samples" or "trajectories".
+        what: &'static str,
+        /// The first unit held twice.
+        start: u64,
+        /// One past the last.
+        end: u64,
+        /// One part, as named.
+        a: String,
+        /// The other.
+        b: String,
+    },
+    /// The embedded problem cannot be read again.
+    #[error("its problem ({origin}) cannot be read again: {message}")]
+    Problem {
+        /// The problem's origin.
+        origin: String,
+        /// Why.
+        message: String,
+    },
+    /// The embedded problem does not give the part's fingerprint.
+    #[error("its problem gives the fingerprint {computed}, not the {carried} it carries: an edited part, or a `topography` scan that changed since")]
+    Reproduce {
+        /// Of the problem as read again.
+        computed: String,
+        /// Carried by the part.
+        carried: String,
+    },
+    /// `samples` asked of the merge is not the study's.
+    #[error("the parts are of a study of {found} samples, not {expected}")]
+    Samples {
+        /// Asked.
+        expected: u64,
+        /// The study's.
+        found: u64,
+    },
+    /// No parts at all.
+    #[error("no parts to merge")]
+    NoParts,
+}
+
+/// Evaluates one shard of the study: the units `shard.range(units)`. `source`
+/// is the problem's text (`problem` as parsed from it with `origin`), carried in
+/// the part so that [`merge`] needs nothing else. Reliability is refused: its
+/// searches and its importance sampling are sequential.
+pub fn uncertainty_part(
+    problem: &Problem,
+    origin: &str,
+    source: &str,
+    options: &UncertaintyOptions,
+    shard: Shard,
+    progress: &dyn Progress,
+) -> Result<UncertaintyPart, AppError> {
+    if options.method == Method::Reliability {
+        return Err(AppError::Invalid {
+            options: vec![
+                (OptionName("shard"), format!("{}/{}", shard.index, shard.count)),
+                (OptionName("method"), "reliability".to_string()),
+            ],
+            rule: "reliability cannot be sharded: each FORM step and each importance-sampling round depends on the last; run it unsharded (sobol, morris and sampling shard)".to_string(),
+        });
+    }
+    let s = setup(problem, origin, options)?;
+    let units = s.units();
+    let range = shard.range(units);
+    let points = evaluate_units(&s, range.clone(), progress);
+    Ok(UncertaintyPart {
+        fingerprint: s.fingerprint(),
+        version: env!("CARGO_PKG_VERSION").to_string(),
+        name: problem.name.clone(),
+        method: s.method,
+        samples: s.samples,
+        samples_asked: s.samples_asked,
+        seed: s.seed,
+        shard,
+        units,
+        range,
+        points_per_unit: points_per_unit(s.method, s.d()),
+        outputs: s.u.outputs.iter().map(|q| q.as_str().to_string()).collect(),
+        origin: origin.to_string(),
+        problem: source.to_string(),
+        points,
     })
+}
+
+/// Joins the parts of one study (any order; each named by its label, a file
+/// name, in errors) into the document of the unsharded run: one fingerprint,
+/// the units covered exactly once, the problem read again from the parts and
+/// its fingerprint checked, then the analysis. `samples`, if given, must be the
+/// study's N (used or asked).
+pub fn merge(
+    parts: Vec<(String, UncertaintyPart)>,
+    samples: Option<u64>,
+) -> Result<UncertaintyDocument, AppError> {
+    let fail = |origin: &str, error: PartError| AppError::Part {
+        origin: origin.to_string(),
+        error,
+    };
+    let Some((first_name, first)) = parts.first() else {
+        return Err(fail("merge", PartError::NoParts));
+    };
+    let ours = env!("CARGO_PKG_VERSION");
+    for (name, p) in &parts {
+        if p.version != ours {
+            return Err(fail(
+                name,
+                PartError::Version {
+                    found: p.version.clone(),
+                    ours: ours.to_string(),
+                },
+            ));
+        }
+        if p.fingerprint != first.fingerprint {
+            return Err(fail(
+                name,
+                PartError::Foreign {
+                    found: p.fingerprint.clone(),
+                    expected: first.fingerprint.clone(),
+                    first: first_name.clone(),
+                },
+            ));
+        }
+        let inconsistent = |field: &'static str| {
+            fail(
+                name,
+                PartError::Inconsistent {
+                    field,
+                    first: first_name.clone(),
+                },
+            )
+        };
+        if p.method != first.method {
+            return Err(inconsistent("method"));
+        }
+        if (p.samples, p.samples_asked, p.units)
+            != (first.samples, first.samples_asked, first.units)
+        {
+            return Err(inconsistent("samples"));
+        }
+        if p.seed != first.seed {
+            return Err(inconsistent("seed"));
+        }
+        if p.outputs != first.outputs || p.points_per_unit != first.points_per_unit {
+            return Err(inconsistent("outputs"));
+        }
+        if p.range.start > p.range.end || p.range.end > p.units {
+            return Err(fail(
+                name,
+                PartError::Values(format!(
+                    "its range {}..{} is not within the study's 0..{}",
+                    p.range.start, p.range.end, p.units
+                )),
+            ));
+        }
+        let expected = (p.range.end - p.range.start) as usize * p.points_per_unit;
+        if p.points.len() != expected {
+            return Err(fail(
+                name,
+                PartError::Values(format!(
+                    "it holds {} points, but {} {}..{} are {expected}",
+                    p.points.len(),
+                    unit_name(p.method),
+                    p.range.start,
+                    p.range.end
+                )),
+            ));
+        }
+        if let Some(k) = p.points.iter().position(|v| v.len() != p.outputs.len()) {
+            return Err(fail(
+                name,
+                PartError::Values(format!(
+                    "its point {k} has {} values for {} outputs",
+                    p.points[k].len(),
+                    p.outputs.len()
+                )),
+            ));
+        }
+    }
+    // Coverage: every unit in exactly one part.
+    let what = unit_name(first.method);
+    let all = format!("{} parts", parts.len());
+    let mut order: Vec<usize> = (0..parts.len())
+        .filter(|&i| !parts[i].1.range.is_empty())
+        .collect();
+    order.sort_by_key(|&i| (parts[i].1.range.start, parts[i].1.range.end, i));
+    let mut missing = Vec::new();
+    let mut next = 0;
+    let mut holder: Option<usize> = None;
+    for &i in &order {
+        let r = &parts[i].1.range;
+        if r.start < next {
+            let a = holder.map_or_else(String::new, |h| parts[h].0.clone());
+            return Err(fail(
+                &all,
+                PartError::Overlap {
+                    what,
+                    start: r.start,
+                    end: next.min(r.end),
+                    a,
+                    b: parts[i].0.clone(),
+                },
+            ));
+        }
+        if r.start > next {
+            missing.push(format!("{next}..{}", r.start));
+        }
+        next = r.end;
+        holder = Some(i);
+    }
+    if next < first.units {
+        missing.push(format!("{next}..{}", first.units));
+    }
+    if !missing.is_empty() {
+        return Err(fail(
+            &all,
+            PartError::Missing {
+                what,
+                missing: missing.join(", "),
+                units: first.units,
+            },
+        ));
+    }
+    if let Some(n) = samples {
+        if n != first.samples && Some(n) != first.samples_asked {
+            return Err(fail(
+                &all,
+                PartError::Samples {
+                    expected: n,
+                    found: first.samples,
+                },
+            ));
+        }
+    }
+    // The problem, read again from the part, must be the study's.
+    let problem = crate::problem::parse(&first.problem, &first.origin).map_err(|e| {
+        fail(
+            first_name,
+            PartError::Problem {
+                origin: first.origin.clone(),
+                message: e.to_string(),
+            },
+        )
+    })?;
+    let options = UncertaintyOptions {
+        method: first.method,
+        samples: Some(first.samples_asked.unwrap_or(first.samples)),
+        seed: Some(first.seed),
+    };
+    let s = setup(&problem, &first.origin, &options)?;
+    let computed = s.fingerprint();
+    if computed != first.fingerprint {
+        return Err(fail(
+            first_name,
+            PartError::Reproduce {
+                computed,
+                carried: first.fingerprint.clone(),
+            },
+        ));
+    }
+    let mut parts = parts;
+    parts.sort_by_key(|(_, p)| p.range.start);
+    let points: Vec<Point> = parts.into_iter().flat_map(|(_, p)| p.points).collect();
+    Ok(analyse(&s, points, &super::Quiet))
 }
 
 /// The value of an input at the nominal scene (SI), for reports.

@@ -92,7 +92,9 @@ wearopt asperity --tabor 3 --from -1.2 --to 1 --points 45 --format csv --plot as
         after_help = "Every index, percentile and probability comes with its 95 % interval or its status.\n\
 Example:\n  wearopt uncertainty problems/micro-gear-scatter.toml\n  \
 wearopt uncertainty problems/micro-gear-scatter.toml --method reliability --format json\n  \
-wearopt uncertainty problems/micro-gear-scatter.toml --method sampling --samples 8192 --format html --out scatter.html"
+wearopt uncertainty problems/micro-gear-scatter.toml --method sampling --samples 8192 --format html --out scatter.html\n  \
+wearopt uncertainty problems/micro-gear-scatter.toml --shard 2/8 --out part-2.json   (then: wearopt merge part-*.json)\n\n\
+Under a Slurm job array, the shard comes from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT when --shard is absent."
     )]
     Uncertainty(uncertainty::UncertaintyArgs),
     /// Search the design variables of a study for the least wear under its constraints.
@@ -132,8 +134,11 @@ wearopt merge part-*.csv --samples 1000000 > sweep.csv\n\n\
 Under a Slurm job array, the shard comes from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT when --shard is absent."
     )]
     Sweep(sweep::SweepArgs),
-    /// Join the shard outputs of one sweep (CSV or JSON) into the output of the unsharded run, byte for byte.
-    #[command(after_help = "Example:\n  wearopt merge part-*.csv --samples 1000000 > sweep.csv")]
+    /// Join the shard outputs of one sweep (CSV or JSON), or the parts of one uncertainty study, into the output of the unsharded run, byte for byte.
+    #[command(
+        after_help = "Example:\n  wearopt merge part-*.csv --samples 1000000 > sweep.csv\n  \
+wearopt merge uq-part-*.json --format html --out scatter.html   (the parts of wearopt uncertainty --shard I/N)"
+    )]
     Merge(sweep::MergeArgs),
     /// Roughness from a measured height map: spectral moments, the McCool σ, R and N for [roughness], a summit count, the PSD.
     #[command(

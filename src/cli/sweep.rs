@@ -58,16 +58,25 @@ pub struct SweepArgs {
 /// Arguments of `wearopt merge`.
 #[derive(Debug, clap::Args)]
 pub struct MergeArgs {
-    /// The shard outputs of one sweep (any order).
+    /// The shard outputs of one sweep, or the parts of one uncertainty study
+    /// (any order).
     #[arg(required = true, value_name = "PARTS")]
     pub parts: Vec<PathBuf>,
     /// Check that the parts hold exactly this many rows (CSV parts cannot tell a
-    /// missing last shard otherwise; JSON parts carry it).
+    /// missing last shard otherwise; JSON parts carry it), or that the
+    /// uncertainty study is of this many samples.
     #[arg(long)]
     pub samples: Option<u64>,
+    /// Uncertainty parts: the format of the report (default text). Sweep
+    /// parts are joined in their own format (csv or json), which this must name if given.
+    #[arg(long, value_parser = super::format::formats("merge", wearopt::report::uncertainty::FORMATS))]
+    pub format: Option<wearopt::report::Format>,
+    /// Write the merged output to this file instead of stdout ("-": stdout).
+    #[arg(long, value_name = "PATH")]
+    pub out: Option<PathBuf>,
 }
 
-fn parse_shard(text: &str) -> Result<Shard> {
+pub(crate) fn parse_shard(text: &str) -> Result<Shard> {
     let bad = || {
         usage(format!(
             "--shard {text}: expected I/N with 0 <= I < N, e.g. --shard 0/4"
@@ -82,7 +91,7 @@ fn parse_shard(text: &str) -> Result<Shard> {
 }
 
 /// The shard from Slurm's job-array variables, if they are set.
-fn slurm_shard() -> Result<Option<Shard>> {
+pub(crate) fn slurm_shard() -> Result<Option<Shard>> {
     let var = |name: &str| -> Result<Option<u64>> {
         match std::env::var(name) {
             Ok(v) if !v.trim().is_empty() => v.trim().parse().map(Some).map_err(|_| {
@@ -257,26 +266,63 @@ fn write_map(
     )
 }
 
-/// Runs `wearopt merge`.
+/// Runs `wearopt merge`: uncertainty parts when the first part is one, else
+/// sweep parts.
 pub fn merge(args: MergeArgs) -> Result<ExitCode> {
+    let out_path = args.out.as_deref().filter(|p| p.as_os_str() != "-");
+    if args
+        .parts
+        .first()
+        .is_some_and(|p| super::uncertainty::is_part_file(p))
+    {
+        return super::uncertainty::merge(&args.parts, args.samples, args.format, out_path);
+    }
     let read =
         |p: &Path| std::fs::read_to_string(p).map_err(|e| usage(format!("{}: {e}", p.display())));
     let fail = |p: &Path, e: MergeError| usage(format!("{}: {e}", p.display()));
     // First pass: check every part and find its place; one file in memory at a time.
     let mut order = Vec::with_capacity(args.parts.len());
+    let mut encoding = None;
     for (i, path) in args.parts.iter().enumerate() {
         let text = read(path)?;
+        if wearopt::report::uncertainty::is_part(&text) {
+            return Err(usage(format!(
+                "{}: an uncertainty part among the parts of a sweep: merge the parts of one run at a time",
+                path.display()
+            )));
+        }
         let part = out::parse_part(&text).map_err(|e| fail(path, e))?;
+        encoding.get_or_insert(part.format);
         order.push((out::sort_key(&part), i));
     }
     order.sort();
-    let mut stdout = std::io::BufWriter::new(std::io::stdout().lock());
+    if let (Some(format), Some(encoding)) = (args.format, encoding) {
+        if Encoding::of(format) != Some(encoding) {
+            return Err(usage(format!(
+                "--format {}: sweep parts are joined in their own format ({}), not converted",
+                format.as_str(),
+                match encoding {
+                    Encoding::Csv => "csv",
+                    Encoding::Json => "json",
+                }
+            )));
+        }
+    }
+    let mut stdout: Box<dyn Write> = match out_path {
+        Some(path) => Box::new(std::io::BufWriter::new(
+            std::fs::File::create(path).map_err(|e| super::unwritable(path, "the merge", &e))?,
+        )),
+        None => Box::new(std::io::BufWriter::new(std::io::stdout().lock())),
+    };
     let mut merger = None;
     let mut write = |text: &str| -> Result<bool> {
         match stdout.write_all(text.as_bytes()) {
             Ok(()) => Ok(true),
             Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(false),
-            Err(e) => Err(e).context("writing to stdout"),
+            Err(e) => Err(e).context(match out_path {
+                Some(p) => format!("writing to {}", p.display()),
+                None => "writing to stdout".to_string(),
+            }),
         }
     };
     for &(_, i) in &order {

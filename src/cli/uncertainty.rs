@@ -1,17 +1,18 @@
-//! `wearopt uncertainty`: the scene under the scatter of its `[uncertainty]` inputs.
+//! `wearopt uncertainty`: the scene under the scatter of its `[uncertainty]`
+//! inputs, whole or one shard of it; and `wearopt merge` of the shards' parts.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::Result;
 use clap::Args;
 
-use wearopt::app::uncertainty::{self as uq, Analysis, UncertaintyOptions};
-use wearopt::app::{self, OptionName};
+use wearopt::app::uncertainty::{self as uq, Analysis, UncertaintyDocument, UncertaintyOptions};
+use wearopt::app::{self, OptionName, Problem};
 use wearopt::report::{self, Format};
 
 use super::format::formats;
-use super::{progress, write_output};
+use super::{progress, usage, write_output};
 
 #[derive(Debug, Args)]
 pub(crate) struct UncertaintyArgs {
@@ -28,17 +29,34 @@ pub(crate) struct UncertaintyArgs {
     /// The seed of the scrambled sequences and the bootstrap (overrides [uncertainty] seed).
     #[arg(long)]
     seed: Option<u64>,
-    /// Output format.
-    #[arg(long, value_parser = formats("uncertainty", report::uncertainty::FORMATS), default_value = "text")]
-    format: Format,
-    /// Write the report to this file instead of stdout ("-": stdout).
+    /// Run only part I of N (I = 0 … N−1) and write it as a part (JSON) for
+    /// `wearopt merge`. Default: from SLURM_ARRAY_TASK_ID and
+    /// SLURM_ARRAY_TASK_COUNT (and _MIN, _STEP) when set, else the whole study.
+    /// Not with reliability (sequential).
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
+    /// Output format (default text). A shard writes its part as JSON whatever
+    /// is asked here but json: give the format to `wearopt merge`.
+    #[arg(long, value_parser = formats("uncertainty", report::uncertainty::FORMATS))]
+    format: Option<Format>,
+    /// Write the report (or the part) to this file instead of stdout ("-": stdout).
     #[arg(long, value_name = "PATH")]
     out: Option<PathBuf>,
 }
 
 pub(crate) fn run(args: UncertaintyArgs) -> Result<ExitCode> {
     let method = uq::method(OptionName("method"), &args.method)?;
-    let problem = app::load(&args.file)?;
+    let shard = match &args.shard {
+        Some(s) => Some((super::sweep::parse_shard(s)?, false)),
+        None => super::sweep::slurm_shard()?.map(|s| (s, true)),
+    };
+    let options = UncertaintyOptions {
+        method,
+        samples: args.samples,
+        seed: args.seed,
+    };
+    let origin = args.file.display().to_string();
+    let out = args.out.as_deref().unwrap_or(Path::new("-"));
     let bar = progress::Bar(progress::bar(
         Some(0),
         match method {
@@ -47,25 +65,67 @@ pub(crate) fn run(args: UncertaintyArgs) -> Result<ExitCode> {
             _ => "samples",
         },
     ));
-    let doc = uq::uncertainty(
-        &problem,
-        &args.file.display().to_string(),
-        &UncertaintyOptions {
-            method,
-            samples: args.samples,
-            seed: args.seed,
-        },
-        &bar,
-    )?;
+    if let Some((shard, from_slurm)) = shard {
+        let whence = if from_slurm {
+            format!(
+                "SLURM_ARRAY_TASK_ID makes this run shard {}/{} of a job array",
+                shard.index, shard.count
+            )
+        } else {
+            format!("--shard {}/{}", shard.index, shard.count)
+        };
+        if let Some(f) = args.format.filter(|&f| f != Format::Json) {
+            return Err(usage(format!(
+                "{whence}: a shard writes a part (JSON) for `wearopt merge`, not --format {}; give the format to the merge (wearopt merge PARTS... --format {})",
+                f.as_str(),
+                f.as_str()
+            )));
+        }
+        if from_slurm && method == uq::Method::Reliability {
+            return Err(usage(format!(
+                "{whence}, but reliability cannot be sharded (each FORM step and importance-sampling round depends on the last): run it outside the array, or with SLURM_ARRAY_TASK_ID unset"
+            )));
+        }
+        let (problem, source) = load_with_text(&args.file)?;
+        let part = uq::uncertainty_part(&problem, &origin, &source, &options, shard, &bar)?;
+        if let Some(b) = &bar.0 {
+            b.finish_and_clear();
+        }
+        write_output(out, &report::uncertainty::part_json(&part), "the part")?;
+        return Ok(ExitCode::SUCCESS);
+    }
+    let problem = app::load(&args.file)?;
+    let doc = uq::uncertainty(&problem, &origin, &options, &bar)?;
     if let Some(b) = &bar.0 {
         b.finish_and_clear();
     }
-    let text = report::uncertainty::render(&doc, args.format)?;
-    write_output(
-        args.out.as_deref().unwrap_or(std::path::Path::new("-")),
-        &text,
-        "the report",
-    )?;
+    write_document(&doc, args.format, out)
+}
+
+/// The problem and its text, as parsed.
+fn load_with_text(path: &Path) -> Result<(Problem, String)> {
+    match std::fs::read(path).map(String::from_utf8) {
+        Ok(Ok(text)) => {
+            let problem = app::parse(&text, &path.display().to_string())?;
+            Ok((problem, text))
+        }
+        // Not readable, or not UTF-8: the loader's words for it.
+        _ => {
+            let problem = app::load(path)?;
+            let text = std::fs::read_to_string(path)?;
+            Ok((problem, text))
+        }
+    }
+}
+
+/// Renders the document to `out`; exit code 1 when no event has a probability.
+fn write_document(
+    doc: &UncertaintyDocument,
+    format: Option<Format>,
+    out: &Path,
+) -> Result<ExitCode> {
+    let text = report::uncertainty::render(doc, format.unwrap_or(Format::Text))?;
+    write_output(out, &text, "the report")?;
     // No usable result: every event without a probability.
     let failed = match &doc.analysis {
         Analysis::Reliability(events) => events
@@ -78,4 +138,36 @@ pub(crate) fn run(args: UncertaintyArgs) -> Result<ExitCode> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// `wearopt merge` of uncertainty parts: the unsharded run's report, in `format`
+/// (default text) to `out` (default stdout).
+pub(crate) fn merge(
+    paths: &[PathBuf],
+    samples: Option<u64>,
+    format: Option<Format>,
+    out: Option<&Path>,
+) -> Result<ExitCode> {
+    let mut parts = Vec::with_capacity(paths.len());
+    for path in paths {
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| usage(format!("{name}: {e}")))?;
+        let part = report::uncertainty::parse_part(&text).map_err(|error| app::AppError::Part {
+            origin: name.clone(),
+            error,
+        })?;
+        parts.push((name, part));
+    }
+    let doc = uq::merge(parts, samples)?;
+    write_document(&doc, format, out.unwrap_or(Path::new("-")))
+}
+
+/// Whether the file holds an uncertainty part (it is merged as one).
+pub(crate) fn is_part_file(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = [0u8; 256];
+    let n = std::fs::File::open(path)
+        .and_then(|mut f| f.read(&mut head))
+        .unwrap_or(0);
+    report::uncertainty::is_part(&String::from_utf8_lossy(&head[..n]))
 }

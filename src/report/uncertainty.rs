@@ -10,9 +10,13 @@ use serde_json::{json, Value};
 use super::format::FormatError;
 use super::svg::{escape, Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp, Format};
-use crate::app::uncertainty::{Analysis, Method, OutputInfo, UncertaintyDocument};
+use crate::app::uncertainty::{
+    Analysis, Cause, Method, OutputInfo, PartError, UncertaintyDocument, UncertaintyPart,
+    PART_MARKER,
+};
 use crate::model::Quantity;
 use crate::problem::{Event, UncertainInput};
+use crate::sweep::Shard;
 use crate::units::{format_quantity, Dimension};
 use crate::uq::distribution::Distribution;
 use crate::uq::reliability::{EventResult, EventStatus, SamplingMethod};
@@ -1133,5 +1137,158 @@ pub fn render(doc: &UncertaintyDocument, format: Format) -> Result<String, Forma
         Format::Csv => csv(doc),
         Format::Json => json(doc),
         Format::Html => html(doc),
+    })
+}
+
+// ---------------------------------------------------------------- shards
+
+/// A part (`wearopt uncertainty FILE --shard I/N`) as JSON: the marker
+/// `"wearopt": "uncertainty part"` first, the study (fingerprint, version, name,
+/// method, samples, samples_asked, seed), the shard, `units` and the `range` of
+/// them it holds, `points_per_unit`, `outputs`, the problem (`origin`, `problem`:
+/// its text), then `points`, one line each: a value per output, or the name of
+/// the cause of its absence (`separated`, `not_converged`, `out_of_range`,
+/// `undefined`). Values are written in the fewest digits that read back to the
+/// same bits.
+pub fn part_json(part: &UncertaintyPart) -> String {
+    let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
+    let mut out = format!(
+        "{{\n  \"wearopt\": {},\n  \"fingerprint\": {},\n  \"version\": {},\n  \"name\": {},\n  \"method\": {},\n  \"samples\": {},\n  \"samples_asked\": {},\n  \"seed\": {},\n  \"shard\": {},\n  \"units\": {},\n  \"range\": [{}, {}],\n  \"points_per_unit\": {},\n  \"outputs\": {},\n  \"origin\": {},\n  \"problem\": {},\n  \"points\": [",
+        s(json!(PART_MARKER)),
+        s(json!(part.fingerprint)),
+        s(json!(part.version)),
+        s(json!(part.name)),
+        s(json!(part.method.as_str())),
+        part.samples,
+        s(json!(part.samples_asked)),
+        part.seed,
+        s(json!(format!("{}/{}", part.shard.index, part.shard.count))),
+        part.units,
+        part.range.start,
+        part.range.end,
+        part.points_per_unit,
+        s(json!(part.outputs)),
+        s(json!(part.origin)),
+        s(json!(part.problem)),
+    );
+    for (k, point) in part.points.iter().enumerate() {
+        out.push_str(if k == 0 { "\n    [" } else { ",\n    [" });
+        for (o, v) in point.iter().enumerate() {
+            if o > 0 {
+                out.push(',');
+            }
+            match v {
+                Ok(x) => out.push_str(&s(json!(x))),
+                Err(c) => out.push_str(&s(json!(c.as_str()))),
+            }
+        }
+        out.push(']');
+    }
+    out.push_str(if part.points.is_empty() {
+        "]\n}\n"
+    } else {
+        "\n  ]\n}\n"
+    });
+    out
+}
+
+/// True when `text` looks like a part: a JSON object whose first key is
+/// `wearopt` ([`parse_part`] checks the rest).
+pub fn is_part(text: &str) -> bool {
+    text.trim_start_matches('\u{feff}')
+        .trim_start()
+        .strip_prefix('{')
+        .is_some_and(|rest| rest.trim_start().starts_with("\"wearopt\""))
+}
+
+/// Reads a part written by [`part_json`] (or the same object with other
+/// spacing or key order, as Python's `json.dumps` of the dict writes it).
+pub fn parse_part(text: &str) -> Result<UncertaintyPart, PartError> {
+    let bad = |m: String| PartError::NotAPart(m);
+    let v: Value = serde_json::from_str(text.trim_start_matches('\u{feff}'))
+        .map_err(|e| bad(format!("not JSON ({e})")))?;
+    let o = v
+        .as_object()
+        .ok_or_else(|| bad("not a JSON object".into()))?;
+    if o.get("wearopt").and_then(Value::as_str) != Some(PART_MARKER) {
+        return Err(bad(format!(
+            "no \"wearopt\": \"{PART_MARKER}\" key (a sweep part? those merge apart)"
+        )));
+    }
+    let field = |key: &str| o.get(key).ok_or_else(|| bad(format!("no \"{key}\"")));
+    let text_of = |key: &str| -> Result<String, PartError> {
+        field(key)?
+            .as_str()
+            .map(str::to_string)
+            .ok_or_else(|| bad(format!("\"{key}\" is not a string")))
+    };
+    let int = |v: &Value, key: &str| -> Result<u64, PartError> {
+        v.as_u64()
+            .ok_or_else(|| bad(format!("\"{key}\" is not a non-negative integer")))
+    };
+    let method_name = text_of("method")?;
+    let method = Method::ALL
+        .into_iter()
+        .find(|m| m.as_str() == method_name)
+        .ok_or_else(|| bad(format!("\"method\": unknown {method_name:?}")))?;
+    let shard = text_of("shard")?;
+    let shard = shard
+        .split_once('/')
+        .and_then(|(i, n)| Shard::new(i.parse().ok()?, n.parse().ok()?).ok())
+        .ok_or_else(|| bad(format!("\"shard\": {shard:?} is not I/N with I < N")))?;
+    let range = match field("range")?.as_array().map(Vec::as_slice) {
+        Some([a, b]) => int(a, "range")?..int(b, "range")?,
+        _ => return Err(bad("\"range\" is not [start, end]".into())),
+    };
+    let samples_asked = match field("samples_asked")? {
+        Value::Null => None,
+        v => Some(int(v, "samples_asked")?),
+    };
+    let outputs = field("outputs")?
+        .as_array()
+        .and_then(|a| {
+            a.iter()
+                .map(|v| v.as_str().map(str::to_string))
+                .collect::<Option<Vec<_>>>()
+        })
+        .ok_or_else(|| bad("\"outputs\" is not a list of names".into()))?;
+    let value = |v: &Value| -> Option<Result<f64, Cause>> {
+        match v {
+            Value::Number(n) => n.as_f64().map(Ok),
+            Value::String(c) => Cause::named(c).map(Err),
+            _ => None,
+        }
+    };
+    let points = field("points")?
+        .as_array()
+        .ok_or_else(|| bad("\"points\" is not a list".into()))?
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            p.as_array()
+                .and_then(|vs| vs.iter().map(value).collect::<Option<Vec<_>>>())
+                .ok_or_else(|| {
+                    bad(format!(
+                        "point {k} is not a list of numbers and causes (separated, not_converged, out_of_range, undefined)"
+                    ))
+                })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(UncertaintyPart {
+        fingerprint: text_of("fingerprint")?,
+        version: text_of("version")?,
+        name: text_of("name")?,
+        method,
+        samples: int(field("samples")?, "samples")?,
+        samples_asked,
+        seed: int(field("seed")?, "seed")?,
+        shard,
+        units: int(field("units")?, "units")?,
+        range,
+        points_per_unit: int(field("points_per_unit")?, "points_per_unit")? as usize,
+        outputs,
+        origin: text_of("origin")?,
+        problem: text_of("problem")?,
+        points,
     })
 }

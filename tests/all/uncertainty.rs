@@ -361,3 +361,280 @@ fn every_format_and_the_rounding_note() {
         }
     }
 }
+
+// ---------------------------------------------------------------- shards
+
+/// A fresh directory for one test's parts.
+fn part_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("wearopt-uq-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Writes the parts of `--shard i/3` (i = 0, 1, 2) of the shipped study; their paths.
+fn three_parts(dir: &std::path::Path, method: &str, samples: &str) -> Vec<std::path::PathBuf> {
+    (0..3)
+        .map(|i| {
+            let path = dir.join(format!("{method}-{i}.json"));
+            stdout(
+                wearopt().args([
+                    "uncertainty",
+                    SCATTER,
+                    "--method",
+                    method,
+                    "--samples",
+                    samples,
+                    "--shard",
+                    &format!("{i}/3"),
+                    "--out",
+                    path.to_str().unwrap(),
+                ]),
+                0,
+            );
+            path
+        })
+        .collect()
+}
+
+/// Merged shards (given out of order) are the unsharded run, byte for byte, in
+/// every format, for each method that shards; a Slurm job-array task writes the
+/// part `--shard` writes.
+#[test]
+fn merged_shards_equal_the_unsharded_run() {
+    let dir = part_dir("merge");
+    // 100 is rounded up to 128 by Sobol′ (samples_asked must survive the merge);
+    // Morris takes ⌈100 / 6⌉ = 17 trajectories.
+    for method in ["sobol", "sampling", "morris"] {
+        let parts = three_parts(&dir, method, "100");
+        for format in ["json", "text", "csv", "html"] {
+            let whole = stdout(
+                wearopt().args([
+                    "uncertainty",
+                    SCATTER,
+                    "--method",
+                    method,
+                    "--samples",
+                    "100",
+                    "--format",
+                    format,
+                ]),
+                0,
+            );
+            let merged = stdout(
+                wearopt()
+                    .arg("merge")
+                    .args([&parts[2], &parts[0], &parts[1]])
+                    .args(["--format", format]),
+                0,
+            );
+            assert!(
+                merged == whole,
+                "{method} {format}: merged shards differ from the unsharded run:\n{}",
+                String::from_utf8_lossy(&merged)
+            );
+        }
+        // The default format is the unsharded command's: text.
+        let text = stdout(wearopt().arg("merge").args(&parts), 0);
+        assert!(String::from_utf8(text)
+            .unwrap()
+            .contains("Polysilicon micro-gear hub"));
+        let part: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(&parts[1]).unwrap()).unwrap();
+        assert_eq!(part["wearopt"], "uncertainty part");
+        assert_eq!(part["shard"], "1/3");
+        let slurm = stdout(
+            wearopt()
+                .args([
+                    "uncertainty",
+                    SCATTER,
+                    "--method",
+                    method,
+                    "--samples",
+                    "100",
+                ])
+                .env("SLURM_ARRAY_TASK_ID", "2")
+                .env("SLURM_ARRAY_TASK_MIN", "1")
+                .env("SLURM_ARRAY_TASK_COUNT", "3"),
+            0,
+        );
+        assert_eq!(slurm, std::fs::read(&parts[1]).unwrap(), "{method}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A part of another study (another seed) is refused naming the file and both
+/// fingerprints; a missing part, and one given twice, naming the ranges; a
+/// sweep's part among them; --samples that is not the study's.
+#[test]
+fn merge_refuses_foreign_missing_and_doubled_parts() {
+    let dir = part_dir("refuse");
+    let parts = three_parts(&dir, "sampling", "64");
+    let foreign = dir.join("foreign.json");
+    stdout(
+        wearopt().args([
+            "uncertainty",
+            SCATTER,
+            "--method",
+            "sampling",
+            "--samples",
+            "64",
+            "--seed",
+            "2",
+            "--shard",
+            "1/3",
+            "--out",
+            foreign.to_str().unwrap(),
+        ]),
+        0,
+    );
+    let print = |p: &std::path::Path| -> String {
+        let v: serde_json::Value = serde_json::from_slice(&std::fs::read(p).unwrap()).unwrap();
+        v["fingerprint"].as_str().unwrap().to_string()
+    };
+    let err = String::from_utf8(stderr(
+        wearopt()
+            .arg("merge")
+            .args([&parts[0], &foreign, &parts[2]]),
+        2,
+    ))
+    .unwrap();
+    assert!(err.contains("foreign.json"), "{err}");
+    assert!(err.contains(&print(&foreign)), "{err}");
+    assert!(err.contains(&print(&parts[0])), "{err}");
+
+    // Shard 1/3 of 64 samples holds 21..42.
+    let err = String::from_utf8(stderr(
+        wearopt().arg("merge").args([&parts[2], &parts[0]]),
+        2,
+    ))
+    .unwrap();
+    assert!(
+        err.contains("samples 21..42") && err.contains("missing"),
+        "{err}"
+    );
+    let err = String::from_utf8(stderr(wearopt().arg("merge").args([&parts[0]]), 2)).unwrap();
+    assert!(err.contains("samples 21..64"), "{err}");
+    let err = String::from_utf8(stderr(
+        wearopt()
+            .arg("merge")
+            .args([&parts[0], &parts[1], &parts[1], &parts[2]]),
+        2,
+    ))
+    .unwrap();
+    assert!(err.contains("21..42 are in both"), "{err}");
+
+    let err = String::from_utf8(stderr(
+        wearopt()
+            .arg("merge")
+            .args(&parts)
+            .args(["--samples", "65"]),
+        2,
+    ))
+    .unwrap();
+    assert!(err.contains("64 samples, not 65"), "{err}");
+
+    // A part cut short.
+    let text = std::fs::read_to_string(&parts[1]).unwrap();
+    let cut = dir.join("cut.json");
+    let at = text.rfind(",\n    [").unwrap();
+    std::fs::write(&cut, format!("{}\n  ]\n}}\n", &text[..at])).unwrap();
+    let err = String::from_utf8(stderr(
+        wearopt().arg("merge").args([&parts[0], &cut, &parts[2]]),
+        2,
+    ))
+    .unwrap();
+    assert!(
+        err.contains("cut.json") && err.contains("cut short"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Reliability is sequential: --shard (or a Slurm array task) is refused with
+/// exit 2, and so is a shard asked for a report format.
+#[test]
+fn shard_refuses_reliability_and_report_formats() {
+    let err = String::from_utf8(stderr(
+        wearopt().args([
+            "uncertainty",
+            SCATTER,
+            "--method",
+            "reliability",
+            "--shard",
+            "0/2",
+        ]),
+        2,
+    ))
+    .unwrap();
+    assert!(
+        err.contains("--shard 0/2") && err.contains("reliability cannot be sharded"),
+        "{err}"
+    );
+    let err = String::from_utf8(stderr(
+        wearopt()
+            .args(["uncertainty", SCATTER, "--method", "reliability"])
+            .env("SLURM_ARRAY_TASK_ID", "0")
+            .env("SLURM_ARRAY_TASK_COUNT", "2"),
+        2,
+    ))
+    .unwrap();
+    assert!(
+        err.contains("SLURM_ARRAY_TASK_ID") && err.contains("cannot be sharded"),
+        "{err}"
+    );
+    let err = String::from_utf8(stderr(
+        wearopt().args([
+            "uncertainty",
+            SCATTER,
+            "--samples",
+            "64",
+            "--shard",
+            "0/2",
+            "--format",
+            "html",
+        ]),
+        2,
+    ))
+    .unwrap();
+    assert!(
+        err.contains("wearopt merge") && err.contains("--format html"),
+        "{err}"
+    );
+}
+
+/// In the library: the parts of any number of shards (more than there are
+/// units: some empty), read back from their JSON, merge into the document of
+/// the unsharded run.
+#[test]
+fn parts_of_any_count_merge_into_the_document() {
+    use wearopt::app::uncertainty::{merge, uncertainty_part};
+    use wearopt::report::uncertainty::{is_part, parse_part, part_json};
+    let source = std::fs::read_to_string(SCATTER).unwrap();
+    let problem = parse(&source, SCATTER).unwrap();
+    for method in [Method::Sobol, Method::Morris, Method::Sampling] {
+        let options = UncertaintyOptions {
+            method,
+            samples: Some(64),
+            seed: Some(3),
+        };
+        let whole = uncertainty(&problem, SCATTER, &options, &Quiet).unwrap();
+        for count in [1, 2, 5, 70] {
+            let parts: Vec<_> = (0..count)
+                .rev()
+                .map(|i| {
+                    let shard = wearopt::sweep::Shard::new(i, count).unwrap();
+                    let part =
+                        uncertainty_part(&problem, SCATTER, &source, &options, shard, &Quiet)
+                            .unwrap();
+                    let text = part_json(&part);
+                    assert!(is_part(&text));
+                    let back = parse_part(&text).unwrap();
+                    assert_eq!(back, part, "{method:?} {i}/{count}: the JSON reads back");
+                    (format!("part {i}"), back)
+                })
+                .collect();
+            let merged = merge(parts, None).unwrap();
+            assert_eq!(merged, whole, "{method:?} in {count} shards");
+        }
+    }
+}
