@@ -8,10 +8,10 @@ use anyhow::Result;
 use clap::Args;
 
 use wearopt::app::contact::{self as ct, ContactOptions};
+use wearopt::app::quantity::OptionQuantity as Q;
 use wearopt::app::roughness as rough;
 use wearopt::app::OptionName;
 use wearopt::report::{self, Format};
-use wearopt::units::Dimension;
 
 use super::format::formats;
 use super::roughness::LevelArg;
@@ -96,17 +96,17 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         .as_deref()
         .map(|t| rough::height_unit(OptionName("height_unit"), t))
         .transpose()?;
-    let modulus = ct::positive(OptionName("modulus"), &args.modulus, Dimension::Pressure)?;
+    let modulus = ct::positive(OptionName("modulus"), &args.modulus, Q::Modulus)?;
     let pressures = ct::pressures(OptionName("pressure"), &args.pressure)?;
     let hardness = args
         .hardness
         .as_deref()
-        .map(|t| ct::positive(OptionName("hardness"), t, Dimension::Pressure))
+        .map(|t| ct::positive(OptionName("hardness"), t, Q::Hardness))
         .transpose()?;
     let adhesion = match (&args.work_of_adhesion, &args.adhesion_range) {
         (Some(w), Some(r)) => Some(ct::AdhesionOptions {
-            work: ct::positive(OptionName("work_of_adhesion"), w, Dimension::SurfaceEnergy)?,
-            range: ct::positive(OptionName("adhesion_range"), r, Dimension::Length)?,
+            work: ct::positive(OptionName("work_of_adhesion"), w, Q::WorkOfAdhesion)?,
+            range: ct::positive(OptionName("adhesion_range"), r, Q::AttractionRange)?,
             coarse_grain: args.coarse_grain,
         }),
         _ => None,
@@ -156,5 +156,10 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         }
     }
     super::print_out(&report::contact::render(&doc, args.format)?)?;
-    Ok(ExitCode::SUCCESS)
+    // A row that is not a solution is no usable result (the report says which).
+    Ok(if doc.failed() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }
