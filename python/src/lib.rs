@@ -128,14 +128,14 @@ fn humidity_json(
     py: Python<'_>,
     source: String,
     is_path: bool,
-    from_: f64,
-    to: f64,
+    from_: String,
+    to: String,
     points: usize,
 ) -> PyResult<String> {
     detached(py, || {
         let options = app::humidity::HumidityOptions {
-            from: from_,
-            to,
+            from: app::humidity::relative_humidity(OptionName("from"), &from_).map_err(words)?,
+            to: app::humidity::relative_humidity(OptionName("to"), &to).map_err(words)?,
             points,
         };
         options.validate().map_err(words)?;

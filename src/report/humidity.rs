@@ -199,7 +199,7 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
             .filter_map(|r| {
                 let d = dry.filter(|d| *d > 0.0)?;
                 let x = v(r)? / d;
-                (x > 0.0 && x.is_finite()).then_some((r.relative_humidity, x))
+                (x > 0.0 && x.is_finite()).then_some((100.0 * r.relative_humidity, x))
             })
             .collect()
     };
@@ -207,7 +207,7 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
     let pull = ratio(|r| r.pull_off_force, doc.dry_pull_off_force);
     let mut plot = LinePlot::new(
         format!("Adhesion against humidity — {}", doc.name),
-        Axis::linear("relative humidity RH"),
+        Axis::linear("relative humidity RH").with_unit("%"),
         Axis::log("ratio to dry air"),
     );
     plot = plot.with_series(Series::new(
@@ -232,11 +232,18 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
             plot = plot.with_series(
                 Series::new(
                     format!(
-                        "threshold RH = {} (Γ = {} Γ_dry)",
-                        if t >= 1e-3 { sig(t, 4) } else { sig_exp(t, 3) },
+                        "threshold RH = {} % (Γ = {} Γ_dry)",
+                        if t >= 1e-3 {
+                            sig(100.0 * t, 4)
+                        } else {
+                            sig_exp(100.0 * t, 3)
+                        },
                         THRESHOLD_RATIO
                     ),
-                    vec![(t, lo.min(THRESHOLD_RATIO)), (t, hi.max(THRESHOLD_RATIO))],
+                    vec![
+                        (100.0 * t, lo.min(THRESHOLD_RATIO)),
+                        (100.0 * t, hi.max(THRESHOLD_RATIO)),
+                    ],
                 )
                 .with_marker(super::svg::Marker::None),
             );

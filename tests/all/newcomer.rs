@@ -154,3 +154,87 @@ fn a_contact_row_that_is_not_a_solution_exits_1() {
     let text = String::from_utf8(out).unwrap();
     assert!(text.contains("not a solution"), "{text}");
 }
+
+const HUMID: &str = "problems/micro-gear-humid.toml";
+
+/// A problem file takes `relative_humidity = "50 %"`; the command line took only
+/// fractions (`--from 0%` refused, `--to 90` "must lie in [0, 1)"). Both
+/// spellings now, the same numbers either way.
+#[test]
+fn humidity_flags_take_a_fraction_or_a_percentage() {
+    let run = |from: &str, to: &str| {
+        common::stdout(
+            wearopt().args([
+                "humidity", HUMID, "--from", from, "--to", to, "--points", "4", "--format", "json",
+            ]),
+            0,
+        )
+    };
+    let fractions = run("0", "0.9");
+    assert_eq!(run("0%", "90 %"), fractions);
+    assert_eq!(run("0 %", "0.9"), fractions);
+    // A bare 90 is most likely a percentage without its sign: refused, with the guess.
+    let e = stderr_of(
+        &[
+            "humidity", HUMID, "--from", "0", "--to", "90", "--points", "4",
+        ],
+        2,
+    );
+    assert!(e.contains("--to 90"), "{e}");
+    assert!(e.contains("did you mean \"90 %\"?"), "{e}");
+    // Out of range as a percentage too, named with both ranges.
+    let e = stderr_of(
+        &[
+            "humidity", HUMID, "--from", "0", "--to", "120%", "--points", "4",
+        ],
+        2,
+    );
+    assert!(e.contains("--to 1.2") && e.contains("[0 %, 100 %)"), "{e}");
+}
+
+/// One spelling shown: the table's "RH %" column and the plot's axis and
+/// threshold are all percentages (JSON and CSV stay fractions).
+#[test]
+fn the_humidity_page_shows_percentages_throughout() {
+    let dir = std::env::temp_dir().join(format!("wearopt-newcomer-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("humidity.svg");
+    let html = String::from_utf8(common::stdout(
+        wearopt().args([
+            "humidity",
+            HUMID,
+            "--from",
+            "0",
+            "--to",
+            "0.9",
+            "--points",
+            "4",
+            "--format",
+            "html",
+            "--plot",
+            svg.to_str().unwrap(),
+        ]),
+        0,
+    ))
+    .unwrap();
+    assert!(html.contains("RH %"), "the table's header");
+    for doc in [html, std::fs::read_to_string(&svg).unwrap()] {
+        assert!(
+            doc.contains("relative humidity RH (%)"),
+            "the axis in percent"
+        );
+        assert!(
+            doc.contains("threshold RH = 77.82 %"),
+            "the threshold in percent"
+        );
+    }
+    let json: serde_json::Value = serde_json::from_slice(&common::stdout(
+        wearopt().args([
+            "humidity", HUMID, "--from", "0", "--to", "0.9", "--points", "4", "--format", "json",
+        ]),
+        0,
+    ))
+    .unwrap();
+    assert_eq!(json["points"][3]["relative_humidity"], 0.9);
+    std::fs::remove_dir_all(&dir).ok();
+}

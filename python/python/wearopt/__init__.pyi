@@ -30,7 +30,7 @@ def asperity(
     """The JSON of `wearopt asperity --tabor MU --from D0 --to D1 --points N --format json` as a dict."""
     ...
 
-def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:
+def humidity(problem: Problem, from_: Union[float, str], to: Union[float, str], points: int) -> Dict[str, Any]:
     """The JSON of `wearopt humidity FILE --from RH0 --to RH1 --points N --format json` as a dict."""
     ...
 
