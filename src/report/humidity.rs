@@ -113,12 +113,14 @@ fn below_continuum(doc: &HumidityDocument, r: &HumidityRow) -> bool {
             .is_some_and(|c| r.relative_humidity < c)
 }
 
-/// The continuum limit in words, when a row lies below it.
+/// The continuum limit in words, when a row lies below it (the text and the page
+/// mark those rows with † and put it before these words; the JSON's `notes` holds
+/// them as they are).
 fn continuum_words(doc: &HumidityDocument) -> Option<String> {
     let c = doc.continuum_humidity?;
     doc.rows.iter().any(|r| below_continuum(doc, r)).then(|| {
         format!(
-            "† below RH = {} % the Kelvin radius is under 0.5 nm (a few molecules of liquid): the continuum Kelvin–Laplace picture is doubtful there; read those rows as estimates",
+            "below RH = {} % the Kelvin radius is under 0.5 nm (a few molecules of liquid): the continuum Kelvin–Laplace picture is doubtful there; read those rows as estimates",
             sig(100.0 * c, 4)
         )
     })
@@ -151,7 +153,7 @@ pub fn text(doc: &HumidityDocument) -> String {
     ));
     o.push_str(&format!("  {}\n", threshold_words(doc)));
     if let Some(c) = continuum_words(doc) {
-        o.push_str(&format!("  {c}\n"));
+        o.push_str(&format!("  † {c}\n"));
     }
     o.push('\n');
     o.push_str(&format!(
@@ -187,6 +189,7 @@ pub fn json(doc: &HumidityDocument) -> String {
         "threshold_humidity": doc.threshold_humidity,
         "continuum_humidity": doc.continuum_humidity,
         "points": doc.rows,
+        "notes": continuum_words(doc).into_iter().collect::<Vec<_>>(),
     }))
 }
 
@@ -260,6 +263,9 @@ pub fn html(doc: &HumidityDocument) -> String {
         &format!("{}.", capitalize(&threshold_words(doc))),
         Some("status"),
     );
+    if let Some(c) = continuum_words(doc) {
+        p.paragraph(&format!("† {}.", capitalize(&c)), Some("warn"));
+    }
     let rows: Vec<Vec<String>> = doc
         .rows
         .iter()

@@ -238,3 +238,65 @@ fn the_humidity_page_shows_percentages_throughout() {
     assert_eq!(json["points"][3]["relative_humidity"], 0.9);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `contact`'s "patches average fewer than 20 pixels" (the area is
+/// resolution-limited) was in the text only; now in the JSON's `notes` and on the
+/// page too, word for word.
+#[test]
+fn contact_caveats_reach_every_format() {
+    let run = |format: &str| {
+        String::from_utf8(common::stdout(
+            wearopt().args([
+                "contact",
+                MAP,
+                "--modulus",
+                "150GPa",
+                "--pressure",
+                "50MPa",
+                "--format",
+                format,
+            ]),
+            0,
+        ))
+        .unwrap()
+    };
+    let caveat = "the contact patches average fewer than 20 pixels";
+    assert!(run("text").contains(caveat));
+    assert!(run("html").contains(caveat), "the page");
+    let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    let notes = json["notes"].as_array().expect("a notes array");
+    assert!(
+        notes.iter().any(|n| n.as_str().unwrap().contains(caveat)),
+        "{notes:?}"
+    );
+}
+
+/// The humidity page marked rows "ok †" and never said what † means; the JSON had
+/// only the number (continuum_humidity). Both carry the words now.
+#[test]
+fn humidity_caveats_reach_every_format() {
+    let run = |format: &str| {
+        String::from_utf8(common::stdout(
+            wearopt().args([
+                "humidity", HUMID, "--from", "0", "--to", "0.95", "--points", "11", "--format",
+                format,
+            ]),
+            0,
+        ))
+        .unwrap()
+    };
+    let caveat = "the Kelvin radius is under 0.5 nm";
+    let html = run("html");
+    assert!(html.contains("ok †"), "a marked row");
+    assert!(
+        html.contains(&format!("† Below RH = 35.02 % {caveat}")),
+        "what † means"
+    );
+    let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    let notes = json["notes"].as_array().expect("a notes array");
+    assert!(
+        notes.iter().any(|n| n.as_str().unwrap().contains(caveat)),
+        "{notes:?}"
+    );
+    assert!(run("text").contains(&format!("† below RH = 35.02 % {caveat}")));
+}
