@@ -10,7 +10,7 @@ use clap::Args;
 use wearopt::app::contact::{self as ct, ContactOptions};
 use wearopt::app::quantity::OptionQuantity as Q;
 use wearopt::app::roughness as rough;
-use wearopt::app::OptionName;
+use wearopt::app::{AppError, OptionName};
 use wearopt::report::{self, Format};
 
 use super::format::formats;
@@ -78,7 +78,7 @@ pub(crate) struct ContactArgs {
     /// Write the plot of real area against pressure, both models, as SVG ("-": stdout).
     #[arg(long, value_name = "AREA.svg")]
     plot: Option<PathBuf>,
-    /// Write each pressure's pressure and gap fields as .npy into this folder
+    /// Write each pressure's pressure and gap fields as .npy into this folder (made if absent)
     /// (pressure_1.npy, gap_1.npy, … in the order of --pressure; Pa and m, shape (ny, nx));
     /// with adhesion also adhesive_pressure_1.npy, adhesive_gap_1.npy, ….
     #[arg(long, value_name = "DIR")]
@@ -111,13 +111,13 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         }),
         _ => None,
     };
+    // The folder is made as `figures --out` makes its own, before the solves.
     if let Some(dir) = &args.fields {
-        if !dir.is_dir() {
-            return Err(super::usage(format!(
-                "--fields {}: not a folder (create it first)",
-                dir.display()
-            )));
-        }
+        std::fs::create_dir_all(dir).map_err(|e| AppError::Output {
+            option: OptionName("fields"),
+            path: dir.display().to_string(),
+            reason: e.to_string(),
+        })?;
     }
     let options = ContactOptions {
         modulus,

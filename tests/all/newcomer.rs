@@ -300,3 +300,117 @@ fn humidity_caveats_reach_every_format() {
     );
     assert!(run("text").contains(&format!("† below RH = 35.02 % {caveat}")));
 }
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("wearopt-newcomer-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    dir
+}
+
+/// `pareto --out` worked only with HTML; the README shows it for every format.
+#[test]
+fn pareto_out_writes_every_format() {
+    let dir = scratch("pareto");
+    std::fs::create_dir_all(&dir).unwrap();
+    for format in ["text", "csv", "json", "html"] {
+        let args = [
+            "pareto",
+            "problems/micro-gear.toml",
+            "--points",
+            "5",
+            "--format",
+            format,
+        ];
+        let to_stdout = common::stdout(wearopt().args(args), 0);
+        let path = dir.join(format!("front.{format}"));
+        let printed = common::stdout(wearopt().args(args).arg("--out").arg(&path), 0);
+        assert!(printed.is_empty(), "{format}: nothing on stdout");
+        let written = std::fs::read_to_string(&path).unwrap();
+        let to_stdout = String::from_utf8(to_stdout).unwrap();
+        // The text and the page say how long the front took: the rest is the same.
+        let timeless = |s: &str| -> Vec<String> {
+            s.lines()
+                .filter(|l| !l.contains(" s.") && !l.contains(" s,"))
+                .map(String::from)
+                .collect()
+        };
+        assert!(
+            timeless(&written) == timeless(&to_stdout),
+            "{format}: {written}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `contact --fields` needed an existing folder where `figures --out` makes one.
+#[test]
+fn contact_fields_makes_its_folder() {
+    let dir = scratch("fields").join("nested");
+    common::stdout(
+        wearopt()
+            .args([
+                "contact",
+                MAP,
+                "--modulus",
+                "150GPa",
+                "--pressure",
+                "50MPa",
+                "--fields",
+            ])
+            .arg(&dir),
+        0,
+    );
+    assert!(dir.join("pressure_1.npy").is_file() && dir.join("gap_1.npy").is_file());
+    std::fs::remove_dir_all(dir.parent().unwrap()).ok();
+}
+
+/// `Error:` (ours) and `error:` (clap's usage errors) both occurred: one spelling.
+#[test]
+fn usage_errors_are_spelled_like_every_other_error() {
+    for args in [
+        vec!["eval"],
+        vec!["eval", "problems/micro-gear.toml", "--bogus"],
+        vec![
+            "contact",
+            MAP,
+            "--modulus",
+            "150GPa",
+            "--pressure",
+            "50MPa",
+            "--level",
+            "cubic",
+        ],
+        vec!["eval", "no-such-file.toml"],
+    ] {
+        let e = stderr_of(&args, 2);
+        assert!(e.starts_with("Error: "), "{args:?}: {e}");
+        assert!(!e.contains("error:"), "{args:?}: {e}");
+    }
+    // Help is no error.
+    common::stdout(wearopt().args(["eval", "--help"]), 0);
+}
+
+/// `fit-adhesion` printed "1.48 mN/m ± 500 µN/m": one prefix per line.
+#[test]
+fn fit_adhesion_gives_one_prefix_per_line() {
+    let text = String::from_utf8(common::stdout(
+        wearopt().args([
+            "fit-adhesion",
+            "problems/ando-friction.csv",
+            "--radius",
+            "0.3mm",
+            "--materials",
+            "steel,silicon",
+        ]),
+        0,
+    ))
+    .unwrap();
+    assert!(
+        text.contains("work of adhesion γ      1.48 ± 0.500 mN/m (standard error)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("95 % interval          0 to 3.07 mN/m, clipped at 0"),
+        "{text}"
+    );
+}
