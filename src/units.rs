@@ -43,7 +43,7 @@ mod parse;
 pub use format::{
     axis_unit, axis_unit_of, format_number, format_quantity, number, quantity, si, sig, sig_exp,
 };
-pub use parse::{parse_quantity, QuantityInput, UnitError};
+pub use parse::{forgotten_prefix, is_bare_number, parse_quantity, QuantityInput, UnitError};
 
 /// The physical dimension a field expects.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -16,11 +16,11 @@ use pyo3::types::PyDict;
 use wearopt::app::curve::LawOptions;
 use wearopt::app::fit_adhesion::{FitAdhesionOptions, FrictionCoefficient, Modulus};
 use wearopt::app::pareto::{ParetoOptions, Silent};
+use wearopt::app::quantity::OptionQuantity;
 use wearopt::app::roughness::RoughnessOptions;
 use wearopt::app::sweep::SweepOptions;
 use wearopt::app::{self, AppError, OptionName, Problem, Vocabulary};
 use wearopt::report;
-use wearopt::units::{parse_quantity, Dimension};
 
 fn value_error(message: impl Into<String>) -> PyErr {
     PyValueError::new_err(message.into())
@@ -128,14 +128,14 @@ fn humidity_json(
     py: Python<'_>,
     source: String,
     is_path: bool,
-    from_: f64,
-    to: f64,
+    from_: String,
+    to: String,
     points: usize,
 ) -> PyResult<String> {
     detached(py, || {
         let options = app::humidity::HumidityOptions {
-            from: from_,
-            to,
+            from: app::humidity::relative_humidity(OptionName("from"), &from_).map_err(words)?,
+            to: app::humidity::relative_humidity(OptionName("to"), &to).map_err(words)?,
             points,
         };
         options.validate().map_err(words)?;
@@ -441,7 +441,7 @@ fn contact_options(
     let height_unit = height_unit
         .map(|t| unit(OptionName("height_unit"), t))
         .transpose()?;
-    let modulus = positive(OptionName("modulus"), modulus, Dimension::Pressure)?;
+    let modulus = positive(OptionName("modulus"), modulus, OptionQuantity::Modulus)?;
     if pressures.is_empty() {
         return Err(AppError::Invalid {
             options: vec![(OptionName("pressures"), "[]".to_string())],
@@ -450,15 +450,15 @@ fn contact_options(
     }
     let pressures = pressures
         .iter()
-        .map(|t| positive(OptionName("pressures"), t, Dimension::Pressure))
+        .map(|t| positive(OptionName("pressures"), t, OptionQuantity::MeanPressure))
         .collect::<Result<Vec<f64>, _>>()?;
     let hardness = hardness
-        .map(|t| positive(OptionName("hardness"), t, Dimension::Pressure))
+        .map(|t| positive(OptionName("hardness"), t, OptionQuantity::Hardness))
         .transpose()?;
     let adhesion = match adhesion {
         (Some(w), Some(r), coarse_grain) => Some(app::contact::AdhesionOptions {
-            work: positive(OptionName("work_of_adhesion"), w, Dimension::SurfaceEnergy)?,
-            range: positive(OptionName("adhesion_range"), r, Dimension::Length)?,
+            work: positive(OptionName("work_of_adhesion"), w, OptionQuantity::WorkOfAdhesion)?,
+            range: positive(OptionName("adhesion_range"), r, OptionQuantity::AttractionRange)?,
             coarse_grain,
         }),
         (None, None, false) => None,
@@ -613,12 +613,10 @@ fn contact_array<'py>(
     contact_out(py, doc)
 }
 
-/// A quantity keyword argument: a string with a unit, read as `dimension`.
-fn quantity(name: &'static str, text: &str, dimension: Dimension) -> Result<f64, AppError> {
-    parse_quantity(text, dimension).map_err(|e| AppError::Invalid {
-        options: vec![(OptionName(name), format!("{text:?}"))],
-        rule: e.to_string(),
-    })
+/// A quantity keyword argument: a string with a unit, or a number in SI where
+/// plausible, read as `quantity`.
+fn quantity(name: &'static str, text: &str, quantity: OptionQuantity) -> Result<f64, AppError> {
+    app::quantity::positive_quantity(OptionName(name), text, quantity)
 }
 
 /// `wearopt fit-adhesion DATA --radius R … --format json`.
@@ -657,12 +655,14 @@ fn fit_adhesion_json(
                         rule: "give modulus or materials, not both".to_string(),
                     })
                 }
-                (Some(e), None) => Modulus::Value(quantity("modulus", &e, Dimension::Pressure)?),
+                (Some(e), None) => {
+                    Modulus::Value(quantity("modulus", &e, OptionQuantity::Modulus)?)
+                }
                 (None, Some(m)) => Modulus::Materials(m),
                 (None, None) => Modulus::None,
             };
             Ok(FitAdhesionOptions {
-                radius: quantity("radius", &radius, Dimension::Length)?,
+                radius: quantity("radius", &radius, OptionQuantity::SphereRadius)?,
                 friction_coefficient: match (mu, fit_mu) {
                     (Some(mu), _) => FrictionCoefficient::Given(mu),
                     (None, true) => FrictionCoefficient::Fit,
@@ -671,11 +671,11 @@ fn fit_adhesion_json(
                 modulus,
                 quoted_gamma: quoted_gamma
                     .as_deref()
-                    .map(|q| quantity("quoted_gamma", q, Dimension::SurfaceEnergy))
+                    .map(|q| quantity("quoted_gamma", q, OptionQuantity::WorkOfAdhesion))
                     .transpose()?,
                 quoted_bond_strength: quoted_bond_strength
                     .as_deref()
-                    .map(|q| quantity("quoted_bond_strength", q, Dimension::Pressure))
+                    .map(|q| quantity("quoted_bond_strength", q, OptionQuantity::Stress))
                     .transpose()?,
             })
         })()

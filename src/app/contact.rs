@@ -7,8 +7,9 @@ use std::path::Path;
 use crate::contact::{Settings as SolveSettings, Solution, Solver};
 use crate::surface::read::{self, Format, Overrides};
 use crate::surface::{analyse, level, HeightMap, Levelling, Roughness, Settings};
-use crate::units::{format_quantity, parse_quantity, Dimension};
+use crate::units::{format_quantity, Dimension};
 
+use super::quantity::{positive_quantity, OptionQuantity};
 use super::{AppError, OptionName};
 
 pub use crate::contact::adhesion::{
@@ -107,20 +108,10 @@ impl Default for ContactOptions {
     }
 }
 
-/// A positive finite quantity of `dimension` for the option `option`.
-pub fn positive(option: OptionName, text: &str, dimension: Dimension) -> Result<f64, AppError> {
-    let invalid = |rule: String| AppError::Invalid {
-        options: vec![(option, format!("{text:?}"))],
-        rule,
-    };
-    let x = parse_quantity(text, dimension).map_err(|e| invalid(e.to_string()))?;
-    if !(x.is_finite() && x > 0.0) {
-        return Err(invalid(format!(
-            "must be a positive finite {}",
-            dimension.name()
-        )));
-    }
-    Ok(x)
+/// A positive finite quantity for the option `option`: a number with its unit, or
+/// a bare number (SI) where it is plausible ([`super::quantity::positive_quantity`]).
+pub fn positive(option: OptionName, text: &str, quantity: OptionQuantity) -> Result<f64, AppError> {
+    positive_quantity(option, text, quantity)
 }
 
 /// A comma-separated list of positive pressures ("10 MPa,50 MPa,0.2 GPa").
@@ -138,7 +129,7 @@ pub fn pressures(option: OptionName, text: &str) -> Result<Vec<f64>, AppError> {
         });
     }
     list.into_iter()
-        .map(|p| positive(option, p, Dimension::Pressure))
+        .map(|p| positive(option, p, OptionQuantity::MeanPressure))
         .collect()
 }
 
@@ -254,6 +245,21 @@ pub struct ContactDocument {
     pub points: Vec<ContactPoint>,
     /// The resolution, the range solved and the pull-off, with adhesion.
     pub adhesion: Option<AdhesionResult>,
+}
+
+impl ContactDocument {
+    /// Whether a row is not a solution: a solve, with or without adhesion, that
+    /// stopped at its iteration limit above the tolerance (its row is the last
+    /// iterate). The command line exits with 1 then.
+    pub fn failed(&self) -> bool {
+        self.points.iter().any(|pt| {
+            pt.solution.outcome == Outcome::IterationLimit
+                || pt
+                    .adhesive
+                    .as_ref()
+                    .is_some_and(|a| a.outcome == Outcome::IterationLimit)
+        })
+    }
 }
 
 /// Reads the map at `path` and solves its contact, as `wearopt contact` does.

@@ -32,7 +32,7 @@ impl HumidityOptions {
             if !(0.0..1.0).contains(&x) {
                 return Err(AppError::Invalid {
                     options: vec![(OptionName(name), x.to_string())],
-                    rule: "a relative humidity must lie in [0, 1) (0: dry air, 1: saturated, where every gap floods)".into(),
+                    rule: "a relative humidity must lie in [0, 1) (0: dry air, 1: saturated, where every gap floods), or in [0 %, 100 %) written as a percentage".into(),
                 });
             }
         }
@@ -56,6 +56,33 @@ impl HumidityOptions {
         }
         Ok(())
     }
+}
+
+/// A relative humidity as an option gives it: a fraction (`0.5`) or a percentage
+/// (`"50 %"`, `"50%"`), as a problem file's `relative_humidity` is. Its range is
+/// checked by [`HumidityOptions::validate`]; a bare number above 1 and at most 100,
+/// a percentage written without its sign in all likelihood, is refused here with
+/// the guess.
+pub fn relative_humidity(option: OptionName, text: &str) -> Result<f64, AppError> {
+    let invalid = |rule: String| AppError::Invalid {
+        options: vec![(option, text.to_string())],
+        rule,
+    };
+    let x = crate::units::parse_quantity(text, crate::units::Dimension::Dimensionless).map_err(
+        |_| {
+            invalid(
+                "a relative humidity is a fraction in [0, 1) such as 0.5, or a percentage such as \"50 %\""
+                    .to_string(),
+            )
+        },
+    )?;
+    if crate::units::is_bare_number(text) && x > 1.0 && x < 100.0 {
+        return Err(invalid(format!(
+            "a relative humidity must lie in [0, 1) (0: dry air, 1: saturated, where every gap floods), or in [0 %, 100 %) written as a percentage: did you mean \"{} %\"?",
+            text.trim()
+        )));
+    }
+    Ok(x)
 }
 
 /// The scene at one humidity.

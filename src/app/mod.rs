@@ -25,6 +25,7 @@ pub mod fit_adhesion;
 pub mod humidity;
 pub mod optimize;
 pub mod pareto;
+pub mod quantity;
 pub mod roughness;
 pub mod sweep;
 pub mod uncertainty;

@@ -6,7 +6,6 @@ use std::path::Path;
 use crate::surface::psd::Psd;
 use crate::surface::read::{self, Overrides};
 use crate::surface::{analyse, level, HeightMap, Roughness, Settings};
-use crate::units::{parse_quantity, Dimension};
 
 use super::{AppError, OptionName};
 
@@ -42,20 +41,10 @@ impl Default for RoughnessOptions {
     }
 }
 
-/// A positive finite length written with its unit ("100 nm"; a plain number is
-/// metres), for the option `option`.
+/// A positive finite length along a map written with its unit ("100 nm"; a plain
+/// number is metres where plausible), for the option `option`.
 pub fn length(option: OptionName, text: &str) -> Result<f64, AppError> {
-    let x = parse_quantity(text, Dimension::Length).map_err(|e| AppError::Invalid {
-        options: vec![(option, format!("{text:?}"))],
-        rule: e.to_string(),
-    })?;
-    if !(x.is_finite() && x > 0.0) {
-        return Err(AppError::Invalid {
-            options: vec![(option, format!("{text:?}"))],
-            rule: "must be a positive finite length".to_string(),
-        });
-    }
-    Ok(x)
+    super::quantity::positive_quantity(option, text, super::quantity::OptionQuantity::ScanLength)
 }
 
 /// Metres per stored height unit from a unit ("nm") or a scale ("1e-9").

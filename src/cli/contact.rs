@@ -8,10 +8,10 @@ use anyhow::Result;
 use clap::Args;
 
 use wearopt::app::contact::{self as ct, ContactOptions};
+use wearopt::app::quantity::OptionQuantity as Q;
 use wearopt::app::roughness as rough;
-use wearopt::app::OptionName;
+use wearopt::app::{AppError, OptionName};
 use wearopt::report::{self, Format};
-use wearopt::units::Dimension;
 
 use super::format::formats;
 use super::roughness::LevelArg;
@@ -78,7 +78,7 @@ pub(crate) struct ContactArgs {
     /// Write the plot of real area against pressure, both models, as SVG ("-": stdout).
     #[arg(long, value_name = "AREA.svg")]
     plot: Option<PathBuf>,
-    /// Write each pressure's pressure and gap fields as .npy into this folder
+    /// Write each pressure's pressure and gap fields as .npy into this folder (made if absent)
     /// (pressure_1.npy, gap_1.npy, … in the order of --pressure; Pa and m, shape (ny, nx));
     /// with adhesion also adhesive_pressure_1.npy, adhesive_gap_1.npy, ….
     #[arg(long, value_name = "DIR")]
@@ -96,28 +96,28 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         .as_deref()
         .map(|t| rough::height_unit(OptionName("height_unit"), t))
         .transpose()?;
-    let modulus = ct::positive(OptionName("modulus"), &args.modulus, Dimension::Pressure)?;
+    let modulus = ct::positive(OptionName("modulus"), &args.modulus, Q::Modulus)?;
     let pressures = ct::pressures(OptionName("pressure"), &args.pressure)?;
     let hardness = args
         .hardness
         .as_deref()
-        .map(|t| ct::positive(OptionName("hardness"), t, Dimension::Pressure))
+        .map(|t| ct::positive(OptionName("hardness"), t, Q::Hardness))
         .transpose()?;
     let adhesion = match (&args.work_of_adhesion, &args.adhesion_range) {
         (Some(w), Some(r)) => Some(ct::AdhesionOptions {
-            work: ct::positive(OptionName("work_of_adhesion"), w, Dimension::SurfaceEnergy)?,
-            range: ct::positive(OptionName("adhesion_range"), r, Dimension::Length)?,
+            work: ct::positive(OptionName("work_of_adhesion"), w, Q::WorkOfAdhesion)?,
+            range: ct::positive(OptionName("adhesion_range"), r, Q::AttractionRange)?,
             coarse_grain: args.coarse_grain,
         }),
         _ => None,
     };
+    // The folder is made as `figures --out` makes its own, before the solves.
     if let Some(dir) = &args.fields {
-        if !dir.is_dir() {
-            return Err(super::usage(format!(
-                "--fields {}: not a folder (create it first)",
-                dir.display()
-            )));
-        }
+        std::fs::create_dir_all(dir).map_err(|e| AppError::Output {
+            option: OptionName("fields"),
+            path: dir.display().to_string(),
+            reason: e.to_string(),
+        })?;
     }
     let options = ContactOptions {
         modulus,
@@ -156,5 +156,10 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         }
     }
     super::print_out(&report::contact::render(&doc, args.format)?)?;
-    Ok(ExitCode::SUCCESS)
+    // A row that is not a solution is no usable result (the report says which).
+    Ok(if doc.failed() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }

@@ -7,9 +7,9 @@ use anyhow::Result;
 use clap::Args;
 
 use wearopt::app::fit_adhesion::{self as fit, FitAdhesionOptions, FrictionCoefficient, Modulus};
-use wearopt::app::{AppError, OptionName};
+use wearopt::app::quantity::{positive_quantity, OptionQuantity};
+use wearopt::app::OptionName;
 use wearopt::report::{self, Format};
-use wearopt::units::{parse_quantity, Dimension};
 
 use super::format::formats;
 
@@ -47,38 +47,32 @@ pub struct FitAdhesionArgs {
     pub format: Format,
 }
 
-fn quantity(name: &'static str, text: &str, dim: Dimension) -> Result<f64> {
-    parse_quantity(text, dim).map_err(|e| {
-        AppError::Invalid {
-            options: vec![(OptionName(name), text.to_string())],
-            rule: e.to_string(),
-        }
-        .into()
-    })
+fn quantity(name: &'static str, text: &str, quantity: OptionQuantity) -> Result<f64> {
+    Ok(positive_quantity(OptionName(name), text, quantity)?)
 }
 
 /// Runs the calibration.
 pub fn run(args: FitAdhesionArgs) -> Result<ExitCode> {
-    let radius = quantity("radius", &args.radius, Dimension::Length)?;
+    let radius = quantity("radius", &args.radius, OptionQuantity::SphereRadius)?;
     let friction_coefficient = match (args.mu, args.fit_mu) {
         (Some(mu), _) => FrictionCoefficient::Given(mu),
         (None, true) => FrictionCoefficient::Fit,
         (None, false) => FrictionCoefficient::Default,
     };
     let modulus = match (&args.modulus, args.materials.is_empty()) {
-        (Some(e), _) => Modulus::Value(quantity("modulus", e, Dimension::Pressure)?),
+        (Some(e), _) => Modulus::Value(quantity("modulus", e, OptionQuantity::Modulus)?),
         (None, false) => Modulus::Materials(args.materials.clone()),
         (None, true) => Modulus::None,
     };
     let quoted_gamma = args
         .quoted_gamma
         .as_deref()
-        .map(|q| quantity("quoted_gamma", q, Dimension::SurfaceEnergy))
+        .map(|q| quantity("quoted_gamma", q, OptionQuantity::WorkOfAdhesion))
         .transpose()?;
     let quoted_bond_strength = args
         .quoted_bond_strength
         .as_deref()
-        .map(|q| quantity("quoted_bond_strength", q, Dimension::Pressure))
+        .map(|q| quantity("quoted_bond_strength", q, OptionQuantity::Stress))
         .transpose()?;
     let options = FitAdhesionOptions {
         radius,

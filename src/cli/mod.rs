@@ -201,12 +201,12 @@ fn asperity_law_parser() -> impl TypedValueParser<Value = app::asperity::CurveLa
 pub struct HumidityArgs {
     /// The problem file (TOML).
     pub file: PathBuf,
-    /// The first relative humidity, in [0, 1) (0.5 is 50 %).
-    #[arg(long, allow_hyphen_values = true)]
-    pub from: f64,
-    /// The last relative humidity (inclusive), in [--from, 1).
-    #[arg(long, allow_hyphen_values = true)]
-    pub to: f64,
+    /// The first relative humidity: a fraction in [0, 1) or a percentage ("0.5" or "50%").
+    #[arg(long, value_name = "RH", allow_hyphen_values = true)]
+    pub from: String,
+    /// The last relative humidity (inclusive), in [--from, 1): a fraction or a percentage.
+    #[arg(long, value_name = "RH", allow_hyphen_values = true)]
+    pub to: String,
     /// Number of evenly spaced humidities, 2 or more.
     #[arg(long)]
     pub points: usize,
@@ -445,8 +445,8 @@ fn asperity(args: AsperityArgs) -> Result<ExitCode> {
 
 fn humidity(args: HumidityArgs) -> Result<ExitCode> {
     let options = app::humidity::HumidityOptions {
-        from: args.from,
-        to: args.to,
+        from: app::humidity::relative_humidity(OptionName("from"), &args.from)?,
+        to: app::humidity::relative_humidity(OptionName("to"), &args.to)?,
         points: args.points,
     };
     options.validate()?;

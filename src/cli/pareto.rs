@@ -15,8 +15,6 @@ use wearopt::app::OptionName;
 use wearopt::report::pareto as out;
 use wearopt::report::Format;
 
-use super::usage;
-
 /// Arguments of `wearopt pareto`.
 #[derive(Debug, clap::Args)]
 pub struct ParetoArgs {
@@ -42,18 +40,20 @@ pub struct ParetoArgs {
     /// Also draw the front as SVG to this file.
     #[arg(long, value_name = "FRONT.svg")]
     pub plot: Option<PathBuf>,
-    /// Write the HTML page to this file instead of stdout (with --format html).
+    /// Write the report to this file instead of stdout ("-": stdout); text, CSV and JSON
+    /// rows are written to it as they are solved.
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
 }
 
-/// Streams finished points to stdout and drives the progress bar.
+/// Streams finished points to stdout (or the --out file) and drives the progress bar.
 struct Stream<'a> {
     format: Format,
     plan: &'a ParetoPlan,
     bar: Option<indicatif::ProgressBar>,
-    /// Points written so far, and the first write error.
-    state: Mutex<(usize, Option<std::io::Error>)>,
+    /// Points written so far, the first write error, and the file written
+    /// instead of stdout.
+    state: Mutex<(usize, Option<std::io::Error>, Option<std::fs::File>)>,
 }
 
 impl Stream<'_> {
@@ -62,11 +62,16 @@ impl Stream<'_> {
         if st.1.is_some() {
             return;
         }
-        let mut stdout = std::io::stdout().lock();
-        if let Err(e) = stdout
-            .write_all(text.as_bytes())
-            .and_then(|_| stdout.flush())
-        {
+        let written = match &mut st.2 {
+            Some(file) => file.write_all(text.as_bytes()).and_then(|_| file.flush()),
+            None => {
+                let mut stdout = std::io::stdout().lock();
+                stdout
+                    .write_all(text.as_bytes())
+                    .and_then(|_| stdout.flush())
+            }
+        };
+        if let Err(e) = written {
             st.1 = Some(e);
         }
     }
@@ -128,12 +133,6 @@ impl Observer for Stream<'_> {
 
 /// Runs `wearopt pareto`.
 pub fn run(args: ParetoArgs) -> Result<ExitCode> {
-    if args.out.is_some() && args.format != Format::Html {
-        return Err(usage(
-            "--out is for --format html; text, CSV and JSON stream to stdout (redirect it)"
-                .to_string(),
-        ));
-    }
     let problem = wearopt::app::load(&args.file)?;
     let origin = args.file.display().to_string();
     let mut options = out::options(args.format, args.points);
@@ -157,11 +156,21 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         );
         b
     });
+    // Text, CSV and JSON go to the --out file as they come (HTML is written whole
+    // at the end): created before the solves, so a path that cannot be written
+    // is refused before any work.
+    let streamed_to = args
+        .out
+        .as_deref()
+        .filter(|p| p.as_os_str() != "-" && args.format != Format::Html);
+    let file = streamed_to
+        .map(|p| std::fs::File::create(p).map_err(|e| super::unwritable(p, "the report", &e)))
+        .transpose()?;
     let stream = Stream {
         format: args.format,
         plan: &plan,
         bar,
-        state: Mutex::new((0, None)),
+        state: Mutex::new((0, None, file)),
     };
     let head = out::stream_head(&plan, args.format);
     if !head.is_empty() {
@@ -187,8 +196,12 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         .unwrap_or_else(|e| e.into_inner())
         .1
     {
-        if e.kind() != std::io::ErrorKind::BrokenPipe {
-            return Err(e).context("writing to stdout");
+        match streamed_to {
+            Some(path) => return Err(super::unwritable(path, "the report", &e)),
+            None if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                return Err(e).context("writing to stdout")
+            }
+            None => {}
         }
     }
     if let Some(path) = &args.plot {

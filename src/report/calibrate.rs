@@ -110,6 +110,24 @@ fn gamma(x: f64) -> String {
     si(x, "N/m", 3)
 }
 
+/// Works of adhesion that one line gives together, in one prefix, that of `lead`
+/// (the fitted value, or the interval's larger bound): `1.48 ± 0.500 mN/m`, not
+/// `1.48 mN/m ± 500 µN/m`. The numbers, and the prefixed unit.
+fn gammas_in_prefix_of(lead: f64, values: &[f64]) -> (Vec<String>, String) {
+    let (factor, unit) = crate::units::axis_unit(lead.abs(), "N/m");
+    let numbers = values
+        .iter()
+        .map(|&v| {
+            if v == 0.0 {
+                "0".to_string()
+            } else {
+                sig(v / factor, 3)
+            }
+        })
+        .collect();
+    (numbers, unit)
+}
+
 fn force(x: f64) -> String {
     si(x, "N", 3)
 }
@@ -143,18 +161,26 @@ pub fn text(c: &Calibration) -> String {
     line(String::new());
     let pct = format!("{:.0} %", CONFIDENCE_LEVEL * 100.0);
     line(format!(
-        "work of adhesion γ      {}{}",
-        gamma(c.work_of_adhesion),
-        c.standard_error.map_or(String::new(), |se| format!(
-            " ± {} (standard error)",
-            gamma(se)
-        ))
+        "work of adhesion γ      {}",
+        match c.standard_error {
+            Some(se) => {
+                let (n, unit) = gammas_in_prefix_of(c.work_of_adhesion, &[c.work_of_adhesion, se]);
+                format!("{} ± {} {unit} (standard error)", n[0], n[1])
+            }
+            None => gamma(c.work_of_adhesion),
+        }
     ));
     if let (Some(ci), Some(t)) = (c.confidence_interval, c.t_quantile) {
+        let lead = if ci[1].abs() >= ci[0].abs() {
+            ci[1]
+        } else {
+            ci[0]
+        };
+        let (n, unit) = gammas_in_prefix_of(lead, &ci);
         line(format!(
-            "  {pct} interval          {} to {}{} (t = {})",
-            gamma(ci[0]),
-            gamma(ci[1]),
+            "  {pct} interval          {} to {} {unit}{} (t = {})",
+            n[0],
+            n[1],
             if c.confidence_interval_clipped {
                 ", clipped at 0"
             } else {

@@ -197,6 +197,7 @@ pub fn json_document(doc: &ContactDocument) -> Value {
         "statistical_error": doc.roughness.as_ref().err(),
         "points": points,
         "adhesion": adhesion,
+        "notes": notes(doc),
     })
 }
 
@@ -430,41 +431,10 @@ fn row(pt: &ContactPoint, solve: String) -> Vec<String> {
     ]
 }
 
-/// The text report.
-pub fn text(doc: &ContactDocument) -> String {
-    let mut out = header(doc).join("\n");
-    out.push_str("\n\n");
-    let head = [
-        "mean pressure",
-        "real area",
-        "plastic",
-        "patches",
-        "mean gap",
-        "max pressure",
-        "iterations",
-        "residual",
-        "GW area",
-        "GW contacts",
-        "GW/exact",
-    ];
-    let rows: Vec<Vec<String>> = doc
-        .points
-        .iter()
-        .map(|pt| row(pt, pt.solution.iterations.to_string()))
-        .collect();
-    out.push_str(&aligned(&head, &rows));
-    if let Some(a) = &doc.adhesion {
-        let rows: Vec<Vec<String>> = doc
-            .points
-            .iter()
-            .filter_map(|pt| adhesive_row(pt, pt.adhesive.as_ref()?.iterations.to_string()))
-            .collect();
-        out.push_str("\nWith adhesion (attraction: the mean adhesive traction; area / dry: over the adhesion-free real area):\n");
-        out.push_str(&aligned(&ADHESIVE_HEAD, &rows));
-        out.push('\n');
-        out.push_str(&pull_off_words(a));
-        out.push('\n');
-    }
+/// The caveats on the solves without adhesion, worded once for every format: a
+/// row that is not a solution, a contact far beyond the statistical model's
+/// reach, patches too small for the map to resolve their area.
+fn dry_notes(doc: &ContactDocument) -> Vec<String> {
     let mut notes = Vec::new();
     for pt in &doc.points {
         let s = &pt.solution;
@@ -502,9 +472,56 @@ pub fn text(doc: &ContactDocument) -> String {
             small.join(", ")
         ));
     }
+    notes
+}
+
+/// Every caveat of the document, in the order the text gives them: the dry
+/// solves' ([`dry_notes`]), then the adhesive solve's. The text ends with them,
+/// the HTML page lists them under their tables, the JSON's `notes` holds them.
+pub fn notes(doc: &ContactDocument) -> Vec<String> {
+    let mut notes = dry_notes(doc);
     if let Some(a) = &doc.adhesion {
         notes.extend(adhesion_notes(doc, a));
     }
+    notes
+}
+
+/// The text report.
+pub fn text(doc: &ContactDocument) -> String {
+    let mut out = header(doc).join("\n");
+    out.push_str("\n\n");
+    let head = [
+        "mean pressure",
+        "real area",
+        "plastic",
+        "patches",
+        "mean gap",
+        "max pressure",
+        "iterations",
+        "residual",
+        "GW area",
+        "GW contacts",
+        "GW/exact",
+    ];
+    let rows: Vec<Vec<String>> = doc
+        .points
+        .iter()
+        .map(|pt| row(pt, pt.solution.iterations.to_string()))
+        .collect();
+    out.push_str(&aligned(&head, &rows));
+    if let Some(a) = &doc.adhesion {
+        let rows: Vec<Vec<String>> = doc
+            .points
+            .iter()
+            .filter_map(|pt| adhesive_row(pt, pt.adhesive.as_ref()?.iterations.to_string()))
+            .collect();
+        out.push_str("\nWith adhesion (attraction: the mean adhesive traction; area / dry: over the adhesion-free real area):\n");
+        out.push_str(&aligned(&ADHESIVE_HEAD, &rows));
+        out.push('\n');
+        out.push_str(&pull_off_words(a));
+        out.push('\n');
+    }
+    let notes = notes(doc);
     if let Some(w) = comparison_words(doc) {
         out.push('\n');
         out.push_str(&w);
@@ -735,6 +752,7 @@ pub fn html(doc: &ContactDocument) -> String {
         &rows,
         &[6],
     );
+    p.list(&dry_notes(doc), "warn");
     if let Some(a) = &doc.adhesion {
         p.heading("With adhesion");
         let rows: Vec<Vec<String>> = doc

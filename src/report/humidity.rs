@@ -113,12 +113,14 @@ fn below_continuum(doc: &HumidityDocument, r: &HumidityRow) -> bool {
             .is_some_and(|c| r.relative_humidity < c)
 }
 
-/// The continuum limit in words, when a row lies below it.
+/// The continuum limit in words, when a row lies below it (the text and the page
+/// mark those rows with † and put it before these words; the JSON's `notes` holds
+/// them as they are).
 fn continuum_words(doc: &HumidityDocument) -> Option<String> {
     let c = doc.continuum_humidity?;
     doc.rows.iter().any(|r| below_continuum(doc, r)).then(|| {
         format!(
-            "† below RH = {} % the Kelvin radius is under 0.5 nm (a few molecules of liquid): the continuum Kelvin–Laplace picture is doubtful there; read those rows as estimates",
+            "below RH = {} % the Kelvin radius is under 0.5 nm (a few molecules of liquid): the continuum Kelvin–Laplace picture is doubtful there; read those rows as estimates",
             sig(100.0 * c, 4)
         )
     })
@@ -151,7 +153,7 @@ pub fn text(doc: &HumidityDocument) -> String {
     ));
     o.push_str(&format!("  {}\n", threshold_words(doc)));
     if let Some(c) = continuum_words(doc) {
-        o.push_str(&format!("  {c}\n"));
+        o.push_str(&format!("  † {c}\n"));
     }
     o.push('\n');
     o.push_str(&format!(
@@ -187,6 +189,7 @@ pub fn json(doc: &HumidityDocument) -> String {
         "threshold_humidity": doc.threshold_humidity,
         "continuum_humidity": doc.continuum_humidity,
         "points": doc.rows,
+        "notes": continuum_words(doc).into_iter().collect::<Vec<_>>(),
     }))
 }
 
@@ -199,7 +202,7 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
             .filter_map(|r| {
                 let d = dry.filter(|d| *d > 0.0)?;
                 let x = v(r)? / d;
-                (x > 0.0 && x.is_finite()).then_some((r.relative_humidity, x))
+                (x > 0.0 && x.is_finite()).then_some((100.0 * r.relative_humidity, x))
             })
             .collect()
     };
@@ -207,7 +210,7 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
     let pull = ratio(|r| r.pull_off_force, doc.dry_pull_off_force);
     let mut plot = LinePlot::new(
         format!("Adhesion against humidity — {}", doc.name),
-        Axis::linear("relative humidity RH"),
+        Axis::linear("relative humidity RH").with_unit("%"),
         Axis::log("ratio to dry air"),
     );
     plot = plot.with_series(Series::new(
@@ -232,11 +235,18 @@ pub fn plot_svg(doc: &HumidityDocument) -> String {
             plot = plot.with_series(
                 Series::new(
                     format!(
-                        "threshold RH = {} (Γ = {} Γ_dry)",
-                        if t >= 1e-3 { sig(t, 4) } else { sig_exp(t, 3) },
+                        "threshold RH = {} % (Γ = {} Γ_dry)",
+                        if t >= 1e-3 {
+                            sig(100.0 * t, 4)
+                        } else {
+                            sig_exp(100.0 * t, 3)
+                        },
                         THRESHOLD_RATIO
                     ),
-                    vec![(t, lo.min(THRESHOLD_RATIO)), (t, hi.max(THRESHOLD_RATIO))],
+                    vec![
+                        (100.0 * t, lo.min(THRESHOLD_RATIO)),
+                        (100.0 * t, hi.max(THRESHOLD_RATIO)),
+                    ],
                 )
                 .with_marker(super::svg::Marker::None),
             );
@@ -253,6 +263,9 @@ pub fn html(doc: &HumidityDocument) -> String {
         &format!("{}.", capitalize(&threshold_words(doc))),
         Some("status"),
     );
+    if let Some(c) = continuum_words(doc) {
+        p.paragraph(&format!("† {}.", capitalize(&c)), Some("warn"));
+    }
     let rows: Vec<Vec<String>> = doc
         .rows
         .iter()

@@ -36,32 +36,11 @@ fn input_words(i: SceneParameter) -> (&'static str, Dimension) {
     (words, i.dimension())
 }
 
-/// The power of a length a prefix of this dimension is raised to (0: no prefix guess).
-fn prefix_power(d: Dimension) -> i32 {
-    match d {
-        Dimension::Area => 2,
-        Dimension::InverseArea => -2,
-        Dimension::Dimensionless => 0,
-        _ => 1,
-    }
-}
-
 /// What the value would be had the number been written with a prefix that was left out
 /// (σ = 2 m read as 2 nm, E = 160 Pa as 160 GPa), where that lands in the plausible range.
 fn did_you_mean(value: f64, lo: f64, hi: f64, d: Dimension) -> Vec<String> {
-    let p = prefix_power(d);
-    if p == 0 {
-        return Vec::new();
-    }
-    // Too large: a small prefix was dropped; too small: a large one.
-    let exps: &[i32] = if value > hi {
-        &[-9, -6, -3]
-    } else {
-        &[9, 6, 3]
-    };
-    exps.iter()
-        .map(|e| value * 10f64.powi(e * p))
-        .filter(|v| (lo..=hi).contains(v))
+    crate::units::forgotten_prefix(value, lo, hi, d)
+        .into_iter()
         .map(|v| format_quantity(v, d))
         .collect()
 }

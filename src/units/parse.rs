@@ -117,6 +117,45 @@ fn parse_text(text: &str, expected: Dimension) -> Result<f64, UnitError> {
     Ok(number.scaled(factor.exp10, factor.mult))
 }
 
+/// Whether `text` is a number with no unit after it (`"150"`, `"2e-8"`), which
+/// [`parse_quantity`] reads in SI units. A command line reads such a number at face
+/// value only where it is plausible (see [`forgotten_prefix`]).
+pub fn is_bare_number(text: &str) -> bool {
+    split_number(text.trim()).is_some_and(|(_, rest)| rest.trim().is_empty())
+}
+
+/// The power of the length a prefix is raised with in `dimension`'s unit (2 in
+/// `µm²`), 0 where a prefix is no part of the unit (a plain number).
+fn prefix_power(dimension: Dimension) -> i32 {
+    match dimension {
+        Dimension::Area => 2,
+        Dimension::InverseArea => -2,
+        Dimension::Dimensionless => 0,
+        _ => 1,
+    }
+}
+
+/// What `value` (SI) would be had its number been written with a prefix that was
+/// left out (σ = 2 m meant as 2 nm, E = 160 Pa as 160 GPa), where that lands in
+/// the plausible range `lo..=hi`: the values, most likely first. Problem-file
+/// warnings and the command line's refusals of a bare number both ask this.
+pub fn forgotten_prefix(value: f64, lo: f64, hi: f64, dimension: Dimension) -> Vec<f64> {
+    let p = prefix_power(dimension);
+    if p == 0 {
+        return Vec::new();
+    }
+    // Too large: a small prefix was dropped; too small: a large one.
+    let exps: &[i32] = if value > hi {
+        &[-9, -6, -3]
+    } else {
+        &[9, 6, 3]
+    };
+    exps.iter()
+        .map(|e| value * 10f64.powi(e * p))
+        .filter(|v| (lo..=hi).contains(v))
+        .collect()
+}
+
 /// A number as written: decimal digits with a power of ten, or an infinity.
 #[derive(Debug, Clone, Copy)]
 enum Number<'a> {

@@ -25,6 +25,7 @@ mod lennard_jones_rough;
 mod lennard_jones_table;
 mod materials;
 mod model_invariants;
+mod newcomer;
 mod optimize;
 mod optimize_contracts;
 mod optimize_regressions;

@@ -130,26 +130,34 @@ def pareto(
     return json.loads(_wearopt.pareto_json(*_source(problem), points, adhesion, direction))
 
 
-def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:
+def humidity(problem: Problem, from_: Any, to: Any, points: int) -> Dict[str, Any]:
     """The scene across relative humidity: separation, capillary load, pull-off
     force, apparent work of adhesion, wet fraction and wear rate at ``points``
     evenly spaced humidities from ``from_`` to ``to``, and the threshold humidity
     where the apparent work of adhesion reaches ten times its dry value (the JSON
     of ``wearopt humidity FILE --from RH0 --to RH1 --points N --format json``;
-    ``from`` is a Python keyword, hence ``from_``).
+    ``from`` is a Python keyword, hence ``from_``). A humidity is a fraction
+    (``0.5``) or a percentage string (``"50 %"``), as in a problem file.
 
     >>> r = wearopt.humidity("problems/micro-gear-humid.toml", 0.0, 0.9, 4)
     >>> [round(p["relative_humidity"], 2) for p in r["points"]]
     [0.0, 0.3, 0.6, 0.9]
     """
+    given = []
     for name, value in (("from_", from_), ("to", to)):
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise TypeError(f"{name} must be a number (a relative humidity in [0, 1)), not {type(value).__name__}")
+        if isinstance(value, str):
+            given.append(value)
+        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            given.append(repr(float(value)))
+        else:
+            raise TypeError(
+                f"{name} must be a number (a relative humidity in [0, 1)) or a percentage string such as \"50 %\", not {type(value).__name__}"
+            )
     if isinstance(points, bool) or not isinstance(points, int):
         raise TypeError(f"points must be an int, not {type(points).__name__}")
     if points < 0:
         raise ValueError(f"points={points}: must lie in 2..=100000")
-    return json.loads(_wearopt.humidity_json(*_source(problem), float(from_), float(to), points))
+    return json.loads(_wearopt.humidity_json(*_source(problem), given[0], given[1], points))
 
 
 def uncertainty(

@@ -36,7 +36,7 @@ def uncertainty(
     """The JSON of `wearopt uncertainty FILE --method M --format json` as a dict (intervals and the CDF as numpy arrays)."""
     ...
 
-def humidity(problem: Problem, from_: float, to: float, points: int) -> Dict[str, Any]:
+def humidity(problem: Problem, from_: Union[float, str], to: Union[float, str], points: int) -> Dict[str, Any]:
     """The JSON of `wearopt humidity FILE --from RH0 --to RH1 --points N --format json` as a dict."""
     ...
 
