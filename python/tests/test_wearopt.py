@@ -489,6 +489,27 @@ def test_humidity_equals_cli_json_and_words_errors_as_keywords():
         wearopt.humidity(path, 0.0, 1.0, 4)
 
 
+def test_humidity_takes_a_fraction_or_a_percentage():
+    path = "problems/micro-gear-humid.toml"
+    assert wearopt.humidity(path, "0 %", "90 %", 4) == wearopt.humidity(path, 0.0, 0.9, 4)
+
+
+def test_uncertainty_equals_cli_json():
+    path = "problems/micro-gear-scatter.toml"
+    for method in ("sampling", "sobol", "reliability"):
+        expected = json.loads(
+            cli("uncertainty", path, "--method", method, "--samples", "128", "--format", "json").stdout
+        )
+        got = wearopt.uncertainty(path, method, samples=128)
+        assert json.dumps(got, default=lambda a: a.tolist(), sort_keys=True) == json.dumps(
+            expected, sort_keys=True
+        ), method
+    s = wearopt.uncertainty(path, "sampling", samples=128)
+    assert isinstance(s["outputs"][0]["p95_interval"], np.ndarray)
+    with pytest.raises(ValueError, match="method"):
+        wearopt.uncertainty(path, "bogus")
+
+
 def test_asperity_equals_cli_json_and_words_errors_as_keywords():
     expected = json.loads(
         cli("asperity", "--tabor", "3", "--from", "-1", "--to", "0", "--points", "3", "--format", "json").stdout

@@ -148,7 +148,9 @@ def humidity(problem: Problem, from_: Any, to: Any, points: int) -> Dict[str, An
         if isinstance(value, str):
             given.append(value)
         elif isinstance(value, (int, float)) and not isinstance(value, bool):
-            given.append(repr(float(value)))
+            x = float(value)
+            # As the command line writes a number: 1, not 1.0.
+            given.append(str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x))
         else:
             raise TypeError(
                 f"{name} must be a number (a relative humidity in [0, 1)) or a percentage string such as \"50 %\", not {type(value).__name__}"
