@@ -64,6 +64,22 @@ fn load(source: &str, is_path: bool) -> Result<(Problem, String), String> {
     }
 }
 
+/// [`load`], and the problem-file text the problem was parsed from (a dict's:
+/// the TOML it was turned into).
+fn load_with_text(source: &str, is_path: bool) -> Result<(Problem, String, String), String> {
+    if is_path {
+        let (problem, origin) = load(source, true)?;
+        let text = std::fs::read_to_string(source).map_err(|e| format!("{source}: {e}"))?;
+        Ok((problem, origin, text))
+    } else {
+        let value: serde_json::Value = serde_json::from_str(source)
+            .map_err(|e| format!("<problem dict>: not a JSON-compatible dict: {e}"))?;
+        let (problem, origin) = load(source, false)?;
+        let text = toml::to_string(&value).map_err(|e| e.to_string())?;
+        Ok((problem, origin, text))
+    }
+}
+
 /// Runs `f` without the GIL; its error becomes a `ValueError`.
 fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
     py.detach(f).map_err(value_error)
@@ -170,6 +186,73 @@ fn uncertainty_json(
             &app::Quiet,
         )
         .map_err(words)?;
+        Ok(report::uncertainty::json(&doc))
+    })
+}
+
+/// `wearopt uncertainty FILE --method M [--samples N] [--seed S] --shard I/N`:
+/// the part's JSON. A dict's problem travels in the part as the problem-file
+/// text it was turned into.
+#[pyfunction]
+#[pyo3(signature = (source, is_path, method, samples, seed, shard_index, shard_count))]
+#[allow(clippy::too_many_arguments)]
+fn uncertainty_part_json(
+    py: Python<'_>,
+    source: String,
+    is_path: bool,
+    method: String,
+    samples: Option<u64>,
+    seed: Option<u64>,
+    shard_index: u64,
+    shard_count: u64,
+) -> PyResult<String> {
+    detached(py, || {
+        let method = app::uncertainty::method(app::OptionName("method"), &method).map_err(words)?;
+        let shard = app::sweep::shard(shard_index, shard_count).map_err(words)?;
+        let (problem, origin, text) = load_with_text(&source, is_path)?;
+        let part = app::uncertainty::uncertainty_part(
+            &problem,
+            &origin,
+            &text,
+            &app::uncertainty::UncertaintyOptions {
+                method,
+                samples,
+                seed,
+            },
+            shard,
+            &app::Quiet,
+        )
+        .map_err(words)?;
+        Ok(report::uncertainty::part_json(&part))
+    })
+}
+
+/// Whether `text` is an uncertainty part (else a sweep's output).
+#[pyfunction]
+fn is_uncertainty_part(text: &str) -> bool {
+    report::uncertainty::is_part(text)
+}
+
+/// `wearopt merge PARTS --format json` of uncertainty parts held in memory: the
+/// unsharded run's JSON. Errors name the part by its position.
+#[pyfunction]
+#[pyo3(signature = (parts, samples=None))]
+fn merge_uncertainty_json(
+    py: Python<'_>,
+    parts: Vec<String>,
+    samples: Option<u64>,
+) -> PyResult<String> {
+    detached(py, || {
+        let parts = parts
+            .iter()
+            .enumerate()
+            .map(|(i, text)| {
+                report::uncertainty::parse_part(text)
+                    .map(|p| (format!("part {i}"), p))
+                    .map_err(|e| format!("part {i}: {e}"))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let doc = app::uncertainty::merge(parts, samples).map_err(words)?;
         Ok(report::uncertainty::json(&doc))
     })
 }
@@ -756,6 +839,9 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(pareto_json, m)?)?;
     m.add_function(wrap_pyfunction!(humidity_json, m)?)?;
     m.add_function(wrap_pyfunction!(uncertainty_json, m)?)?;
+    m.add_function(wrap_pyfunction!(uncertainty_part_json, m)?)?;
+    m.add_function(wrap_pyfunction!(is_uncertainty_part, m)?)?;
+    m.add_function(wrap_pyfunction!(merge_uncertainty_json, m)?)?;
     m.add_function(wrap_pyfunction!(asperity_json, m)?)?;
     m.add_function(wrap_pyfunction!(curve_arrays, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_text, m)?)?;

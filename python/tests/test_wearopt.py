@@ -330,6 +330,57 @@ def test_sweep_equals_cli_and_merges_byte_for_byte():
         wearopt.merge(parts[:3] + parts[4:])
 
 
+def _same(a, b) -> bool:
+    """Deep equality of two documents (numpy arrays compared element-wise)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.array_equal(np.asarray(a), np.asarray(b))
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
+    return a == b
+
+
+def test_uncertainty_shards_merge_into_the_unsharded_run(tmp_path):
+    scatter = "problems/micro-gear-scatter.toml"
+    for method in ("sobol", "sampling", "morris"):
+        expected = cli("uncertainty", scatter, "--method", method, "--samples", "64",
+                       "--format", "json").stdout
+        whole = wearopt.uncertainty(scatter, method, samples=64)
+        parts = [wearopt.uncertainty(scatter, method, samples=64, shard=(i, 3)) for i in range(3)]
+        assert [p["wearopt"] for p in parts] == ["uncertainty part"] * 3
+        assert parts[0]["fingerprint"] == whole["fingerprint"]
+        # The dicts, in any order; and the command line's parts, as texts.
+        assert _same(wearopt.merge(reversed(parts), samples=64), whole)
+        texts = [cli("uncertainty", scatter, "--method", method, "--samples", "64",
+                     "--shard", f"{i}/3").stdout for i in range(3)]
+        assert _same(wearopt.merge([texts[2], texts[0], texts[1]]), whole)
+        # Python's parts, written as JSON, merge on the command line.
+        paths = []
+        for i, p in enumerate(parts):
+            path = tmp_path / f"{method}-{i}.json"
+            path.write_text(json.dumps(p))
+            paths.append(str(path))
+        assert cli("merge", paths[1], paths[2], paths[0], "--format", "json").stdout == expected
+    with pytest.raises(ValueError, match="missing"):
+        wearopt.merge(parts[:2])
+    foreign = wearopt.uncertainty(scatter, "morris", samples=64, seed=5, shard=(1, 3))
+    with pytest.raises(ValueError, match=foreign["fingerprint"]):
+        wearopt.merge([parts[0], foreign, parts[2]])
+    with pytest.raises(ValueError, match="cannot be sharded"):
+        wearopt.uncertainty(scatter, "reliability", shard=(0, 2))
+    with pytest.raises(TypeError, match="shard"):
+        wearopt.uncertainty(scatter, "sampling", shard=3)
+
+
+def test_uncertainty_shards_of_a_dict_problem():
+    tomllib = pytest.importorskip("tomllib")
+    problem = tomllib.loads((ROOT / "problems/micro-gear-scatter.toml").read_text())
+    whole = wearopt.uncertainty(problem, "sampling", samples=64)
+    parts = [wearopt.uncertainty(problem, "sampling", samples=64, shard=(i, 2)) for i in range(2)]
+    assert _same(wearopt.merge(parts), whole)
+
+
 def test_dask_example_on_a_local_cluster_gives_the_serial_result():
     distributed = pytest.importorskip("dask.distributed")
     sys.path.insert(0, str(ROOT / "examples"))

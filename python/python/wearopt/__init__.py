@@ -167,6 +167,7 @@ def uncertainty(
     method: str = "sobol",
     samples: Optional[int] = None,
     seed: Optional[int] = None,
+    shard: Optional[Tuple[int, int]] = None,
 ) -> Dict[str, Any]:
     """The scene under the scatter of its ``[uncertainty]`` inputs (the JSON of
     ``wearopt uncertainty FILE --method M [--samples N] [--seed S] --format json``):
@@ -176,9 +177,20 @@ def uncertainty(
     event with its interval, β, FORM, SORM, design points). Interval pairs come
     back as numpy arrays.
 
+    ``shard=(i, n)`` evaluates the i-th of n parts of the study's samples
+    (``wearopt uncertainty FILE --shard I/N``) and returns the part: a plain,
+    JSON-serialisable dict (marked ``"wearopt": "uncertainty part"``, with the
+    fingerprint, the range of samples it holds, the problem's text and the
+    raw values) that :func:`merge` joins with the other parts into the
+    document of the unsharded run. Not with ``"reliability"`` (sequential).
+
     >>> r = wearopt.uncertainty("problems/micro-gear-scatter.toml", "sampling", samples=256)
     >>> r["method"], r["samples"], [o["name"] for o in r["outputs"]]
     ('sampling', 256, ['wear_rate', 'pull_off_force', 'life_cycles'])
+    >>> parts = [wearopt.uncertainty("problems/micro-gear-scatter.toml", "sampling",
+    ...                              samples=64, shard=(i, 2)) for i in range(2)]
+    >>> parts[1]["range"], wearopt.merge(parts)["samples"]
+    ([32, 64], 64)
     """
     if not isinstance(method, str):
         raise TypeError(f"method must be a str, not {type(method).__name__}")
@@ -189,6 +201,18 @@ def uncertainty(
             raise TypeError(f"{name} must be an int, not {type(value).__name__}")
         if value < 0:
             raise ValueError(f"{name}={value}: must be >= 0")
+    if shard is not None:
+        i, n = _shard(shard)
+        return json.loads(
+            _wearopt.uncertainty_part_json(
+                *_source(problem),
+                method,
+                None if samples is None else int(samples),
+                None if seed is None else int(seed),
+                i,
+                n,
+            )
+        )
     doc = json.loads(
         _wearopt.uncertainty_json(
             *_source(problem),
@@ -198,6 +222,20 @@ def uncertainty(
         )
     )
     return _arrays(doc)
+
+
+def _shard(shard: Any) -> Tuple[int, int]:
+    """``shard=(i, n)`` as two ints >= 0 (the range 0 <= i < n is checked in Rust)."""
+    try:
+        i, n = shard
+    except (TypeError, ValueError):
+        raise TypeError(f"shard must be a pair (i, n), not {shard!r}") from None
+    for name, v in (("shard index", i), ("shard count", n)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+            raise TypeError(f"{name} must be an int, not {type(v).__name__}")
+        if v < 0:
+            raise ValueError(f"{name} {v}: must be >= 0")
+    return int(i), int(n)
 
 
 def _arrays(value: Any) -> Any:
@@ -481,16 +519,33 @@ def sweep(
     return _wearopt.sweep_text(*_source(problem), samples, method, seed, i, n, format)
 
 
-def merge(parts: Iterable[str], samples: Optional[int] = None) -> str:
+def merge(
+    parts: Iterable[Union[str, Dict[str, Any]]], samples: Optional[int] = None
+) -> Union[str, Dict[str, Any]]:
     """Joins the texts of sweep shards (any order) into the text of the
     unsharded sweep, byte for byte (``wearopt merge``); ``samples`` checks that
     no row is missing.
+
+    Uncertainty parts (the dicts of ``uncertainty(..., shard=(i, n))``, or
+    their JSON texts as ``wearopt uncertainty --shard`` writes them) are
+    joined into the document of the unsharded run, as :func:`uncertainty`
+    returns it; ``samples`` checks the study's N. Parts of another study, and
+    samples no part holds or two parts hold, raise ``ValueError`` naming them.
 
     >>> parts = [wearopt.sweep("problems/micro-gear-study.toml", 8, shard=(i, 3)) for i in range(3)]
     >>> wearopt.merge(parts) == wearopt.sweep("problems/micro-gear-study.toml", 8)
     True
     """
-    return _wearopt.merge_text(list(parts), samples)
+    parts = list(parts)
+    for k, p in enumerate(parts):
+        if not isinstance(p, (str, dict)):
+            raise TypeError(f"part {k} must be a str or a dict, not {type(p).__name__}")
+    if any(isinstance(p, dict) for p in parts) or any(
+        _wearopt.is_uncertainty_part(p) for p in parts
+    ):
+        texts = [p if isinstance(p, str) else json.dumps(p, allow_nan=False) for p in parts]
+        return _arrays(json.loads(_wearopt.merge_uncertainty_json(texts, samples)))
+    return _wearopt.merge_text(parts, samples)
 
 
 def fit_adhesion(
