@@ -476,7 +476,7 @@ fn dry_notes(doc: &ContactDocument) -> Vec<String> {
 }
 
 /// Every caveat of the document, in the order the text gives them: the dry
-/// solves' ([`dry_notes`]), then the adhesive solve's. The text ends with them,
+/// solves' (`dry_notes`), then the adhesive solve's. The text ends with them,
 /// the HTML page lists them under their tables, the JSON's `notes` holds them.
 pub fn notes(doc: &ContactDocument) -> Vec<String> {
     let mut notes = dry_notes(doc);
