@@ -10,6 +10,7 @@ mod format;
 mod pareto;
 mod progress;
 mod roughness;
+mod shard;
 mod sweep;
 mod uncertainty;
 mod verbose;

@@ -76,50 +76,6 @@ pub struct MergeArgs {
     pub out: Option<PathBuf>,
 }
 
-pub(crate) fn parse_shard(text: &str) -> Result<Shard> {
-    let bad = || {
-        usage(format!(
-            "--shard {text}: expected I/N with 0 <= I < N, e.g. --shard 0/4"
-        ))
-    };
-    let (i, n) = text.split_once('/').ok_or_else(bad)?;
-    let (i, n) = (
-        i.trim().parse::<u64>().map_err(|_| bad())?,
-        n.trim().parse::<u64>().map_err(|_| bad())?,
-    );
-    Shard::new(i, n).map_err(|_| bad())
-}
-
-/// The shard from Slurm's job-array variables, if they are set.
-pub(crate) fn slurm_shard() -> Result<Option<Shard>> {
-    let var = |name: &str| -> Result<Option<u64>> {
-        match std::env::var(name) {
-            Ok(v) if !v.trim().is_empty() => v.trim().parse().map(Some).map_err(|_| {
-                usage(format!(
-                    "{name}={v}: expected a non-negative integer (a Slurm job-array variable)"
-                ))
-            }),
-            _ => Ok(None),
-        }
-    };
-    let Some(id) = var("SLURM_ARRAY_TASK_ID")? else {
-        return Ok(None);
-    };
-    let count = var("SLURM_ARRAY_TASK_COUNT")?.ok_or_else(|| {
-        usage(format!(
-            "SLURM_ARRAY_TASK_ID={id} without SLURM_ARRAY_TASK_COUNT: cannot tell the shard; give --shard I/N"
-        ))
-    })?;
-    let shard = Shard::from_slurm(
-        id,
-        count,
-        var("SLURM_ARRAY_TASK_MIN")?,
-        var("SLURM_ARRAY_TASK_STEP")?,
-    )
-    .map_err(|e| usage(e.to_string()))?;
-    Ok(Some(shard))
-}
-
 /// Where rows go: a file or stdout.
 struct Sink {
     writer: Box<dyn Write>,
@@ -152,8 +108,8 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         },
     )?;
     let shard = match &args.shard {
-        Some(s) => parse_shard(s)?,
-        None => slurm_shard()?.unwrap_or(Shard::WHOLE),
+        Some(s) => super::shard::parse_shard(s)?,
+        None => super::shard::slurm_shard()?.unwrap_or(Shard::WHOLE),
     };
     let plan = plan.part(shard);
     let sweep = &plan.sweep;

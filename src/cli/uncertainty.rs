@@ -47,8 +47,8 @@ pub(crate) struct UncertaintyArgs {
 pub(crate) fn run(args: UncertaintyArgs) -> Result<ExitCode> {
     let method = uq::method(OptionName("method"), &args.method)?;
     let shard = match &args.shard {
-        Some(s) => Some((super::sweep::parse_shard(s)?, false)),
-        None => super::sweep::slurm_shard()?.map(|s| (s, true)),
+        Some(s) => Some((super::shard::parse_shard(s)?, false)),
+        None => super::shard::slurm_shard()?.map(|s| (s, true)),
     };
     let options = UncertaintyOptions {
         method,

@@ -5,6 +5,7 @@
 //! schema requires are still `Option` here: stage two reports their absence with the
 //! table's line and an example, which serde's "missing field" cannot.
 
+use std::collections::BTreeMap;
 use std::fmt;
 
 use serde::de::{self, Deserializer, Visitor};
@@ -116,7 +117,7 @@ pub struct RawProblem {
     pub optimizer: Option<Spanned<RawOptimizer>>,
     pub environment: Option<Spanned<RawEnvironment>>,
     pub stiction: Option<Spanned<RawStiction>>,
-    pub uncertainty: Option<Spanned<super::uncertainty::RawUncertainty>>,
+    pub uncertainty: Option<Spanned<RawUncertainty>>,
 }
 
 /// `[environment]`: the humid air around the contact (docs/model.md §9).
@@ -276,4 +277,52 @@ pub struct RawOptimizer {
     pub tolerance: Option<Spanned<RawQuantity>>,
     pub max_iterations: Option<Spanned<RawInteger>>,
     pub time_limit: Option<Spanned<RawQuantity>>,
+}
+
+/// `[uncertainty]` as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawUncertainty {
+    pub samples: Option<Spanned<RawInteger>>,
+    pub seed: Option<Spanned<RawInteger>>,
+    pub outputs: Option<Spanned<Vec<Spanned<String>>>>,
+    pub inputs: Option<Spanned<BTreeMap<String, Spanned<RawInput>>>>,
+    #[serde(default)]
+    pub correlation: Vec<Spanned<RawCorrelation>>,
+    #[serde(default)]
+    pub event: Vec<Spanned<RawEvent>>,
+}
+
+/// One `[uncertainty.inputs]` entry as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawInput {
+    pub distribution: Option<Spanned<String>>,
+    pub median: Option<Spanned<RawQuantity>>,
+    pub factor: Option<Spanned<RawQuantity>>,
+    pub mean: Option<Spanned<RawQuantity>>,
+    pub sd: Option<Spanned<RawQuantity>>,
+    pub min: Option<Spanned<RawQuantity>>,
+    pub max: Option<Spanned<RawQuantity>>,
+    pub mode: Option<Spanned<RawQuantity>>,
+    pub alpha: Option<Spanned<RawQuantity>>,
+    pub beta: Option<Spanned<RawQuantity>>,
+}
+
+/// One `[[uncertainty.correlation]]` as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCorrelation {
+    pub between: Option<Spanned<Vec<Spanned<String>>>>,
+    pub rho: Option<Spanned<f64>>,
+}
+
+/// One `[[uncertainty.event]]` as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawEvent {
+    pub name: Option<Spanned<String>>,
+    pub quantity: Option<Spanned<String>>,
+    pub above: Option<Spanned<RawQuantity>>,
+    pub below: Option<Spanned<RawQuantity>>,
 }

@@ -5,10 +5,9 @@
 use std::collections::BTreeMap;
 use std::ops::Range;
 
-use serde::Deserialize;
 use toml::Spanned;
 
-use super::raw::{RawInteger, RawQuantity};
+use super::raw::{RawEvent, RawInput, RawUncertainty};
 use super::{Accept, ProblemError, Reader};
 use crate::model::{Quantity, Role, Scene, SceneParameter};
 use crate::units::{parse_quantity, Dimension};
@@ -25,54 +24,6 @@ pub const DEFAULT_SAMPLES: u64 = 4096;
 /// Above this probability of a non-positive value a normal law is refused on a
 /// quantity that must be positive.
 pub const NORMAL_NEGATIVE_TAIL: f64 = 1e-9;
-
-/// `[uncertainty]` as written.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawUncertainty {
-    samples: Option<Spanned<RawInteger>>,
-    seed: Option<Spanned<RawInteger>>,
-    outputs: Option<Spanned<Vec<Spanned<String>>>>,
-    inputs: Option<Spanned<BTreeMap<String, Spanned<RawInput>>>>,
-    #[serde(default)]
-    correlation: Vec<Spanned<RawCorrelation>>,
-    #[serde(default)]
-    event: Vec<Spanned<RawEvent>>,
-}
-
-/// One `[uncertainty.inputs]` entry as written.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawInput {
-    distribution: Option<Spanned<String>>,
-    median: Option<Spanned<RawQuantity>>,
-    factor: Option<Spanned<RawQuantity>>,
-    mean: Option<Spanned<RawQuantity>>,
-    sd: Option<Spanned<RawQuantity>>,
-    min: Option<Spanned<RawQuantity>>,
-    max: Option<Spanned<RawQuantity>>,
-    mode: Option<Spanned<RawQuantity>>,
-    alpha: Option<Spanned<RawQuantity>>,
-    beta: Option<Spanned<RawQuantity>>,
-}
-
-/// One `[[uncertainty.correlation]]` as written.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawCorrelation {
-    between: Option<Spanned<Vec<Spanned<String>>>>,
-    rho: Option<Spanned<f64>>,
-}
-
-/// One `[[uncertainty.event]]` as written.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawEvent {
-    name: Option<Spanned<String>>,
-    quantity: Option<Spanned<String>>,
-    above: Option<Spanned<RawQuantity>>,
-    below: Option<Spanned<RawQuantity>>,
-}
 
 /// One uncertain input: a scene parameter and its law (SI units).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
