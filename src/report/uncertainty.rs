@@ -19,7 +19,7 @@ use crate::problem::{Event, UncertainInput};
 use crate::sweep::Shard;
 use crate::units::{format_quantity, Dimension};
 use crate::uq::distribution::Distribution;
-use crate::uq::reliability::{EventResult, EventStatus, SamplingMethod};
+use crate::uq::reliability::{EventResult, EventStatus, FormStatus, SamplingMethod};
 use crate::uq::sobol::SobolStatus;
 use crate::uq::Estimate;
 
@@ -187,7 +187,7 @@ fn status_name(s: EventStatus) -> &'static str {
 fn status_words(s: EventStatus) -> &'static str {
     match s {
         EventStatus::Converged => {
-            "the sampled probability reached its precision (coefficient of variation ≤ 0.1) and FORM agrees with it"
+            "the sampled probability reached its precision (coefficient of variation ≤ 0.1)"
         }
         EventStatus::MultipleDesignPoints => {
             "converged; FORM found several design points (the failure domain has several parts), the sampled value counts them all"
@@ -205,6 +205,18 @@ fn status_words(s: EventStatus) -> &'static str {
             "the event does not depend on the uncertain inputs near their median (zero gradient)"
         }
         EventStatus::ModelFailed => "the model failed where FORM needed it",
+    }
+}
+
+/// Why FORM gave no design point, or None where it did.
+fn form_failure_words(s: FormStatus) -> Option<&'static str> {
+    match s {
+        FormStatus::Converged | FormStatus::MultipleDesignPoints => None,
+        FormStatus::NotConverged => Some("not converged within its iteration cap"),
+        FormStatus::ZeroGradient => {
+            Some("the limit state does not vary near the median (zero gradient)")
+        }
+        FormStatus::ModelFailed => Some("the model failed where FORM needed it"),
     }
 }
 
@@ -436,6 +448,13 @@ fn event_text(out: &mut String, event: &Event, r: &EventResult, doc: &Uncertaint
         );
     }
     let form = &r.form;
+    if let Some(why) = form_failure_words(form.status) {
+        let _ = writeln!(
+            out,
+            "  FORM: {why} (from {} starts): no design point; the probability is the sampled one alone, by Monte Carlo",
+            form.starts
+        );
+    }
     if let (Some(b), Some(p)) = (form.beta, form.probability) {
         let sorm = r
             .sorm
