@@ -234,10 +234,19 @@ fn p_text(p: f64) -> String {
 /// Said where a percentile's interval reaches beyond the sample.
 const BEYOND: &str = "— : the interval's end lies beyond the sample (too few samples in that tail to bound it): raise --samples";
 
+/// The statistics of an output, in the order every format gives them.
+const STATISTICS: [&str; 7] = ["mean", "sd", "p1", "p5", "p50", "p95", "p99"];
+
+/// Each of [`STATISTICS`] with its estimate.
+fn statistics(s: &crate::uq::sampling::SamplingSummary) -> [(&'static str, &Estimate); 7] {
+    let e = [&s.mean, &s.sd, &s.p1, &s.p5, &s.p50, &s.p95, &s.p99];
+    std::array::from_fn(|k| (STATISTICS[k], e[k]))
+}
+
 fn beyond_the_sample(s: &crate::uq::sampling::SamplingSummary) -> bool {
-    [&s.mean, &s.sd, &s.p1, &s.p5, &s.p50, &s.p95, &s.p99]
+    statistics(s)
         .iter()
-        .any(|e| !(e.interval[0].is_finite() && e.interval[1].is_finite()))
+        .any(|(_, e)| !(e.interval[0].is_finite() && e.interval[1].is_finite()))
 }
 
 /// The text report.
@@ -363,15 +372,7 @@ pub fn text(doc: &UncertaintyDocument) -> String {
                     );
                 }
                 let d = o.quantity.dimension();
-                for (label, e) in [
-                    ("mean", &s.mean),
-                    ("sd", &s.sd),
-                    ("p1", &s.p1),
-                    ("p5", &s.p5),
-                    ("p50", &s.p50),
-                    ("p95", &s.p95),
-                    ("p99", &s.p99),
-                ] {
+                for (label, e) in statistics(s) {
                     let _ = writeln!(out, "  {label:<5} {}", interval_text(e, d));
                 }
                 if beyond_the_sample(s) {
@@ -609,15 +610,7 @@ pub fn json_value(doc: &UncertaintyDocument) -> Value {
             for (o, s) in doc.outputs.iter().zip(summaries) {
                 let mut row = serde_json::Map::new();
                 row.insert("name".into(), json!(o.quantity.as_str()));
-                for (label, e) in [
-                    ("mean", &s.mean),
-                    ("sd", &s.sd),
-                    ("p1", &s.p1),
-                    ("p5", &s.p5),
-                    ("p50", &s.p50),
-                    ("p95", &s.p95),
-                    ("p99", &s.p99),
-                ] {
+                for (label, e) in statistics(s) {
                     row.insert(label.into(), json!(e.value));
                     row.insert(format!("{label}_interval"), interval_json(e.interval));
                 }
@@ -751,15 +744,14 @@ pub fn csv(doc: &UncertaintyDocument) -> String {
             }
         }
         Analysis::Sampling { summaries, .. } => {
-            let stats = ["mean", "sd", "p1", "p5", "p50", "p95", "p99"];
             out.push_str("name");
-            for s in stats {
+            for s in STATISTICS {
                 let _ = write!(out, ",{s},{s}_low,{s}_high");
             }
             out.push('\n');
             for (o, s) in doc.outputs.iter().zip(summaries) {
                 out.push_str(o.quantity.as_str());
-                for e in [&s.mean, &s.sd, &s.p1, &s.p5, &s.p50, &s.p95, &s.p99] {
+                for (_, e) in statistics(s) {
                     let _ = write!(
                         out,
                         ",{},{},{}",
@@ -1047,24 +1039,16 @@ pub fn html(doc: &UncertaintyDocument) -> String {
                 }
                 p.list(&notes, "warn");
                 let d = o.quantity.dimension();
-                let rows: Vec<Vec<String>> = [
-                    ("mean", &s.mean),
-                    ("sd", &s.sd),
-                    ("p1", &s.p1),
-                    ("p5", &s.p5),
-                    ("p50", &s.p50),
-                    ("p95", &s.p95),
-                    ("p99", &s.p99),
-                ]
-                .iter()
-                .map(|(l, e)| {
-                    vec![
-                        l.to_string(),
-                        q(e.value, d),
-                        format!("[{}, {}]", q(e.interval[0], d), q(e.interval[1], d)),
-                    ]
-                })
-                .collect();
+                let rows: Vec<Vec<String>> = statistics(s)
+                    .iter()
+                    .map(|(l, e)| {
+                        vec![
+                            l.to_string(),
+                            q(e.value, d),
+                            format!("[{}, {}]", q(e.interval[0], d), q(e.interval[1], d)),
+                        ]
+                    })
+                    .collect();
                 p.table(&["statistic", "value", "95 % interval"], &rows, &[]);
                 if beyond_the_sample(s) {
                     p.paragraph(BEYOND, Some("note"));
