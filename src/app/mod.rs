@@ -26,6 +26,7 @@ pub mod humidity;
 pub mod optimize;
 pub mod pareto;
 pub mod quantity;
+pub mod robust;
 pub mod roughness;
 pub mod sweep;
 pub mod uncertainty;

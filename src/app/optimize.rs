@@ -9,6 +9,7 @@ use crate::problem::{catalogue, Problem};
 
 use super::{study, valid_scene, AppError};
 
+pub use super::robust::RobustOutcome;
 pub use crate::optimize::materials::MaterialRanking;
 pub use crate::optimize::{ObserverFactory, OptimizationStatus, Optimum, SqpState, StartObserver};
 
@@ -90,6 +91,9 @@ pub enum OptimizeDocument {
         baseline_violations: Vec<BaselineViolation>,
         /// The optimum's load–separation curve, when asked for.
         load_curve: Option<LoadCurve>,
+        /// A robust study's optimum (a statistic objective or chance
+        /// constraints), beside the nominal `optimum`.
+        robust: Option<Box<RobustOutcome>>,
     },
     /// One study per material, ranked.
     Ranking {
@@ -105,9 +109,12 @@ impl OptimizeDocument {
     /// no material meeting every constraint): the command line's exit code 1.
     pub fn failed(&self) -> bool {
         match self {
-            OptimizeDocument::Optimum { optimum, .. } => {
-                optimum.status == OptimizationStatus::Infeasible
-            }
+            OptimizeDocument::Optimum {
+                optimum, robust, ..
+            } => match robust {
+                Some(r) => r.failed(),
+                None => optimum.status == OptimizationStatus::Infeasible,
+            },
             OptimizeDocument::Ranking { ranking, .. } => ranking.best().is_none(),
         }
     }
@@ -126,8 +133,23 @@ pub fn optimize(
         error,
     };
     if problem.study.materials.is_empty() {
-        let optimum = crate::optimize::optimize_observed(&study(problem), options.observers)
+        let deadline = std::time::Instant::now() + problem.study.optimizer.time_limit;
+        // A robust study's nominal twin holds each chance constraint's event
+        // off at the nominal inputs (app::robust::nominal_counterparts).
+        let mut constraints = problem.study.constraints.clone();
+        constraints.extend(super::robust::nominal_counterparts(problem));
+        let nominal_study = crate::optimize::Study {
+            constraints: &constraints,
+            ..study(problem)
+        };
+        let optimum = crate::optimize::optimize_observed(&nominal_study, options.observers)
             .map_err(optimize_error)?;
+        let robust = problem
+            .robust
+            .is_robust()
+            .then(|| super::robust::robust(problem, &optimum, deadline))
+            .flatten()
+            .map(Box::new);
         let load_curve = options.load_curve_points.map(|n| {
             model::load_curve(
                 &optimum.scene,
@@ -141,6 +163,7 @@ pub fn optimize(
             baseline_violations: baseline_violations(&optimum),
             optimum: Box::new(optimum),
             load_curve,
+            robust,
         });
     }
     let materials = problem

@@ -49,6 +49,7 @@ mod error;
 mod locate;
 pub mod notes;
 pub(crate) mod raw;
+pub mod robust;
 pub mod scan_contact;
 mod study;
 mod topography;
@@ -64,6 +65,7 @@ use toml::Spanned;
 pub(crate) use error::suggest;
 pub use error::{Location, ProblemError};
 pub use notes::{BodyKey, CatalogueProperty, InputNote};
+pub use robust::{ChanceConstraint, Robust};
 pub(crate) use study::DesignKeys;
 pub use study::{Dimensioned, Study};
 pub use topography::{ContactModel, ScanSource};
@@ -101,6 +103,9 @@ pub struct Problem {
     pub scan: Option<ScanSource>,
     /// `[uncertainty]`: the inputs' distributions, outputs and events, if given.
     pub uncertainty: Option<Uncertainty>,
+    /// A statistic objective, chance constraints, and how they are verified
+    /// (empty for a nominal study).
+    pub robust: Robust,
 }
 
 /// Reads and validates a problem file. The file must be UTF-8; its path (as given) is
@@ -941,7 +946,15 @@ impl Problem {
             .as_ref()
             .map(|u| r.uncertainty(u, &scene))
             .transpose()?;
+        let robust = r.robust(
+            &raw,
+            &scene,
+            &study,
+            uncertainty.as_ref(),
+            raw.uncertainty.as_ref().map(|u| u.span()),
+        )?;
         Ok(Problem {
+            robust,
             name,
             scene,
             study,
@@ -1354,6 +1367,31 @@ impl Reader<'_> {
 
         // [[constraint]]
         for (index, constraint) in raw.constraint.iter().enumerate() {
+            let rc = constraint.get_ref();
+            if robust::is_chance(rc) {
+                // A chance constraint: read with [uncertainty] (robust.rs).
+                for (key, given) in [
+                    ("quantity", rc.quantity.as_ref().map(|v| v.span())),
+                    ("min", rc.min.as_ref().map(|v| v.span())),
+                    ("max", rc.max.as_ref().map(|v| v.span())),
+                ] {
+                    if let Some(span) = given {
+                        return Err(self.invalid(
+                            &format!("constraint[{index}].{key}"),
+                            &span,
+                            "a chance constraint bounds the probability of its event (event = …, probability_max = …); a limit on a quantity goes in a [[constraint]] of its own, or in the event: event = { quantity = \"wear_rate\", above = \"50 um^3/m\" }",
+                        ));
+                    }
+                }
+                continue;
+            }
+            if let Some(p) = &rc.probability_max {
+                return Err(self.invalid(
+                    &format!("constraint[{index}].probability_max"),
+                    &p.span(),
+                    "bounds the probability of an event: give event = \"stiction\" (or wear_out, or { quantity = …, above = … }) beside it",
+                ));
+            }
             let c = self.constraint(index, constraint)?;
             let needs = match c.quantity {
                 ConstraintQuantity::ReleaseMargin => (scene.load >= 0.0)

@@ -248,6 +248,10 @@ pub struct RawDesign {
 #[serde(deny_unknown_fields)]
 pub struct RawObjective {
     pub minimize: Option<Spanned<String>>,
+    /// A statistic over the uncertain inputs (`"p95"`, …) instead of the nominal value.
+    pub statistic: Option<Spanned<String>>,
+    /// The common random numbers the statistic is taken over.
+    pub samples: Option<Spanned<RawInteger>>,
 }
 
 /// One `[[constraint]]`.
@@ -257,6 +261,11 @@ pub struct RawConstraint {
     pub quantity: Option<Spanned<String>>,
     pub min: Option<Spanned<RawQuantity>>,
     pub max: Option<Spanned<RawQuantity>>,
+    /// A chance constraint's event: `"stiction"`, `"wear_out"`, the name of an
+    /// `[[uncertainty.event]]`, or `{ quantity = …, above = … }`.
+    pub event: Option<Spanned<toml::Value>>,
+    /// A chance constraint's largest probability.
+    pub probability_max: Option<Spanned<RawQuantity>>,
 }
 
 /// `[pareto]`.
@@ -284,6 +293,9 @@ pub struct RawOptimizer {
 #[serde(deny_unknown_fields)]
 pub struct RawUncertainty {
     pub samples: Option<Spanned<RawInteger>>,
+    /// What a robust study does when sampling contradicts a chance constraint's
+    /// FORM-based design: `"report"` or `"correct"`.
+    pub verify: Option<Spanned<String>>,
     pub seed: Option<Spanned<RawInteger>>,
     pub outputs: Option<Spanned<Vec<Spanned<String>>>>,
     pub inputs: Option<Spanned<BTreeMap<String, Spanned<RawInput>>>>,

@@ -512,13 +512,24 @@ impl Reader<'_> {
 
     /// One `[[uncertainty.event]]`.
     fn event(&self, e: &Spanned<RawEvent>, scene: &Scene) -> Result<Event, ProblemError> {
+        self.event_at("uncertainty.event", e, scene)
+    }
+
+    /// An event as written at `key` (`uncertainty.event`, or a chance
+    /// constraint's `constraint[i].event`).
+    pub(super) fn event_at(
+        &self,
+        key: &str,
+        e: &Spanned<RawEvent>,
+        scene: &Scene,
+    ) -> Result<Event, ProblemError> {
         let span = e.span();
         let raw = e.get_ref();
         if let Some(q) = &raw.quantity {
             let quantity = Quantity::from_key(q.get_ref()).ok_or_else(|| {
                 let names: Vec<&str> = Quantity::ALL.iter().map(|q| q.as_str()).collect();
                 self.invalid(
-                    "uncertainty.event.quantity",
+                    &format!("{key}.quantity"),
                     &q.span(),
                     format!("unknown quantity (one of: {})", names.join(", ")),
                 )
@@ -528,16 +539,16 @@ impl Reader<'_> {
                 (None, Some(b)) => (b, false),
                 _ => {
                     return Err(self.invalid(
-                        "uncertainty.event",
+                        key,
                         &span,
                         "an event on a quantity takes one threshold: above = … (failure above it) or below = …",
                     ))
                 }
             };
             let key = if above {
-                "uncertainty.event.above"
+                &format!("{key}.above")
             } else {
-                "uncertainty.event.below"
+                &format!("{key}.below")
             };
             let limit = self.quantity(key, bound, Accept::any(quantity.dimension()))?;
             let name = match &raw.name {
@@ -550,7 +561,7 @@ impl Reader<'_> {
             };
             if matches!(name.as_str(), "stiction" | "wear_out") {
                 return Err(self.invalid(
-                    "uncertainty.event.name",
+                    &format!("{key}.name"),
                     &span,
                     format!("`{name}` is a built-in event: name this one otherwise"),
                 ));
@@ -564,14 +575,14 @@ impl Reader<'_> {
         }
         if raw.above.is_some() || raw.below.is_some() {
             return Err(self.invalid(
-                "uncertainty.event",
+                key,
                 &span,
                 "a threshold (above, below) needs quantity = … (e.g. quantity = \"wear_rate\", above = \"50 um^3/m\")",
             ));
         }
         let name = self.required(
             &raw.name,
-            "uncertainty.event.name",
+            &format!("{key}.name"),
             Some(&span),
             "\"stiction\", \"wear_out\", or quantity = … with above = … or below = …",
         )?;
@@ -579,7 +590,7 @@ impl Reader<'_> {
             "stiction" => {
                 if scene.requirements.restoring_force.is_none() {
                     return Err(self.invalid(
-                        "uncertainty.event.name",
+                        &format!("{key}.name"),
                         &name.span(),
                         "stiction is the pull-off force reaching the restoring force: give contact.restoring_force",
                     ));
@@ -589,7 +600,7 @@ impl Reader<'_> {
             "wear_out" => {
                 if scene.requirements.allowed_wear_depth.is_none() {
                     return Err(self.invalid(
-                        "uncertainty.event.name",
+                        &format!("{key}.name"),
                         &name.span(),
                         "wear_out is the wear depth over the sliding distance beyond the allowed one: give contact.allowed_wear_depth",
                     ));
@@ -601,7 +612,7 @@ impl Reader<'_> {
                     .map(|s| format!("; did you mean \"{s}\"?"))
                     .unwrap_or_default();
                 Err(self.invalid(
-                    "uncertainty.event.name",
+                    &format!("{key}.name"),
                     &name.span(),
                     format!("unknown event{hint} (stiction, wear_out, or quantity = … with above = … or below = …)"),
                 ))

@@ -24,6 +24,7 @@ pub mod materials;
 pub mod optimize;
 pub mod pareto;
 pub(crate) mod png;
+pub mod robust;
 pub mod roughness;
 pub mod svg;
 pub mod sweep;

@@ -35,29 +35,27 @@ pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, F
                 name,
                 optimum,
                 baseline_violations,
+                robust,
                 ..
             },
             super::Format::Text,
-        ) => Ok(text(name, optimum, baseline_violations)),
-        (
-            OptimizeDocument::Optimum {
-                name,
-                optimum,
-                baseline_violations,
-                ..
-            },
-            super::Format::Json,
-        ) => Ok(super::json_text(&json_value(
-            name,
-            optimum,
-            baseline_violations,
-        ))),
+        ) => {
+            let nominal = text(name, optimum, baseline_violations);
+            Ok(match robust {
+                Some(r) => super::robust::text(name, r, optimum) + &nominal,
+                None => nominal,
+            })
+        }
+        (OptimizeDocument::Optimum { .. }, super::Format::Json) => {
+            Ok(super::json_text(&json_document(doc)))
+        }
         (
             OptimizeDocument::Optimum {
                 name,
                 optimum,
                 baseline_violations,
                 load_curve,
+                robust,
             },
             super::Format::Html,
         ) => Ok(html(
@@ -65,6 +63,7 @@ pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, F
             optimum,
             baseline_violations,
             load_curve.as_ref(),
+            robust.as_deref(),
         )),
         (OptimizeDocument::Ranking { name, ranking }, super::Format::Text) => {
             Ok(super::materials::text(name, ranking))
@@ -90,8 +89,15 @@ pub fn json_document(doc: &OptimizeDocument) -> Value {
             name,
             optimum,
             baseline_violations,
+            robust,
             ..
-        } => json_value(name, optimum, baseline_violations),
+        } => {
+            let mut v = json_value(name, optimum, baseline_violations);
+            if let (Some(r), Value::Object(obj)) = (robust, &mut v) {
+                obj.insert("robust".into(), super::robust::json_value(r, optimum));
+            }
+            v
+        }
         OptimizeDocument::Ranking { name, ranking } => super::materials::json_value(name, ranking),
     }
 }
@@ -449,8 +455,12 @@ pub fn html(
     o: &Optimum,
     broken: &[BaselineViolation],
     curve: Option<&crate::model::LoadCurve>,
+    robust: Option<&crate::app::robust::RobustOutcome>,
 ) -> String {
     let mut p = super::html::Page::new(&format!("wearopt optimize — {name}"));
+    if let Some(r) = robust {
+        super::robust::html_section(&mut p, r, o);
+    }
     p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status"));
     if let Some(n) = super::words::real_area_scale_note(o.scene.real_area_scale) {
         p.paragraph(&n, Some("note"));

@@ -32,6 +32,7 @@ pub mod distribution;
 pub mod model;
 pub mod morris;
 pub mod reliability;
+pub mod robust;
 pub mod sampling;
 pub mod sobol;
 
