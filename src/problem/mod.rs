@@ -1559,7 +1559,7 @@ impl Reader<'_> {
             &format!("{prefix}.quantity"),
             Some(&span),
             &format!(
-                "what to bound, one of: {}",
+                "what to bound, one of: {} (or, for a chance constraint, event = \"stiction\" with probability_max = 1e-3)",
                 ConstraintQuantity::names().join(", ")
             ),
         )?;

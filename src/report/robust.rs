@@ -340,6 +340,8 @@ pub fn json_value(r: &RobustOutcome, nominal: &Optimum) -> Value {
         "statistic": r.statistic.map(|s| s.as_str()),
         "samples": r.samples,
         "design": design,
+        "evaluation": super::words::evaluation_json(&r.evaluation),
+        "warnings": super::words::warnings(&r.evaluation),
         "objective": estimate_json(&r.result.objective),
         "objective_verified": r.result.objective_verified.as_ref().map(estimate_json),
         "at_robust_design": sample_json(&r.robust_sample),
@@ -368,7 +370,20 @@ pub fn distribution_svg(r: &RobustOutcome, o: Objective) -> String {
             .collect()
     };
     let unit = o.quantity().dimension().si_unit();
-    let mut x = Axis::log(o.as_str());
+    let all = r
+        .robust_sample
+        .values
+        .iter()
+        .chain(&r.nominal_sample.values);
+    let (lo, hi) = all
+        .filter(|v| **v > 0.0)
+        .fold((f64::INFINITY, 0.0_f64), |(a, b), &v| (a.min(v), b.max(v)));
+    // Within a decade a linear axis shows the shapes; a log axis squeezes them.
+    let mut x = if hi > 0.0 && hi < 10.0 * lo {
+        Axis::linear(o.as_str())
+    } else {
+        Axis::log(o.as_str())
+    };
     if !unit.is_empty() {
         x = x.with_unit(unit);
     }
