@@ -71,9 +71,18 @@ fn the_shipped_robust_hub_meets_its_targets_where_the_nominal_one_fails_half() {
         (num(&doc["evaluation"]["indices"]["plasticity_index"]) - 1.0).abs() < 1e-6,
         "the nominal optimum is on its limit"
     );
-    // Stiction is far from binding at both: importance sampling sees it.
-    assert_eq!(r["chance_constraints"][1]["event"], "stiction");
-    assert!(num(&r["chance_constraints"][1]["probability"]) < 1e-6);
+    // Stiction binds too (the Lennard-Jones pull-off): met at the robust design
+    // to its interval, above its target at the nominal optimum, whose pull-off
+    // limit holds only at the medians.
+    let stiction = &r["chance_constraints"][1];
+    assert_eq!(stiction["event"], "stiction");
+    assert_eq!(stiction["violated"], false, "{stiction}");
+    assert!(
+        num(&stiction["probability_interval"][0]) <= 1e-3,
+        "{stiction}"
+    );
+    let nominal = &r["chance_at_nominal_optimum"][1];
+    assert!(num(&nominal["probability_interval"][0]) > 1e-3, "{nominal}");
     // The p95 on the common random numbers and on an independent sample of
     // 4096 agree within the first's stated interval.
     let o = &r["objective"];
@@ -113,6 +122,10 @@ fn normal_hardness_study(dir: &std::path::Path, verify: &str) -> std::path::Path
         )
         .replace("statistic = \"p95\"", "")
         .replace("samples = 256", "")
+        .replace(
+            "[[constraint]]                  # at most 1 hub in 1000 stuck to its pin\nevent = \"stiction\"\nprobability_max = 1e-3\n",
+            "",
+        )
         .replace("verify = \"report\"", &format!("verify = \"{verify}\""));
     let path = dir.join(format!("normal-hardness-{verify}.toml"));
     std::fs::write(&path, text).unwrap();
@@ -170,11 +183,25 @@ fn sampling_flags_a_form_design_that_is_unconservative_and_correct_mends_it() {
 /// The text report words both designs and every verdict.
 #[test]
 fn the_text_report_puts_the_robust_optimum_beside_the_nominal_one() {
-    let out = String::from_utf8(common::stdout(wearopt().args(["optimize", SHIPPED]), 0)).unwrap();
+    let dir = scratch("text");
+    let path = dir.join("no-statistic.toml");
+    std::fs::write(
+        &path,
+        std::fs::read_to_string(SHIPPED)
+            .unwrap()
+            .replace("statistic = \"p95\"", "")
+            .replace("samples = 256", ""),
+    )
+    .unwrap();
+    let out = String::from_utf8(common::stdout(
+        wearopt().args(["optimize", path.to_str().unwrap()]),
+        0,
+    ))
+    .unwrap();
     for want in [
         "Robust optimum — status: optimal",
         "robust  nominal optimum         baseline",
-        "p95 of wear_rate",
+        "mean of wear_rate",
         "P(plasticity_index > 1) ≤",
         "at the nominal optimum: P(plasticity_index > 1) = 0.",
         "The nominal optimum (every input at its nominal value)",
@@ -236,4 +263,46 @@ fn bad_robust_input_names_the_field() {
         .unwrap();
         assert!(err.contains(field), "{what}: {err}");
     }
+}
+
+/// The p95 of the shipped study at its robust design against a check of 2²⁰
+/// scrambled points of another seed (the 10⁶-sample check): inside the
+/// interval the report states for it.
+#[test]
+#[ignore = "2^20 evaluations of the hub: cargo test --release --test all -- --ignored robust_design::p95_campaign"]
+fn p95_campaign() {
+    use wearopt::app::optimize::{optimize, OptimizeDocument};
+    use wearopt::app::robust::RobustProgram;
+    use wearopt::uq::robust::{common_points, estimate, Statistic, UncertainProgram};
+    let problem = wearopt::problem::load(std::path::Path::new(SHIPPED)).unwrap();
+    let doc = optimize(&problem, SHIPPED, Default::default()).unwrap();
+    let OptimizeDocument::Optimum { robust, .. } = doc else {
+        panic!("an optimum")
+    };
+    let r = robust.expect("a robust study");
+    let program = RobustProgram::new(&problem).unwrap();
+    let d = &r.result.design;
+    let model = program.inputs(d);
+    let points = common_points(model.dim(), 1 << 20, 12345);
+    let values: Vec<f64> = {
+        use rayon::prelude::*;
+        points
+            .par_iter()
+            .filter_map(|u| {
+                program
+                    .outputs(d, &model.to_physical(u))
+                    .map(|o| o.objective)
+            })
+            .collect()
+    };
+    let check = estimate(&values, Statistic::P95);
+    let stated = r.robust_sample.statistic;
+    eprintln!("p95 {stated:?}; 2^20-point check {check:?}");
+    assert!(
+        stated.interval[0] <= check.value && check.value <= stated.interval[1],
+        "check {} outside the stated [{}, {}]",
+        check.value,
+        stated.interval[0],
+        stated.interval[1]
+    );
 }
