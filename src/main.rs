@@ -1,4 +1,8 @@
-//! `wearopt`: thin entry point; see `cli.rs`.
+//! `wearopt`: the command line's thin entry point. It parses the arguments with clap
+//! and hands them to `cli/` (one module per command, `cli/mod.rs` the dispatcher),
+//! which calls the application layer (`wearopt::app`) and the report stage; exit
+//! codes: 0 success, 1 a result that is no answer (infeasible, not converged), 2 bad
+//! input.
 
 mod cli;
 
