@@ -151,6 +151,48 @@ fn youn_choi_corrected_meets_the_target_by_sampling() {
     );
 }
 
+/// One SORA cycle is the deterministic design at the median: the corner where g1
+/// and g2 vanish at x = d (d ≈ (3.1139, 2.0626), f ≈ 5.1765); every MPTP then moves
+/// from 0 onto its sphere |u| = β (a change of |u*|/β = 1), so with
+/// `max_cycles = 1` the status is `cycle_limit`. Invalid settings evaluate
+/// nothing and say `stalled`.
+#[test]
+fn youn_choi_cycle_limit_and_bad_settings() {
+    let p = std_normal_cdf(-3.0);
+    let settings = RobustSettings {
+        targets: vec![p; 3],
+        max_cycles: 1,
+        ..RobustSettings::default()
+    };
+    let r = optimize_robust(&YounChoi { sd: 0.3 }, &[vec![5.0, 5.0]], &settings);
+    assert_eq!(r.status, RobustStatus::CycleLimit);
+    assert_eq!(r.history.len(), 1);
+    assert!(
+        (r.history[0].shift_change - 1.0).abs() < 1e-12,
+        "{:?}",
+        r.history[0]
+    );
+    let at = YounChoi { sd: 0.3 }.outputs(&r.design, &r.design).unwrap();
+    assert!(
+        at.limit_states[0].abs() < 1e-7 && at.limit_states[1].abs() < 1e-7,
+        "{at:?}"
+    );
+    assert!(at.limit_states[2] > 0.0);
+    // The deterministic optimum costs less than the reliable one.
+    assert!(r.objective.value < 6.7257 - 1.0, "{}", r.objective.value);
+    let bad = RobustSettings {
+        targets: vec![0.7; 3],
+        ..RobustSettings::default()
+    };
+    assert!(bad
+        .validate()
+        .unwrap_err()
+        .to_string()
+        .contains("targets = 0.7"));
+    let r = optimize_robust(&YounChoi { sd: 0.3 }, &[vec![5.0, 5.0]], &bad);
+    assert_eq!((r.status, r.evaluations), (RobustStatus::Stalled, 0));
+}
+
 /// s = 0.6, β_t = 2: d = (3.6089, 3.6593), f = 7.2683 (Youn & Choi 2004, Table 3).
 #[test]
 fn youn_choi_wider_scatter() {
@@ -165,7 +207,17 @@ fn youn_choi_wider_scatter() {
 /// of f is (d − 2)² + d·c with c = S of N(0, 1) (mean 0, p95 z₀.₉₅, p99 z₀.₉₉,
 /// CVaR₉₅ φ(z₀.₉₅)/0.05, mean + 3 sd = 3), minimised at d* = 2 − c/2 with
 /// S* = 2c − c²/4 (closed form).
-struct Quadratic;
+struct Quadratic {
+    /// A deterministic row d ≤ cap.
+    cap: Option<f64>,
+    /// The objective is exp of the above, minimised in logarithms.
+    exponential: bool,
+}
+
+const QUADRATIC: Quadratic = Quadratic {
+    cap: None,
+    exponential: false,
+};
 
 impl UncertainProgram for Quadratic {
     fn dimension(&self) -> usize {
@@ -178,11 +230,15 @@ impl UncertainProgram for Quadratic {
         InputModel::independent(vec![Distribution::Normal { mean: 0.0, sd: 1.0 }]).unwrap()
     }
     fn outputs(&self, d: &[f64], x: &[f64]) -> Option<Outputs> {
+        let f = (d[0] - 2.0).powi(2) + d[0] * x[0];
         Some(Outputs {
-            objective: (d[0] - 2.0).powi(2) + d[0] * x[0],
+            objective: if self.exponential { f.exp() } else { f },
             limit_states: Vec::new(),
-            constraints: Vec::new(),
+            constraints: self.cap.map(|c| vec![d[0] - c]).unwrap_or_default(),
         })
+    }
+    fn logarithmic_objective(&self) -> bool {
+        self.exponential
     }
 }
 
@@ -208,7 +264,7 @@ fn statistic_objectives_meet_the_closed_form() {
             statistic: Some(statistic),
             ..RobustSettings::default()
         };
-        let r = optimize_robust(&Quadratic, &[vec![1.0]], &settings);
+        let r = optimize_robust(&QUADRATIC, &[vec![1.0]], &settings);
         assert_eq!(r.status, RobustStatus::Optimal, "{statistic}: {r:?}");
         let c = exact(statistic);
         let d = r.design[0];
@@ -248,6 +304,54 @@ fn statistic_objectives_meet_the_closed_form() {
             "{statistic}: ĉ = {c_hat}"
         );
     }
+}
+
+/// A deterministic row at the median: the mean (d − 2)² is least at d = 2, so
+/// with d ≤ 1.5 the optimum is the bound of the row, d = 1.5, S = 0.25 (exact on
+/// any sample: the mean of d·X over the CRN is d·x̄, x̄ ≈ 0 but not 0, so to
+/// 1.5·|x̄| ≤ 0.01).
+#[test]
+fn deterministic_rows_hold_at_the_median() {
+    let settings = RobustSettings {
+        statistic: Some(Statistic::Mean),
+        ..RobustSettings::default()
+    };
+    let program = Quadratic {
+        cap: Some(1.5),
+        exponential: false,
+    };
+    let r = optimize_robust(&program, &[vec![1.0]], &settings);
+    assert_eq!(r.status, RobustStatus::Optimal);
+    assert!((r.design[0] - 1.5).abs() < 1e-7, "{:?}", r.design);
+    assert!((r.objective.value - 0.25).abs() < 0.01, "{:?}", r.objective);
+    assert!(r.sqp.multipliers[0] > 0.0);
+}
+
+/// A logarithmic objective: the mean of e^{(d−2)² + dX} is e^{(d−2)² + d²/2}
+/// (lognormal mean), whose logarithm is least at d = 4/3 (closed form). The true
+/// mean at the design found lies in the verified interval, and the design is
+/// 4/3 to the sampling error of the 512 common random numbers.
+#[test]
+fn logarithmic_statistic_objective() {
+    let settings = RobustSettings {
+        statistic: Some(Statistic::Mean),
+        ..RobustSettings::default()
+    };
+    let program = Quadratic {
+        cap: None,
+        exponential: true,
+    };
+    let r = optimize_robust(&program, &[vec![1.0]], &settings);
+    assert_eq!(r.status, RobustStatus::Optimal);
+    let d = r.design[0];
+    let truth = ((d - 2.0).powi(2) + d * d / 2.0).exp();
+    let check = r.objective_verified.unwrap();
+    eprintln!(
+        "d = {d} (4/3), mean {:?}, verified {check:?}, exact {truth}",
+        r.objective
+    );
+    assert!(check.interval[0] <= truth && truth <= check.interval[1]);
+    assert!((d - 4.0 / 3.0).abs() < 0.02, "{d}");
 }
 
 /// splitmix64: a reproducible i.i.d. stream for the coverage test.
@@ -297,7 +401,7 @@ fn robust_results_do_not_depend_on_the_thread_count() {
             .unwrap()
             .install(|| {
                 let q = optimize_robust(
-                    &Quadratic,
+                    &QUADRATIC,
                     &[vec![1.0], vec![3.0]],
                     &RobustSettings {
                         statistic: Some(Statistic::Cvar95),
