@@ -244,6 +244,9 @@ pub struct InverseFormSettings {
     /// Central-difference step of the gradient in u, times max(1, |u_i|)
     /// (default 1e-6).
     pub gradient_step: f64,
+    /// Without a start, also search from ±β_t along each axis (2n more runs)
+    /// (default true; SORA warm-starts every search after its first).
+    pub multistart: bool,
 }
 
 impl Default for InverseFormSettings {
@@ -252,6 +255,7 @@ impl Default for InverseFormSettings {
             max_iterations: 100,
             tolerance: 1e-8,
             gradient_step: 1e-6,
+            multistart: true,
         }
     }
 }
@@ -296,11 +300,69 @@ pub struct InverseForm {
 /// iteration u ← u_AMV = −β_t ∇g/|∇g| with a line search along the sphere
 /// (the step from u towards u_AMV halved until g decreases), so that g never
 /// increases (plain AMV oscillates on concave g). Starts from `start` scaled
-/// onto the sphere, else from u_AMV at the median. The gradient is a central
-/// difference in u. β_t = 0 gives the median.
+/// onto the sphere; without one, from u_AMV at the median and, with
+/// `multistart`, also from ±β_t along each axis (in parallel), keeping the
+/// lowest performance (ties to the earlier start): the iteration stops at any
+/// point where ∇g is normal to the sphere, a maximum of g along it included
+/// (g = 5 − u₁ − u₂², β_t = 2: u_AMV at the median is (2, 0), g = 3, where the
+/// minimum is g = 0.75 at (0.5, ±1.94)). The gradient is a central difference
+/// in u. β_t = 0 gives the median.
 pub fn inverse_form<G>(
     model: &InputModel,
     g: G,
+    beta_target: f64,
+    start: Option<&[f64]>,
+    settings: &InverseFormSettings,
+) -> InverseForm
+where
+    G: Fn(&[f64]) -> Option<f64> + Sync,
+{
+    let first = inverse_form_from(model, &g, beta_target, start, settings);
+    if start.is_some() || !settings.multistart || beta_target <= 0.0 {
+        return first;
+    }
+    let n = model.dim();
+    let starts: Vec<Vec<f64>> = (0..n)
+        .flat_map(|i| {
+            [1.0, -1.0].map(|sign| {
+                let mut u = vec![0.0; n];
+                u[i] = sign * beta_target;
+                u
+            })
+        })
+        .collect();
+    let more: Vec<InverseForm> = starts
+        .par_iter()
+        .map(|u| inverse_form_from(model, &g, beta_target, Some(u), settings))
+        .collect();
+    let evaluations = first.evaluations + more.iter().map(|r| r.evaluations).sum::<usize>();
+    let usable = |r: &InverseForm| {
+        matches!(
+            r.status,
+            InverseFormStatus::Converged | InverseFormStatus::NotConverged
+        ) && r.performance.is_finite()
+    };
+    let mut best = first;
+    for r in more {
+        let better = match (usable(&r), usable(&best)) {
+            (true, false) => true,
+            (true, true) => {
+                r.performance < best.performance - 1e-12 * best.performance.abs().max(1.0)
+            }
+            _ => false,
+        };
+        if better {
+            best = r;
+        }
+    }
+    best.evaluations = evaluations;
+    best
+}
+
+/// [`inverse_form`] from one start.
+fn inverse_form_from<G>(
+    model: &InputModel,
+    g: &G,
     beta_target: f64,
     start: Option<&[f64]>,
     settings: &InverseFormSettings,
@@ -766,6 +828,10 @@ pub struct SoraCycle {
     pub sqp_status: SqpStatus,
     /// The new MPTPs' performance g_j(d, T_d(u*_j)) (≥ 0: FORM-feasible).
     pub performance: Vec<f64>,
+    /// The new MPTPs u*_j in standard normal space (the shifts of the next cycle).
+    pub mptp_u: Vec<Vec<f64>>,
+    /// The same in physical units at the cycle's design, x*_j = T_d(u*_j).
+    pub mptp_x: Vec<Vec<f64>>,
     /// The largest move of an MPTP in u from the previous cycle.
     pub shift_change: f64,
     /// The correction round (0: before any correction).
@@ -866,6 +932,8 @@ fn sora<P: UncertainProgram>(
             objective: sqp.objective,
             sqp_status: sqp.status,
             performance: mptp.iter().map(|m| m.performance).collect(),
+            mptp_u: mptp.iter().map(|m| m.u.clone()).collect(),
+            mptp_x: mptp.iter().map(|m| m.x.clone()).collect(),
             shift_change: change,
             round,
         });

@@ -3,14 +3,16 @@
 //! Hock–Schittkowski set tests the SQP), statistic objectives whose optimum is
 //! closed-form, the coverage of the statistics' intervals, and determinism.
 
+use wearopt::optimize::NonlinearProgram;
 use wearopt::uq::distribution::{
     std_normal_cdf, std_normal_pdf, std_normal_quantile, Distribution,
 };
 use wearopt::uq::model::InputModel;
 use wearopt::uq::reliability::SamplingMethod;
 use wearopt::uq::robust::{
-    estimate, optimize_robust, Outputs, RobustResult, RobustSettings, RobustStatus, Statistic,
-    UncertainProgram, Verify,
+    estimate, inverse_form, optimize_robust, InverseFormSettings, InverseFormStatus, Outputs,
+    RobustResult, RobustSettings, RobustStatus, ShiftedProgram, Statistic, UncertainProgram,
+    Verify,
 };
 
 /// Youn & Choi 2004 ("A new response surface methodology for reliability-based
@@ -191,6 +193,50 @@ fn youn_choi_cycle_limit_and_bad_settings() {
         .contains("targets = 0.7"));
     let r = optimize_robust(&YounChoi { sd: 0.3 }, &[vec![5.0, 5.0]], &bad);
     assert_eq!((r.status, r.evaluations), (RobustStatus::Stalled, 0));
+}
+
+/// The shifted program's rows are −g_j(d + s u*_j) for X ~ N(d, s²): SORA's
+/// shift of the mean by s·u*_j (Du & Chen 2004, eq. 14), held in u while d moves.
+#[test]
+fn shifted_rows_are_the_sora_shift() {
+    let program = YounChoi { sd: 0.3 };
+    let mptp = vec![vec![-2.0, -2.2], vec![1.0, 2.0], vec![0.5, -0.5]];
+    let shifted = ShiftedProgram::new(&program, None, &[], mptp.clone());
+    for d in [[3.0, 3.0], [5.0, 1.5]] {
+        let rows = shifted.constraints(&d).unwrap();
+        for (j, u) in mptp.iter().enumerate() {
+            let x = [d[0] + 0.3 * u[0], d[1] + 0.3 * u[1]];
+            let g = program.outputs(&d, &x).unwrap().limit_states[j];
+            assert!(
+                (rows[j] + g).abs() < 1e-12 * g.abs().max(1.0),
+                "{j}: {rows:?}"
+            );
+        }
+        assert_eq!(shifted.objective(&d), Some(d[0] + d[1]));
+    }
+}
+
+/// PMA on g = 5 − u₁ − u₂² (standard normal u), β_t = 2: on the circle u =
+/// 2(cos θ, sin θ), g = 1 − 2c + 4c², least at c = ¼: g = 0.75, u = (0.5, ±√3.75)
+/// (closed form). From the median alone the search stops at (2, 0), where ∇g is
+/// normal to the circle but g = 3 is its maximum along it; the multistart finds
+/// the minimum.
+#[test]
+fn inverse_form_multistart_finds_the_minimum_on_the_sphere() {
+    let model =
+        InputModel::independent(vec![Distribution::Normal { mean: 0.0, sd: 1.0 }; 2]).unwrap();
+    let g = |x: &[f64]| Some(5.0 - x[0] - x[1] * x[1]);
+    let single = InverseFormSettings {
+        multistart: false,
+        ..InverseFormSettings::default()
+    };
+    let r = inverse_form(&model, g, 2.0, None, &single);
+    assert!((r.performance - 3.0).abs() < 1e-9, "{r:?}");
+    let r = inverse_form(&model, g, 2.0, None, &InverseFormSettings::default());
+    assert_eq!(r.status, InverseFormStatus::Converged);
+    assert!((r.performance - 0.75).abs() < 1e-9, "{r:?}");
+    assert!((r.u[0] - 0.5).abs() < 1e-6 && (r.u[1].abs() - 3.75f64.sqrt()).abs() < 1e-6);
+    assert!(((r.u[0].powi(2) + r.u[1].powi(2)).sqrt() - 2.0).abs() < 1e-12);
 }
 
 /// s = 0.6, β_t = 2: d = (3.6089, 3.6593), f = 7.2683 (Youn & Choi 2004, Table 3).
