@@ -176,7 +176,7 @@ pub fn estimate(values: &[f64], statistic: Statistic) -> Estimate {
 /// The common random numbers: `samples` points u_k = Φ⁻¹(v_k) of independent
 /// standard normal variables in `dim` dimensions, v_k the points 0, 1, … of the
 /// Owen-scrambled Sobol′ sequence of `seed`. `dim` ≤ [`MAX_INPUTS`] (larger is
-/// cut to it).
+/// cut to it, which [`optimize_robust`] refuses).
 pub fn common_points(dim: usize, samples: usize, seed: u64) -> Vec<Vec<f64>> {
     let dim = dim.min(MAX_INPUTS);
     (0..samples as u64)
@@ -988,8 +988,9 @@ fn rank(r: &Run, feasibility: f64) -> (u8, f64) {
 /// raised by β_t − β̂ (β̂ = −Φ⁻¹(sampled P)) and SORA re-run from the design,
 /// until no constraint is violated or `max_corrections` rounds have run.
 ///
-/// Invalid settings ([`RobustSettings::validate`]) or no start give status
-/// `stalled` at the first start (or the lower bounds) without evaluating.
+/// Invalid settings ([`RobustSettings::validate`]), no start, or a statistic
+/// over more than [`MAX_INPUTS`] random inputs give status `stalled` at the
+/// first start (or the lower bounds) without evaluating.
 pub fn optimize_robust<P: UncertainProgram>(
     program: &P,
     starts: &[Vec<f64>],
@@ -997,7 +998,11 @@ pub fn optimize_robust<P: UncertainProgram>(
 ) -> RobustResult {
     let s = settings;
     let n = program.dimension();
-    if s.validate().is_err() || starts.is_empty() {
+    let too_many_inputs = s.statistic.is_some()
+        && starts
+            .first()
+            .is_some_and(|d| program.inputs(d).dim() > MAX_INPUTS);
+    if s.validate().is_err() || starts.is_empty() || too_many_inputs {
         let x = starts
             .first()
             .cloned()
@@ -1095,7 +1100,7 @@ pub fn optimize_robust<P: UncertainProgram>(
             }
         }
         Some(stat) => {
-            let values = statistic_sample(program, &d, &points);
+            let values = objective_values(program, &d, &points);
             evaluations += points.len();
             estimate(&values, stat)
         }
@@ -1104,7 +1109,7 @@ pub fn optimize_robust<P: UncertainProgram>(
         Some(stat) if s.verify_samples > 0 => {
             let fresh = common_points(dim_x, s.verify_samples, s.seed.wrapping_add(1));
             evaluations += fresh.len();
-            Some(estimate(&statistic_sample(program, &d, &fresh), stat))
+            Some(estimate(&objective_values(program, &d, &fresh), stat))
         }
         _ => None,
     };
@@ -1132,9 +1137,14 @@ pub fn optimize_robust<P: UncertainProgram>(
     }
 }
 
-/// The objective at design d and each of `points` (in order; failed ones NaN,
-/// which [`estimate`] drops).
-fn statistic_sample<P: UncertainProgram>(program: &P, d: &[f64], points: &[Vec<f64>]) -> Vec<f64> {
+/// The objective at design d and each of `points` (u in standard normal space,
+/// e.g. [`common_points`]), evaluated in parallel and returned in order; failed
+/// ones NaN, which [`estimate`] drops.
+pub fn objective_values<P: UncertainProgram>(
+    program: &P,
+    d: &[f64],
+    points: &[Vec<f64>],
+) -> Vec<f64> {
     let model = program.inputs(d);
     points
         .par_iter()
@@ -1144,6 +1154,35 @@ fn statistic_sample<P: UncertainProgram>(program: &P, d: &[f64], points: &[Vec<f
                 .map_or(f64::NAN, |o| o.objective)
         })
         .collect()
+}
+
+/// The sampled probability P(g_j ≤ 0) of each of the first `count` limit states
+/// at design d ([`reliability::analyze`] with `reliability`, e.g.
+/// [`verification_settings`]), one after the other (each parallel inside).
+pub fn chance_probabilities<P: UncertainProgram>(
+    program: &P,
+    d: &[f64],
+    count: usize,
+    reliability: &ReliabilitySettings,
+) -> Vec<EventResult> {
+    let model = program.inputs(d);
+    (0..count)
+        .map(|j| {
+            let g = |x: &[f64]| {
+                program
+                    .outputs(d, x)
+                    .and_then(|o| o.limit_states.get(j).copied())
+            };
+            reliability::analyze(&model, g, reliability)
+        })
+        .collect()
+}
+
+/// Whether a sampled probability violates its target: the lower end of its
+/// 95 % interval exceeds `target` (no interval, as with FORM alone or no failure
+/// seen: not violated).
+pub fn violates(result: &EventResult, target: f64) -> bool {
+    result.interval.is_some_and(|i| i[0] > target)
 }
 
 /// The verification of each chance constraint at design d, and the model
@@ -1156,19 +1195,14 @@ fn verify<P: UncertainProgram>(
     target_betas: &[f64],
     s: &RobustSettings,
 ) -> (Vec<ChanceReport>, usize) {
-    let model = program.inputs(d);
-    let mut evaluations = 0;
-    let reports = (0..s.targets.len())
-        .map(|j| {
-            let g = |x: &[f64]| {
-                program
-                    .outputs(d, x)
-                    .and_then(|o| o.limit_states.get(j).copied())
-            };
-            let verification = reliability::analyze(&model, g, &s.reliability);
-            evaluations += verification.evaluations;
+    let results = chance_probabilities(program, d, s.targets.len(), &s.reliability);
+    let evaluations = results.iter().map(|r| r.evaluations).sum();
+    let reports = results
+        .into_iter()
+        .enumerate()
+        .map(|(j, verification)| {
             let target = s.targets[j];
-            let violated = verification.interval.is_some_and(|i| i[0] > target);
+            let violated = violates(&verification, target);
             let excess = verification.probability.map(|p| p / target - 1.0);
             let corrected = pma_betas[j] != target_betas[j];
             ChanceReport {
