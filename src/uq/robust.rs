@@ -501,6 +501,11 @@ pub struct ShiftedProgram<'a, P: UncertainProgram> {
     pub points: &'a [Vec<f64>],
     /// u*_j per chance constraint.
     pub mptp: Vec<Vec<f64>>,
+    /// At most this many of the common random numbers may fail at a design
+    /// (they are dropped from the statistic); more, and the design cannot be
+    /// evaluated (default 0 from [`ShiftedProgram::new`]). A point that fails
+    /// at some designs and not at others makes the statistic jump there.
+    pub failures_allowed: usize,
     evaluations: AtomicUsize,
 }
 
@@ -517,6 +522,7 @@ impl<'a, P: UncertainProgram> ShiftedProgram<'a, P> {
             statistic,
             points,
             mptp,
+            failures_allowed: 0,
             evaluations: AtomicUsize::new(0),
         }
     }
@@ -533,17 +539,21 @@ impl<'a, P: UncertainProgram> ShiftedProgram<'a, P> {
             .filter(|o| o.limit_states.len() == self.mptp.len())
     }
 
-    /// The objective's values at the common random numbers (in order).
+    /// The objective's values at the common random numbers (in order), the
+    /// failed ones dropped; `None` when more than `failures_allowed` failed.
     pub fn sample(&self, d: &[f64]) -> Option<Vec<f64>> {
         let model = self.program.inputs(d);
-        self.points
+        let values: Vec<Option<f64>> = self
+            .points
             .par_iter()
             .map(|u| {
                 self.outputs(d, &model.to_physical(u))
                     .map(|o| o.objective)
                     .filter(|v| v.is_finite())
             })
-            .collect()
+            .collect();
+        let kept: Vec<f64> = values.into_iter().flatten().collect();
+        (self.points.len() - kept.len() <= self.failures_allowed).then_some(kept)
     }
 
     fn statistic_value(&self, d: &[f64], nominal: &Outputs) -> Option<f64> {
@@ -649,6 +659,10 @@ pub struct RobustSettings {
     pub statistic: Option<Statistic>,
     /// Common random numbers for the statistic (default 512, at least 16).
     pub samples: usize,
+    /// At most this many of them may fail at a design, dropped from the
+    /// statistic (default 0: a design where one fails cannot be evaluated and the
+    /// SQP steps back; at most `samples`/10).
+    pub failures_allowed: usize,
     /// probability_max per chance constraint, each in (0, 0.5] (default none).
     pub targets: Vec<f64>,
     /// What a violated verification does (default report).
@@ -679,6 +693,7 @@ impl Default for RobustSettings {
         RobustSettings {
             statistic: None,
             samples: 512,
+            failures_allowed: 0,
             targets: Vec::new(),
             verify: Verify::Report,
             sqp: SqpSettings::default(),
@@ -720,6 +735,13 @@ impl RobustSettings {
         };
         if self.samples < 16 {
             return bad("samples", self.samples.to_string(), "at least 16");
+        }
+        if self.failures_allowed > self.samples / 10 {
+            return bad(
+                "failures_allowed",
+                self.failures_allowed.to_string(),
+                "at most a tenth of samples",
+            );
         }
         for p in &self.targets {
             if !(p.is_finite() && *p > 0.0 && *p <= 0.5) {
@@ -899,7 +921,8 @@ fn sora<P: UncertainProgram>(
     let mut history = Vec::new();
     let mut last: Option<(SqpResult, Vec<InverseForm>)> = None;
     for _ in 0..s.max_cycles {
-        let shifted = ShiftedProgram::new(program, s.statistic, points, u.clone());
+        let mut shifted = ShiftedProgram::new(program, s.statistic, points, u.clone());
+        shifted.failures_allowed = s.failures_allowed;
         let sqp = minimize(&shifted, &d, &s.sqp);
         evaluations += shifted.evaluations();
         d = sqp.x.clone();
