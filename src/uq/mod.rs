@@ -25,6 +25,8 @@
 //! * [`sampling`]: output statistics and quantiles from a scrambled Sobol′ sample.
 //! * [`reliability`]: probability of a failure event g(x) ≤ 0: FORM, SORM,
 //!   importance sampling and Monte Carlo.
+//! * [`robust`]: design under uncertainty: statistic objectives over common random
+//!   numbers and chance constraints by SORA, each optimum verified by sampling.
 //!
 //! Intervals are `[lo, hi]` pairs; a bound that the data cannot give is infinite.
 

@@ -66,7 +66,9 @@ pub enum Statistic {
     P99,
     /// CVaR₉₅: the mean of the worst 5 % (the mean above the 95 % quantile).
     Cvar95,
-    /// The mean plus three standard deviations.
+    /// The mean plus three standard deviations (serde's snake case would spell
+    /// it `mean_plus3_sd`).
+    #[serde(rename = "mean_plus_3sd")]
     MeanPlus3Sd,
 }
 
@@ -174,7 +176,7 @@ pub fn estimate(values: &[f64], statistic: Statistic) -> Estimate {
 /// The common random numbers: `samples` points u_k = Φ⁻¹(v_k) of independent
 /// standard normal variables in `dim` dimensions, v_k the points 0, 1, … of the
 /// Owen-scrambled Sobol′ sequence of `seed`. `dim` ≤ [`MAX_INPUTS`] (larger is
-/// cut to it).
+/// cut to it, which [`optimize_robust`] refuses).
 pub fn common_points(dim: usize, samples: usize, seed: u64) -> Vec<Vec<f64>> {
     let dim = dim.min(MAX_INPUTS);
     (0..samples as u64)
@@ -242,6 +244,9 @@ pub struct InverseFormSettings {
     /// Central-difference step of the gradient in u, times max(1, |u_i|)
     /// (default 1e-6).
     pub gradient_step: f64,
+    /// Without a start, also search from ±β_t along each axis (2n more runs)
+    /// (default true; SORA warm-starts every search after its first).
+    pub multistart: bool,
 }
 
 impl Default for InverseFormSettings {
@@ -250,6 +255,7 @@ impl Default for InverseFormSettings {
             max_iterations: 100,
             tolerance: 1e-8,
             gradient_step: 1e-6,
+            multistart: true,
         }
     }
 }
@@ -294,11 +300,69 @@ pub struct InverseForm {
 /// iteration u ← u_AMV = −β_t ∇g/|∇g| with a line search along the sphere
 /// (the step from u towards u_AMV halved until g decreases), so that g never
 /// increases (plain AMV oscillates on concave g). Starts from `start` scaled
-/// onto the sphere, else from u_AMV at the median. The gradient is a central
-/// difference in u. β_t = 0 gives the median.
+/// onto the sphere; without one, from u_AMV at the median and, with
+/// `multistart`, also from ±β_t along each axis (in parallel), keeping the
+/// lowest performance (ties to the earlier start): the iteration stops at any
+/// point where ∇g is normal to the sphere, a maximum of g along it included
+/// (g = 5 − u₁ − u₂², β_t = 2: u_AMV at the median is (2, 0), g = 3, where the
+/// minimum is g = 0.75 at (0.5, ±1.94)). The gradient is a central difference
+/// in u. β_t = 0 gives the median.
 pub fn inverse_form<G>(
     model: &InputModel,
     g: G,
+    beta_target: f64,
+    start: Option<&[f64]>,
+    settings: &InverseFormSettings,
+) -> InverseForm
+where
+    G: Fn(&[f64]) -> Option<f64> + Sync,
+{
+    let first = inverse_form_from(model, &g, beta_target, start, settings);
+    if start.is_some() || !settings.multistart || beta_target <= 0.0 {
+        return first;
+    }
+    let n = model.dim();
+    let starts: Vec<Vec<f64>> = (0..n)
+        .flat_map(|i| {
+            [1.0, -1.0].map(|sign| {
+                let mut u = vec![0.0; n];
+                u[i] = sign * beta_target;
+                u
+            })
+        })
+        .collect();
+    let more: Vec<InverseForm> = starts
+        .par_iter()
+        .map(|u| inverse_form_from(model, &g, beta_target, Some(u), settings))
+        .collect();
+    let evaluations = first.evaluations + more.iter().map(|r| r.evaluations).sum::<usize>();
+    let usable = |r: &InverseForm| {
+        matches!(
+            r.status,
+            InverseFormStatus::Converged | InverseFormStatus::NotConverged
+        ) && r.performance.is_finite()
+    };
+    let mut best = first;
+    for r in more {
+        let better = match (usable(&r), usable(&best)) {
+            (true, false) => true,
+            (true, true) => {
+                r.performance < best.performance - 1e-12 * best.performance.abs().max(1.0)
+            }
+            _ => false,
+        };
+        if better {
+            best = r;
+        }
+    }
+    best.evaluations = evaluations;
+    best
+}
+
+/// [`inverse_form`] from one start.
+fn inverse_form_from<G>(
+    model: &InputModel,
+    g: &G,
     beta_target: f64,
     start: Option<&[f64]>,
     settings: &InverseFormSettings,
@@ -437,6 +501,11 @@ pub struct ShiftedProgram<'a, P: UncertainProgram> {
     pub points: &'a [Vec<f64>],
     /// u*_j per chance constraint.
     pub mptp: Vec<Vec<f64>>,
+    /// At most this many of the common random numbers may fail at a design
+    /// (they are dropped from the statistic); more, and the design cannot be
+    /// evaluated (default 0 from [`ShiftedProgram::new`]). A point that fails
+    /// at some designs and not at others makes the statistic jump there.
+    pub failures_allowed: usize,
     evaluations: AtomicUsize,
 }
 
@@ -453,6 +522,7 @@ impl<'a, P: UncertainProgram> ShiftedProgram<'a, P> {
             statistic,
             points,
             mptp,
+            failures_allowed: 0,
             evaluations: AtomicUsize::new(0),
         }
     }
@@ -469,17 +539,21 @@ impl<'a, P: UncertainProgram> ShiftedProgram<'a, P> {
             .filter(|o| o.limit_states.len() == self.mptp.len())
     }
 
-    /// The objective's values at the common random numbers (in order).
+    /// The objective's values at the common random numbers (in order), the
+    /// failed ones dropped; `None` when more than `failures_allowed` failed.
     pub fn sample(&self, d: &[f64]) -> Option<Vec<f64>> {
         let model = self.program.inputs(d);
-        self.points
+        let values: Vec<Option<f64>> = self
+            .points
             .par_iter()
             .map(|u| {
                 self.outputs(d, &model.to_physical(u))
                     .map(|o| o.objective)
                     .filter(|v| v.is_finite())
             })
-            .collect()
+            .collect();
+        let kept: Vec<f64> = values.into_iter().flatten().collect();
+        (self.points.len() - kept.len() <= self.failures_allowed).then_some(kept)
     }
 
     fn statistic_value(&self, d: &[f64], nominal: &Outputs) -> Option<f64> {
@@ -585,6 +659,10 @@ pub struct RobustSettings {
     pub statistic: Option<Statistic>,
     /// Common random numbers for the statistic (default 512, at least 16).
     pub samples: usize,
+    /// At most this many of them may fail at a design, dropped from the
+    /// statistic (default 0: a design where one fails cannot be evaluated and the
+    /// SQP steps back; at most `samples`/10).
+    pub failures_allowed: usize,
     /// probability_max per chance constraint, each in (0, 0.5] (default none).
     pub targets: Vec<f64>,
     /// What a violated verification does (default report).
@@ -615,6 +693,7 @@ impl Default for RobustSettings {
         RobustSettings {
             statistic: None,
             samples: 512,
+            failures_allowed: 0,
             targets: Vec::new(),
             verify: Verify::Report,
             sqp: SqpSettings::default(),
@@ -656,6 +735,13 @@ impl RobustSettings {
         };
         if self.samples < 16 {
             return bad("samples", self.samples.to_string(), "at least 16");
+        }
+        if self.failures_allowed > self.samples / 10 {
+            return bad(
+                "failures_allowed",
+                self.failures_allowed.to_string(),
+                "at most a tenth of samples",
+            );
         }
         for p in &self.targets {
             if !(p.is_finite() && *p > 0.0 && *p <= 0.5) {
@@ -764,6 +850,10 @@ pub struct SoraCycle {
     pub sqp_status: SqpStatus,
     /// The new MPTPs' performance g_j(d, T_d(u*_j)) (≥ 0: FORM-feasible).
     pub performance: Vec<f64>,
+    /// The new MPTPs u*_j in standard normal space (the shifts of the next cycle).
+    pub mptp_u: Vec<Vec<f64>>,
+    /// The same in physical units at the cycle's design, x*_j = T_d(u*_j).
+    pub mptp_x: Vec<Vec<f64>>,
     /// The largest move of an MPTP in u from the previous cycle.
     pub shift_change: f64,
     /// The correction round (0: before any correction).
@@ -831,7 +921,8 @@ fn sora<P: UncertainProgram>(
     let mut history = Vec::new();
     let mut last: Option<(SqpResult, Vec<InverseForm>)> = None;
     for _ in 0..s.max_cycles {
-        let shifted = ShiftedProgram::new(program, s.statistic, points, u.clone());
+        let mut shifted = ShiftedProgram::new(program, s.statistic, points, u.clone());
+        shifted.failures_allowed = s.failures_allowed;
         let sqp = minimize(&shifted, &d, &s.sqp);
         evaluations += shifted.evaluations();
         d = sqp.x.clone();
@@ -864,6 +955,8 @@ fn sora<P: UncertainProgram>(
             objective: sqp.objective,
             sqp_status: sqp.status,
             performance: mptp.iter().map(|m| m.performance).collect(),
+            mptp_u: mptp.iter().map(|m| m.u.clone()).collect(),
+            mptp_x: mptp.iter().map(|m| m.x.clone()).collect(),
             shift_change: change,
             round,
         });
@@ -918,8 +1011,9 @@ fn rank(r: &Run, feasibility: f64) -> (u8, f64) {
 /// raised by β_t − β̂ (β̂ = −Φ⁻¹(sampled P)) and SORA re-run from the design,
 /// until no constraint is violated or `max_corrections` rounds have run.
 ///
-/// Invalid settings ([`RobustSettings::validate`]) or no start give status
-/// `stalled` at the first start (or the lower bounds) without evaluating.
+/// Invalid settings ([`RobustSettings::validate`]), no start, or a statistic
+/// over more than [`MAX_INPUTS`] random inputs give status `stalled` at the
+/// first start (or the lower bounds) without evaluating.
 pub fn optimize_robust<P: UncertainProgram>(
     program: &P,
     starts: &[Vec<f64>],
@@ -927,7 +1021,11 @@ pub fn optimize_robust<P: UncertainProgram>(
 ) -> RobustResult {
     let s = settings;
     let n = program.dimension();
-    if s.validate().is_err() || starts.is_empty() {
+    let too_many_inputs = s.statistic.is_some()
+        && starts
+            .first()
+            .is_some_and(|d| program.inputs(d).dim() > MAX_INPUTS);
+    if s.validate().is_err() || starts.is_empty() || too_many_inputs {
         let x = starts
             .first()
             .cloned()
@@ -1025,7 +1123,7 @@ pub fn optimize_robust<P: UncertainProgram>(
             }
         }
         Some(stat) => {
-            let values = statistic_sample(program, &d, &points);
+            let values = objective_values(program, &d, &points);
             evaluations += points.len();
             estimate(&values, stat)
         }
@@ -1034,7 +1132,7 @@ pub fn optimize_robust<P: UncertainProgram>(
         Some(stat) if s.verify_samples > 0 => {
             let fresh = common_points(dim_x, s.verify_samples, s.seed.wrapping_add(1));
             evaluations += fresh.len();
-            Some(estimate(&statistic_sample(program, &d, &fresh), stat))
+            Some(estimate(&objective_values(program, &d, &fresh), stat))
         }
         _ => None,
     };
@@ -1062,9 +1160,14 @@ pub fn optimize_robust<P: UncertainProgram>(
     }
 }
 
-/// The objective at design d and each of `points` (in order; failed ones NaN,
-/// which [`estimate`] drops).
-fn statistic_sample<P: UncertainProgram>(program: &P, d: &[f64], points: &[Vec<f64>]) -> Vec<f64> {
+/// The objective at design d and each of `points` (u in standard normal space,
+/// e.g. [`common_points`]), evaluated in parallel and returned in order; failed
+/// ones NaN, which [`estimate`] drops.
+pub fn objective_values<P: UncertainProgram>(
+    program: &P,
+    d: &[f64],
+    points: &[Vec<f64>],
+) -> Vec<f64> {
     let model = program.inputs(d);
     points
         .par_iter()
@@ -1074,6 +1177,35 @@ fn statistic_sample<P: UncertainProgram>(program: &P, d: &[f64], points: &[Vec<f
                 .map_or(f64::NAN, |o| o.objective)
         })
         .collect()
+}
+
+/// The sampled probability P(g_j ≤ 0) of each of the first `count` limit states
+/// at design d ([`reliability::analyze`] with `reliability`, e.g.
+/// [`verification_settings`]), one after the other (each parallel inside).
+pub fn chance_probabilities<P: UncertainProgram>(
+    program: &P,
+    d: &[f64],
+    count: usize,
+    reliability: &ReliabilitySettings,
+) -> Vec<EventResult> {
+    let model = program.inputs(d);
+    (0..count)
+        .map(|j| {
+            let g = |x: &[f64]| {
+                program
+                    .outputs(d, x)
+                    .and_then(|o| o.limit_states.get(j).copied())
+            };
+            reliability::analyze(&model, g, reliability)
+        })
+        .collect()
+}
+
+/// Whether a sampled probability violates its target: the lower end of its
+/// 95 % interval exceeds `target` (no interval, as with FORM alone or no failure
+/// seen: not violated).
+pub fn violates(result: &EventResult, target: f64) -> bool {
+    result.interval.is_some_and(|i| i[0] > target)
 }
 
 /// The verification of each chance constraint at design d, and the model
@@ -1086,19 +1218,14 @@ fn verify<P: UncertainProgram>(
     target_betas: &[f64],
     s: &RobustSettings,
 ) -> (Vec<ChanceReport>, usize) {
-    let model = program.inputs(d);
-    let mut evaluations = 0;
-    let reports = (0..s.targets.len())
-        .map(|j| {
-            let g = |x: &[f64]| {
-                program
-                    .outputs(d, x)
-                    .and_then(|o| o.limit_states.get(j).copied())
-            };
-            let verification = reliability::analyze(&model, g, &s.reliability);
-            evaluations += verification.evaluations;
+    let results = chance_probabilities(program, d, s.targets.len(), &s.reliability);
+    let evaluations = results.iter().map(|r| r.evaluations).sum();
+    let reports = results
+        .into_iter()
+        .enumerate()
+        .map(|(j, verification)| {
             let target = s.targets[j];
-            let violated = verification.interval.is_some_and(|i| i[0] > target);
+            let violated = violates(&verification, target);
             let excess = verification.probability.map(|p| p / target - 1.0);
             let corrected = pma_betas[j] != target_betas[j];
             ChanceReport {

@@ -34,6 +34,7 @@ mod pareto_regressions;
 mod problem_files;
 mod reference;
 mod reports;
+mod robust;
 mod robust_design;
 mod search_cost;
 mod stability;
