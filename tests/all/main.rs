@@ -36,6 +36,7 @@ mod reference;
 mod reports;
 mod search_cost;
 mod stability;
+mod stress_assisted_wear;
 mod surface;
 mod surface_problem;
 mod surface_read;
