@@ -384,6 +384,14 @@ asperity_density = "10 um^-2"
             scene("wear_coefficient = 1e-4\ntemperature = \"0 K\"", "", ""),
             vec!["contact.temperature", "must be > 0 K"],
         ),
+        (
+            scene(
+                "",
+                "law = \"stress_assisted\"\nactivation_energy = \"0.91 eV\"\nactivation_volume = \"0.0067 nm^3\"\nsliding_speed = \"38 mm/s\"",
+                "adhesion_model = \"lennard_jones\"",
+            ),
+            vec!["wear.stress", "\"normal\"", "stress = \"shear\""],
+        ),
     ];
     for (text, parts) in &cases {
         let err = problem::parse(text, "bad.toml")
