@@ -43,7 +43,9 @@ mod parse;
 pub use format::{
     axis_unit, axis_unit_of, format_number, format_quantity, number, quantity, si, sig, sig_exp,
 };
-pub use parse::{forgotten_prefix, is_bare_number, parse_quantity, QuantityInput, UnitError};
+pub use parse::{
+    forgotten_prefix, is_bare_number, parse_quantity, QuantityInput, UnitError, ELECTRON_VOLT,
+};
 
 /// The physical dimension a field expects.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -75,11 +77,17 @@ pub enum Dimension {
     Angle,
     /// m³/mol (a liquid's molar volume).
     MolarVolume,
+    /// J (an activation energy); read from "eV" too.
+    Energy,
+    /// Hz = 1/s (an attempt frequency).
+    Frequency,
+    /// m/s (a sliding speed).
+    Speed,
 }
 
 impl Dimension {
     /// Every dimension, for looking up which one a unit belongs to.
-    pub const ALL: [Dimension; 13] = [
+    pub const ALL: [Dimension; 16] = [
         Dimension::Pressure,
         Dimension::Force,
         Dimension::Length,
@@ -93,6 +101,9 @@ impl Dimension {
         Dimension::Temperature,
         Dimension::Angle,
         Dimension::MolarVolume,
+        Dimension::Energy,
+        Dimension::Frequency,
+        Dimension::Speed,
     ];
 
     /// The dimension's name with an article: "a force".
@@ -111,6 +122,9 @@ impl Dimension {
             Dimension::Temperature => "a temperature",
             Dimension::Angle => "an angle",
             Dimension::MolarVolume => "a molar volume",
+            Dimension::Energy => "an energy",
+            Dimension::Frequency => "a frequency",
+            Dimension::Speed => "a speed",
         }
     }
 
@@ -130,6 +144,9 @@ impl Dimension {
             Dimension::Temperature => "temperature",
             Dimension::Angle => "angle",
             Dimension::MolarVolume => "molar volume",
+            Dimension::Energy => "energy",
+            Dimension::Frequency => "frequency",
+            Dimension::Speed => "speed",
         }
     }
 
@@ -169,6 +186,13 @@ impl Dimension {
             Dimension::MolarVolume => {
                 "a molar volume such as \"18.07 cm^3/mol\" or a number in m^3/mol"
             }
+            Dimension::Energy => {
+                "an energy such as \"0.91 eV\", \"1.5e-19 J\" or a number in joules"
+            }
+            Dimension::Frequency => {
+                "a frequency such as \"1e13 Hz\", \"10 THz\" or a number in hertz"
+            }
+            Dimension::Speed => "a speed such as \"38 mm/s\", \"1 um/s\" or a number in m/s",
         }
     }
 }
@@ -195,5 +219,8 @@ pub fn symbol(dimension: Dimension) -> &'static str {
         Dimension::Temperature => "K",
         Dimension::Angle => "rad",
         Dimension::MolarVolume => "m³/mol",
+        Dimension::Energy => "J",
+        Dimension::Frequency => "Hz",
+        Dimension::Speed => "m/s",
     }
 }

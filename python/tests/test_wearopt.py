@@ -765,3 +765,26 @@ def test_pareto_over_a_humidity_range_names_its_humidity():
     assert front["adhesion_humidity"] == 0.9
     expected = json.loads(cli("pareto", path, "--points", "3", "--format", "json").stdout)
     assert without_timing(front) == without_timing(expected)
+
+
+def test_stress_assisted_wear_from_a_dict_as_from_the_file():
+    """``[wear]`` reaches the stress-assisted law (docs/model.md §12) from a dict as from
+    problems/silicon-sidewall-wear.toml: the same wear rate and law outputs."""
+    from_file = wearopt.evaluate("problems/silicon-sidewall-wear.toml")
+    from_dict = wearopt.evaluate({
+        "contact": {"load": "800 uN", "nominal_area": "1000 um^2",
+                    "sliding_distance": "1 m", "temperature": "300 K"},
+        "bodies": {"a": {"material": "single-crystal silicon"},
+                   "b": {"material": "single-crystal silicon"}},
+        "interface": {"work_of_adhesion": "0.02 J/m^2", "interatomic_distance": "0.3 nm",
+                      "adhesion_model": "dmt"},
+        "roughness": {"sigma": "3 nm", "asperity_radius": "1 um",
+                      "asperity_density": "10 um^-2"},
+        "wear": {"law": "stress_assisted", "activation_energy": "0.91 eV",
+                 "activation_volume": "0.0067 nm^3", "attempt_frequency": "1e13 Hz",
+                 "stress": "normal", "sliding_speed": "38 mm/s"},
+    })
+    assert from_file["wear_law"] == from_dict["wear_law"] == "stress_assisted"
+    for key in ("wear_rate", "effective_wear_coefficient", "mean_contact_stress",
+                "saturated_fraction", "apparent_activation_energy"):
+        assert from_dict[key] == from_file[key], key

@@ -35,6 +35,7 @@ pub mod separation;
 pub(crate) mod special;
 pub mod warnings;
 pub mod wear;
+pub mod wear_law;
 pub mod work;
 
 pub use capillary::Capillary;
@@ -60,3 +61,4 @@ pub use wear::{
     evaluate, evaluate_from, evaluate_with_other, Evaluation, EvaluationOptions, Indices,
     OtherModel, Regime, SearchHints, Status, Stiction, StictionVerdict,
 };
+pub use wear_law::{WearLaw, WearModel};

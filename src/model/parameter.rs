@@ -50,7 +50,8 @@ pub enum SceneParameter {
     ContactAngleA,
     /// θ_b, the contact angle on body b alone (rad).
     ContactAngleB,
-    /// T, the temperature of the air and the liquid (K).
+    /// T, the temperature of the contact, and of the air and the liquid where the
+    /// scene has an environment (K; docs/model.md §10, §12); 298.15 K by default.
     Temperature,
     /// k, the Archard wear coefficient (docs/model.md §1, §3).
     WearCoefficient,
@@ -59,6 +60,13 @@ pub enum SceneParameter {
     /// RH, the relative humidity of the air (docs/model.md §10): read where the
     /// scene has an environment ([`SceneParameter::value`]).
     RelativeHumidity,
+    /// ΔU, the stress-assisted wear law's activation energy (J; docs/model.md §12):
+    /// read where the scene has that law.
+    ActivationEnergy,
+    /// ΔV, its activation volume (m³; docs/model.md §12).
+    ActivationVolume,
+    /// v, its sliding speed (m/s; docs/model.md §12).
+    SlidingSpeed,
 }
 
 /// One row of the table.
@@ -75,7 +83,7 @@ struct Row {
 
 impl SceneParameter {
     /// Every parameter, in table order.
-    pub const ALL: [SceneParameter; 19] = [
+    pub const ALL: [SceneParameter; 22] = [
         SceneParameter::YoungsModulus,
         SceneParameter::YoungsModulusA,
         SceneParameter::YoungsModulusB,
@@ -95,11 +103,14 @@ impl SceneParameter {
         SceneParameter::WearCoefficient,
         SceneParameter::SlidingDistance,
         SceneParameter::RelativeHumidity,
+        SceneParameter::ActivationEnergy,
+        SceneParameter::ActivationVolume,
+        SceneParameter::SlidingSpeed,
     ];
 
     /// The parameters a design may move (the keys of `[design]`), in the order
     /// problem files and messages list them.
-    pub const DESIGN: [SceneParameter; 13] = [
+    pub const DESIGN: [SceneParameter; 16] = [
         SceneParameter::YoungsModulus,
         SceneParameter::YoungsModulusA,
         SceneParameter::YoungsModulusB,
@@ -113,6 +124,9 @@ impl SceneParameter {
         SceneParameter::ContactAngleA,
         SceneParameter::ContactAngleB,
         SceneParameter::Temperature,
+        SceneParameter::ActivationEnergy,
+        SceneParameter::ActivationVolume,
+        SceneParameter::SlidingSpeed,
     ];
 
     /// The parameters of the wear rate's elasticities, in report order.
@@ -255,6 +269,13 @@ impl SceneParameter {
                 false,
                 Some((0.0, 1.0)),
             ),
+            SceneParameter::ActivationEnergy => {
+                row("activation_energy", "ΔU", Energy, true, false, None)
+            }
+            SceneParameter::ActivationVolume => {
+                row("activation_volume", "ΔV", Volume, true, false, None)
+            }
+            SceneParameter::SlidingSpeed => row("sliding_speed", "v", Speed, true, false, None),
         }
     }
 
@@ -297,21 +318,35 @@ impl SceneParameter {
     /// Whether it is one of the environment's values (relative humidity,
     /// temperature, contact angles), which a dry scene does not have.
     pub fn is_environmental(self) -> bool {
+        // (The wear law's inputs are not: see [`SceneParameter::is_wear_law_input`].)
         matches!(
             self,
             SceneParameter::ContactAngle
                 | SceneParameter::ContactAngleA
                 | SceneParameter::ContactAngleB
-                | SceneParameter::Temperature
                 | SceneParameter::RelativeHumidity
+        )
+    }
+
+    /// Whether it is an input of the stress-assisted wear law (ΔU, ΔV, v), which a
+    /// scene under Archard's does not have.
+    pub fn is_wear_law_input(self) -> bool {
+        matches!(
+            self,
+            SceneParameter::ActivationEnergy
+                | SceneParameter::ActivationVolume
+                | SceneParameter::SlidingSpeed
         )
     }
 
     /// Its value in `scene` where the scene has it ([`SceneParameter::get`]):
     /// None for the environment's values of a scene without an environment (dry
-    /// air, docs/model.md §10), whose defaults mean nothing to its evaluation.
+    /// air, docs/model.md §10), whose defaults mean nothing to its evaluation, and
+    /// for the wear law's inputs of a scene without that law.
     pub fn value(self, s: &Scene) -> Option<f64> {
-        (s.environment.is_some() || !self.is_environmental()).then(|| self.get(s))
+        let has = (s.environment.is_some() || !self.is_environmental())
+            && (s.activation.is_some() || !self.is_wear_law_input());
+        has.then(|| self.get(s))
     }
 
     /// Its value in `scene` (SI; |W| for the load; body a's for a shared modulus or
@@ -334,10 +369,13 @@ impl SceneParameter {
                 s.environment.unwrap_or_default().contact_angle_a
             }
             SceneParameter::ContactAngleB => s.environment.unwrap_or_default().contact_angle_b,
-            SceneParameter::Temperature => s.environment.unwrap_or_default().temperature,
+            SceneParameter::Temperature => s.temperature,
             SceneParameter::WearCoefficient => s.wear_coefficient,
             SceneParameter::SlidingDistance => s.sliding_distance,
             SceneParameter::RelativeHumidity => s.environment.unwrap_or_default().relative_humidity,
+            SceneParameter::ActivationEnergy => s.activation.map_or(0.0, |a| a.activation_energy),
+            SceneParameter::ActivationVolume => s.activation.map_or(0.0, |a| a.activation_volume),
+            SceneParameter::SlidingSpeed => s.activation.map_or(0.0, |a| a.sliding_speed),
         }
     }
 
@@ -389,9 +427,11 @@ impl SceneParameter {
                     .contact_angle_b = value
             }
             SceneParameter::Temperature => {
-                s.environment
-                    .get_or_insert_with(Default::default)
-                    .temperature = value
+                // One temperature: the air's follows the contact's.
+                s.temperature = value;
+                if let Some(env) = s.environment.as_mut() {
+                    env.temperature = value;
+                }
             }
             SceneParameter::WearCoefficient => s.wear_coefficient = value,
             SceneParameter::SlidingDistance => s.sliding_distance = value,
@@ -399,6 +439,22 @@ impl SceneParameter {
                 s.environment
                     .get_or_insert_with(Default::default)
                     .relative_humidity = value
+            }
+            // A scene without the stress-assisted law has none of its inputs to move.
+            SceneParameter::ActivationEnergy => {
+                if let Some(a) = s.activation.as_mut() {
+                    a.activation_energy = value;
+                }
+            }
+            SceneParameter::ActivationVolume => {
+                if let Some(a) = s.activation.as_mut() {
+                    a.activation_volume = value;
+                }
+            }
+            SceneParameter::SlidingSpeed => {
+                if let Some(a) = s.activation.as_mut() {
+                    a.sliding_speed = value;
+                }
             }
         }
     }
@@ -452,12 +508,24 @@ mod tests {
     }
 
     /// What `set` puts in, `get` reads back, for every row, on a dry and a humid
-    /// scene.
+    /// scene and one under the stress-assisted wear law (whose inputs the others
+    /// do not have: setting them there changes nothing).
     #[test]
     fn get_returns_what_set_put() {
-        for file in ["problems/micro-gear.toml", "problems/micro-gear-humid.toml"] {
+        for file in [
+            "problems/micro-gear.toml",
+            "problems/micro-gear-humid.toml",
+            "problems/silicon-sidewall-wear.toml",
+        ] {
             for p in SceneParameter::ALL {
                 let mut s = scene(file);
+                if p.is_wear_law_input() && s.activation.is_none() {
+                    let before = s.clone();
+                    p.set(&mut s, 1.0);
+                    assert_eq!(s, before, "{file}: {p}");
+                    assert_eq!(p.value(&s), None, "{file}: {p}");
+                    continue;
+                }
                 let x = match p {
                     SceneParameter::RelativeHumidity => 0.3,
                     SceneParameter::PoissonRatio => 0.25,
@@ -478,7 +546,10 @@ mod tests {
         let dry = scene("problems/micro-gear.toml");
         assert_eq!(SceneParameter::RelativeHumidity.value(&dry), None);
         assert_eq!(SceneParameter::RelativeHumidity.get(&dry), 0.0);
-        assert_eq!(SceneParameter::Temperature.value(&dry), None);
+        // The temperature is the scene's own, humid or dry (docs/model.md §12).
+        assert_eq!(SceneParameter::Temperature.value(&dry), Some(298.15));
+        // The wear law's inputs exist only under the stress-assisted law.
+        assert_eq!(SceneParameter::SlidingSpeed.value(&dry), None);
         assert_eq!(
             SceneParameter::WearCoefficient.value(&dry),
             Some(dry.wear_coefficient)

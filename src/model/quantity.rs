@@ -91,6 +91,19 @@ pub enum Quantity {
     /// γ, the work of adhesion (J/m²), read from the scene: the measure a front
     /// trades wear against when a design moves γ.
     WorkOfAdhesion,
+    /// k_eff = wear rate / wearing area, the Archard coefficient a wear law
+    /// amounts to (docs/model.md §12); exists only under a law that computes it
+    /// (stress-assisted) and with a wearing area.
+    EffectiveWearCoefficient,
+    /// The area-weighted mean of the stress that assists wear (Pa; docs/model.md
+    /// §12); exists only under the stress-assisted law, in contact.
+    MeanContactStress,
+    /// The share of the wear rate from summits with Γa₀/v > 1 (docs/model.md
+    /// §12); exists only under the stress-assisted law, with wear.
+    SaturatedFraction,
+    /// −d ln(wear rate)/d(1/k_BT) at fixed contact (J; docs/model.md §12); exists
+    /// only under the stress-assisted law, with wear.
+    ApparentActivationEnergy,
 }
 
 /// What a quantity may be used as.
@@ -183,7 +196,7 @@ fn ln_friction(per_load: bool, ev: &Evaluation, scene: &Scene) -> f64 {
 
 impl Quantity {
     /// Every quantity, in table order.
-    pub const ALL: [Quantity; 25] = [
+    pub const ALL: [Quantity; 29] = [
         Quantity::WearRate,
         Quantity::WearVolume,
         Quantity::RealArea,
@@ -209,6 +222,10 @@ impl Quantity {
         Quantity::PlasticRealArea,
         Quantity::PlasticContactCount,
         Quantity::WorkOfAdhesion,
+        Quantity::EffectiveWearCoefficient,
+        Quantity::MeanContactStress,
+        Quantity::SaturatedFraction,
+        Quantity::ApparentActivationEnergy,
     ];
 
     /// The table. Roles: the objectives are the wear, the area, the pull-off and
@@ -340,6 +357,34 @@ impl Quantity {
                 POSITIVE,
                 FRONT_MEASURE,
             ),
+            Quantity::EffectiveWearCoefficient => row(
+                "effective_wear_coefficient",
+                "k_eff",
+                Dimensionless,
+                POSITIVE,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::MeanContactStress => row(
+                "mean_contact_stress",
+                "σ_mean",
+                Pressure,
+                ANY,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::SaturatedFraction => row(
+                "saturated_fraction",
+                "f_sat",
+                Dimensionless,
+                FRACTION,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::ApparentActivationEnergy => row(
+                "apparent_activation_energy",
+                "E_app",
+                Energy,
+                ANY,
+                QUANTITY_OF_INTEREST,
+            ),
         }
     }
 
@@ -417,6 +462,10 @@ impl Quantity {
             Quantity::PlasticRealArea => ev.plastic_real_area,
             Quantity::PlasticContactCount => ev.plastic_contact_count,
             Quantity::WorkOfAdhesion => scene.work_of_adhesion,
+            Quantity::EffectiveWearCoefficient => ev.wear_details?.effective_wear_coefficient?,
+            Quantity::MeanContactStress => ev.wear_details?.mean_contact_stress?,
+            Quantity::SaturatedFraction => ev.wear_details?.saturated_fraction?,
+            Quantity::ApparentActivationEnergy => ev.wear_details?.apparent_activation_energy?,
         })
     }
 
@@ -569,8 +618,9 @@ mod tests {
         assert_eq!(Quantity::WearRate.natural_range(), (0.0, f64::INFINITY));
     }
 
-    /// The micro-gear of the shipped problems, with every requirement set so that
-    /// every quantity exists, and its evaluation with the pull-off.
+    /// The micro-gear of the shipped problems, with every requirement set and the
+    /// stress-assisted wear law (silicon's values) so that every quantity exists,
+    /// and its evaluation with the pull-off.
     fn micro_gear() -> (Scene, Evaluation) {
         let problem =
             crate::problem::load(std::path::Path::new("problems/micro-gear.toml")).unwrap();
@@ -579,6 +629,16 @@ mod tests {
         scene.requirements.shear_strength = Some(1e8);
         scene.requirements.allowed_wear_depth = Some(1e-7);
         scene.requirements.sliding_per_cycle = Some(1e-4);
+        scene.wear_law = crate::model::WearModel::StressAssisted;
+        scene.activation = Some(crate::model::wear_law::Activation {
+            activation_energy: 0.91 * crate::units::ELECTRON_VOLT,
+            activation_volume: 6.7e-30,
+            attempt_frequency: 1e13,
+            site_spacing: 0.384e-9,
+            atomic_volume: 20.02e-30,
+            stress: crate::model::wear_law::ContactStress::Normal,
+            sliding_speed: 38e-3,
+        });
         let options = EvaluationOptions {
             pull_off: true,
             ..Default::default()
@@ -618,6 +678,14 @@ mod tests {
                 Quantity::PlasticRealArea => Some(ev.plastic_real_area),
                 Quantity::PlasticContactCount => Some(ev.plastic_contact_count),
                 Quantity::WorkOfAdhesion => Some(s.work_of_adhesion),
+                Quantity::EffectiveWearCoefficient => {
+                    ev.wear_details.and_then(|w| w.effective_wear_coefficient)
+                }
+                Quantity::MeanContactStress => ev.wear_details.and_then(|w| w.mean_contact_stress),
+                Quantity::SaturatedFraction => ev.wear_details.and_then(|w| w.saturated_fraction),
+                Quantity::ApparentActivationEnergy => {
+                    ev.wear_details.and_then(|w| w.apparent_activation_energy)
+                }
             }
         };
         for q in Quantity::ALL {

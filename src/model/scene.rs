@@ -4,6 +4,7 @@ use serde::Serialize;
 
 use super::environment::Environment;
 use super::law::{AdhesionModel, AttractionKind};
+use super::wear_law::{self, Activation, ContactStress, WearModel};
 
 /// Which real area wears (paper eq. 13): all contacts, or only the plastic
 /// ("welded") junctions.
@@ -57,6 +58,19 @@ pub struct Scene {
     pub wear_coefficient: f64,
     /// Which real area wears.
     pub wear_area: WearArea,
+    /// The wear law (docs/model.md §3 Archard); reported beside the wear, not
+    /// inside the scene.
+    #[serde(skip)]
+    pub wear_law: WearModel,
+    /// T, the temperature of the contact (K), > 0, finite: the capillary term's
+    /// (docs/model.md §10, where `environment.temperature` equals it) and the
+    /// stress-assisted wear law's (§12). 298.15 K unless the file says otherwise.
+    #[serde(skip)]
+    pub temperature: f64,
+    /// The stress-assisted law's inputs (docs/model.md §12): Some exactly when
+    /// `wear_law` is [`WearModel::StressAssisted`].
+    #[serde(skip)]
+    pub activation: Option<Activation>,
     /// A measured factor on the statistical model's real area (and so on its wear
     /// and friction), > 0, finite: 1 for the model as it is;
     /// `[roughness] contact_model = "bem_corrected"` sets it to the exact-to-statistical
@@ -153,6 +167,72 @@ pub(crate) fn check(
 }
 
 impl Scene {
+    /// The wear law's inputs: present and in range exactly under the
+    /// stress-assisted law, which also needs the asperity law's closed-form
+    /// contacts (JKR or DMT) under `stress = "normal"` and τ under `"shear"`.
+    fn validate_wear_law(&self) -> Result<(), InputError> {
+        let Some(a) = self.activation else {
+            return match self.wear_law {
+                WearModel::Archard => Ok(()),
+                WearModel::StressAssisted => Err(InputError {
+                    field: "activation",
+                    value: f64::NAN,
+                    accepted: "given under the stress-assisted wear law",
+                }),
+            };
+        };
+        if self.wear_law == WearModel::Archard {
+            return Err(InputError {
+                field: "activation",
+                value: a.activation_energy,
+                accepted: "absent under the Archard wear law (it takes k alone)",
+            });
+        }
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        let du = a.activation_energy;
+        check(
+            "activation.activation_energy",
+            du,
+            du > 0.0 && du <= wear_law::MAX_ACTIVATION_ENERGY,
+            "in (0, 10 eV]",
+        )?;
+        let dv = a.activation_volume;
+        check(
+            "activation.activation_volume",
+            dv,
+            (0.0..=wear_law::MAX_ACTIVATION_VOLUME).contains(&dv),
+            "in [0, 1 nm³]",
+        )?;
+        for (field, value) in [
+            ("activation.attempt_frequency", a.attempt_frequency),
+            ("activation.site_spacing", a.site_spacing),
+            ("activation.sliding_speed", a.sliding_speed),
+        ] {
+            check(field, value, positive(value), "finite and > 0")?;
+        }
+        let omega = a.atomic_volume;
+        check(
+            "activation.atomic_volume",
+            omega,
+            omega > 0.0 && omega <= wear_law::MAX_ATOMIC_VOLUME_RATIO * a.site_spacing.powi(3),
+            "in (0, 10 a₀³]",
+        )?;
+        match a.stress {
+            ContactStress::Shear => check(
+                "requirements.shear_strength",
+                f64::NAN,
+                self.requirements.shear_strength.is_some(),
+                "given: stress = shear reads τ",
+            ),
+            ContactStress::Normal => check(
+                "adhesion_model",
+                f64::NAN,
+                !self.adhesion_model.law().general(),
+                "JKR or DMT under stress = normal (the Lennard-Jones law's summit stresses are not tabulated yet)",
+            ),
+        }
+    }
+
     /// Checks every field the model reads: finite and in the range its
     /// documentation states (`f64::INFINITY` only where a limit is meant). The
     /// problem loader builds only scenes that pass; a scene built by hand must
@@ -216,6 +296,9 @@ impl Scene {
                 check(field, value, positive(value), POSITIVE)?;
             }
         }
+        let t = self.temperature;
+        check("temperature", t, positive(t), "finite and > 0 K")?;
+        self.validate_wear_law()?;
         if let Some(env) = &self.environment {
             let rh = env.relative_humidity;
             check(
@@ -230,6 +313,12 @@ impl Scene {
                 t,
                 positive(t),
                 "finite and > 0 K",
+            )?;
+            check(
+                "environment.temperature",
+                t,
+                t == self.temperature,
+                "the scene's temperature (one temperature for the air and the contact)",
             )?;
             for (field, value) in [
                 ("environment.contact_angle_a", env.contact_angle_a),

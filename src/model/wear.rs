@@ -1,5 +1,6 @@
 //! The dimensional layer: from a [`Scene`] (SI) to indices, separation, real
-//! areas, contacts, pull-off and Archard wear (docs/model.md §1–3, eqs. 13, 15, 16).
+//! areas, contacts, pull-off and wear under the scene's wear law (docs/model.md
+//! §1–3, eqs. 13, 15, 16; the laws in `wear_law/`).
 
 use std::f64::consts::PI;
 
@@ -18,6 +19,7 @@ use super::separation::{
 };
 use super::special::SQRT_TWO_PI;
 use super::warnings::{self, Note, Warning};
+use super::wear_law::{WearDetails, WearInput};
 
 /// What an evaluation computes beyond the separation and areas.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -221,6 +223,10 @@ pub struct Evaluation {
     /// `[environment]` or a cantilever; its keys sit at the top level.
     #[serde(flatten)]
     pub humidity: Option<Humidity>,
+    /// The wear law's own numbers (the stress-assisted law's, docs/model.md §12);
+    /// absent under Archard. Its keys sit at the top level.
+    #[serde(flatten)]
+    pub wear_details: Option<WearDetails>,
 }
 
 /// The humid air's numbers at the operating point (docs/model.md §9), SI.
@@ -424,11 +430,18 @@ pub fn evaluate_with_other(scene: &Scene, options: &EvaluationOptions) -> Evalua
 
 /// The air an evaluation reports on: the scene's `[environment]`, or dry air when it
 /// has only a cantilever (whose detachment length needs Γ); None for a dry scene.
+/// Its temperature is the scene's.
 fn environment_of(scene: &Scene) -> Option<Environment> {
-    scene.environment.or(scene
-        .requirements
-        .cantilever
-        .map(|_| Environment::default()))
+    scene
+        .environment
+        .or(scene
+            .requirements
+            .cantilever
+            .map(|_| Environment::default()))
+        .map(|e| Environment {
+            temperature: scene.temperature,
+            ..e
+        })
 }
 
 /// The non-dimensional model of a scene: its asperity law, with the capillary term
@@ -603,11 +616,20 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         _ => zero,
     };
     let elastic_area = at.map_or(zero, |a| a.elastic_area());
-    let wear_area_scaled = match scene.wear_area {
+    let wearing_area = match scene.wear_area {
         WearArea::Total => area,
         WearArea::Plastic => plastic_area,
-    }
-    .scale(area_scale * scene.wear_coefficient);
+    };
+    let wear = scene.wear_law.law().rate(&WearInput {
+        scene,
+        model: &model,
+        separation: h,
+        wearing_area,
+        plastic_area,
+        elastic_load: at.map_or(zero, |a| Scaled::new(a.load_elastic, a.scale_exponent)),
+        area_scale,
+    });
+    let wear_area_scaled = wear.rate;
     let real_area = area.scale(area_scale).value();
     let plastic_real_area = plastic_area.scale(area_scale).value();
     let wear_rate = wear_area_scaled.value();
@@ -689,6 +711,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         other_model: None,
         stand_in_model: stand_in,
         humidity: None,
+        wear_details: wear.details,
     };
     let humidity = env.map(|env| {
         // Γ from the unloaded equilibrium (the tensile rule's root of P̄ = 0),

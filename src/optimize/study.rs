@@ -385,6 +385,9 @@ mod tests {
                 "contact_angle_a",
                 "contact_angle_b",
                 "temperature",
+                "activation_energy",
+                "activation_volume",
+                "sliding_speed",
             ]
         );
     }

@@ -159,6 +159,40 @@ static MATERIALS: [Material; 10] = [
     },
 ];
 
+/// The crystalline materials whose atomic scale the catalogue gives
+/// ([`atomic_scale`]): the stress-assisted wear law's defaults (docs/model.md §12).
+pub const ATOMIC_SCALE_MATERIALS: [&str; 6] = [
+    "polysilicon",
+    "single-crystal silicon",
+    "diamond",
+    "silicon carbide",
+    "gold",
+    "nickel",
+];
+
+/// (a₀, Ω) of a catalogue material (m, m³): the spacing of surface sites and the
+/// volume of one atom, from the lattice constant a of the crystal at room
+/// temperature. Diamond-cubic (Si, C) and zinc-blende (3C-SiC) crystals have 8 atoms
+/// per cube, a₀ = a/√2 (the (110) row spacing), Ω = a³/8: silicon a = 0.5431 nm
+/// gives a₀ = 0.384 nm and Ω = 0.02002 nm³ (the values of Jacobs & Carpick 2013),
+/// diamond a = 0.3567 nm, 3C-SiC a = 0.4360 nm. Face-centred cubic metals have 4
+/// atoms per cube, a₀ = a/√2 (nearest neighbours), Ω = a³/4: gold a = 0.4078 nm,
+/// nickel a = 0.3524 nm (Kittel, Introduction to Solid State Physics, table 1.3).
+/// Amorphous or compound films (oxide, nitride, DLC, steel) have none: a file gives
+/// them. None for those and for names outside the catalogue.
+pub fn atomic_scale(name: &str) -> Option<(f64, f64)> {
+    let (lattice, atoms) = match name {
+        "polysilicon" | "single-crystal silicon" => (0.5431e-9, 8.0),
+        "diamond" => (0.3567e-9, 8.0),
+        "silicon carbide" => (0.4360e-9, 8.0),
+        "gold" => (0.4078e-9, 4.0),
+        "nickel" => (0.3524e-9, 4.0),
+        _ => return None,
+    };
+    let a: f64 = lattice;
+    Some((a / std::f64::consts::SQRT_2, a * a * a / atoms))
+}
+
 /// Every catalogue material.
 pub fn all() -> &'static [Material] {
     &MATERIALS

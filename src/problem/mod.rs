@@ -71,8 +71,10 @@ pub use study::{Dimensioned, Study};
 pub use topography::{ContactModel, ScanSource};
 pub use uncertainty::{Event, UncertainInput, Uncertainty};
 
+use crate::model::wear_law::{Activation, ContactStress};
 use crate::model::{
     AdhesionModel, AttractionKind, Cantilever, Environment, HumidityRange, Liquid, Scene, WearArea,
+    WearModel,
 };
 use crate::optimize::{
     AdhesionMeasure, Constraint, ConstraintQuantity, DesignVariable, Named, Objective,
@@ -303,7 +305,7 @@ impl Accept {
     }
 
     fn with_unit(&self, x: f64) -> String {
-        let unit = self.dim.si_unit();
+        let (x, unit) = self.shown(x);
         if unit.is_empty() {
             format_number(x)
         } else {
@@ -311,15 +313,24 @@ impl Accept {
         }
     }
 
+    /// A bound as a message writes it: energies in eV, the rest in SI.
+    fn shown(&self, x: f64) -> (f64, &'static str) {
+        match self.dim {
+            Dimension::Energy => (x / crate::units::ELECTRON_VOLT, "eV"),
+            _ => (x, self.dim.si_unit()),
+        }
+    }
+
     fn describe(&self) -> String {
         let mut s = match (self.lo.is_finite(), self.hi.is_finite()) {
             (true, true) => {
-                let unit = self.dim.si_unit();
+                let (lo, unit) = self.shown(self.lo);
+                let (hi, _) = self.shown(self.hi);
                 format!(
                     "must be in {}{}, {}{}{}",
                     if self.lo_open { "(" } else { "[" },
-                    format_number(self.lo),
-                    format_number(self.hi),
+                    format_number(lo),
+                    format_number(hi),
                     if self.hi_open { ")" } else { "]" },
                     if unit.is_empty() {
                         String::new()
@@ -673,17 +684,27 @@ impl Problem {
             )?,
             Accept::non_negative(Dimension::Length).why("a sliding distance"),
         )?;
-        let wear_coefficient = r.quantity(
-            "contact.wear_coefficient",
-            r.required(
-                &c.wear_coefficient,
+        // A law that computes its own coefficient (`[wear] law`) needs no k (an
+        // unknown law's name is refused with `[wear]`).
+        let law_computes_k = raw
+            .wear
+            .as_ref()
+            .and_then(|w| w.get_ref().law.as_ref())
+            .is_some_and(|l| l.get_ref() != WearModel::Archard.as_str());
+        let wear_coefficient = match (&c.wear_coefficient, law_computes_k) {
+            (None, true) => 0.0,
+            _ => r.quantity(
                 "contact.wear_coefficient",
-                Some(&cspan),
-                "the dimensionless Archard wear coefficient k in [0, 1], e.g. wear_coefficient = 1e-4",
+                r.required(
+                    &c.wear_coefficient,
+                    "contact.wear_coefficient",
+                    Some(&cspan),
+                    "the dimensionless Archard wear coefficient k in [0, 1], e.g. wear_coefficient = 1e-4",
+                )?,
+                Accept::interval(Dimension::Dimensionless, 0.0, false, 1.0, false)
+                    .why("the dimensionless Archard wear coefficient"),
             )?,
-            Accept::interval(Dimension::Dimensionless, 0.0, false, 1.0, false)
-                .why("the dimensionless Archard wear coefficient"),
-        )?;
+        };
         let wear_area = match &c.wear_area {
             None => WearArea::default(),
             Some(w) => match w.get_ref().as_str() {
@@ -910,6 +931,10 @@ impl Problem {
         )?;
         let environment = r.environment(&raw, i)?;
         let cantilever = r.cantilever(&raw)?;
+        let temperature = r.temperature(&raw, c, environment.as_ref())?;
+        let environment = environment.map(|e| Environment { temperature, ..e });
+        let (wear_law, activation) =
+            r.wear(&raw, body_a.material, shear_strength, adhesion_model)?;
         let scene = Scene {
             youngs_modulus_a: body_a.youngs_modulus,
             poisson_ratio_a: body_a.poisson_ratio,
@@ -926,6 +951,9 @@ impl Problem {
             sliding_distance,
             wear_coefficient,
             wear_area,
+            wear_law,
+            temperature,
+            activation,
             real_area_scale: 1.0,
             requirements: crate::model::Requirements {
                 allowed_wear_depth,
@@ -986,6 +1014,246 @@ fn design_accept(q: SceneParameter) -> Accept {
 impl Reader<'_> {
     /// `[environment]` and `[interface] contact_angle` (docs/model.md §9): None
     /// without an `[environment]` table.
+    /// T of the contact: `contact.temperature`, or in humid air
+    /// `environment.temperature` (one of them), else 298.15 K.
+    fn temperature(
+        &self,
+        raw: &RawProblem,
+        c: &raw::RawContact,
+        environment: Option<&Environment>,
+    ) -> Result<f64, ProblemError> {
+        let accept = Accept::positive(Dimension::Temperature).why("the absolute temperature");
+        let given = self.optional_quantity("contact.temperature", &c.temperature, accept)?;
+        let in_air = raw
+            .environment
+            .as_ref()
+            .is_some_and(|e| e.get_ref().temperature.is_some());
+        match (given, c.temperature.as_ref()) {
+            (Some(_), Some(w)) if in_air => Err(self.invalid(
+                "contact.temperature",
+                &w.span(),
+                "is given twice: environment.temperature is the same temperature (one for the air and the contact); keep one",
+            )),
+            (Some(t), Some(w))
+                if t >= crate::model::capillary::WATER_CRITICAL_TEMPERATURE
+                    && environment.is_some_and(|e| e.liquid == Liquid::Water) =>
+            {
+                Err(self.invalid(
+                    "contact.temperature",
+                    &w.span(),
+                    "must be below water's critical point, 647.096 K, in humid air (no liquid water above it)",
+                ))
+            }
+            (Some(t), _) => Ok(t),
+            (None, _) => Ok(environment
+                .map_or(crate::model::capillary::ROOM_TEMPERATURE, |e| e.temperature)),
+        }
+    }
+
+    /// `[wear]`: the law (default Archard, which takes no other key) and the
+    /// stress-assisted law's inputs (docs/model.md §12), a₀ and Ω defaulting to
+    /// body a's catalogue material.
+    fn wear(
+        &self,
+        raw: &RawProblem,
+        material: Option<&'static Material>,
+        shear_strength: Option<f64>,
+        adhesion_model: AdhesionModel,
+    ) -> Result<(WearModel, Option<Activation>), ProblemError> {
+        let Some(table) = &raw.wear else {
+            return Ok((WearModel::Archard, None));
+        };
+        let span = table.span();
+        let w = table.get_ref();
+        let law = match &w.law {
+            None => WearModel::Archard,
+            Some(name) => WearModel::from_name(name.get_ref()).ok_or_else(|| {
+                let names = WearModel::names();
+                let hint = suggest(name.get_ref(), names.iter().copied())
+                    .map(|s| format!("; did you mean \"{s}\"?"))
+                    .unwrap_or_default();
+                self.invalid(
+                    "wear.law",
+                    &name.span(),
+                    format!("unknown wear law{hint} (one of: {})", names.join(", ")),
+                )
+            })?,
+        };
+        let law_inputs: [(&str, Option<Range<usize>>); 7] = [
+            (
+                "activation_energy",
+                w.activation_energy.as_ref().map(|v| v.span()),
+            ),
+            (
+                "activation_volume",
+                w.activation_volume.as_ref().map(|v| v.span()),
+            ),
+            (
+                "attempt_frequency",
+                w.attempt_frequency.as_ref().map(|v| v.span()),
+            ),
+            ("site_spacing", w.site_spacing.as_ref().map(|v| v.span())),
+            ("atomic_volume", w.atomic_volume.as_ref().map(|v| v.span())),
+            ("stress", w.stress.as_ref().map(|v| v.span())),
+            ("sliding_speed", w.sliding_speed.as_ref().map(|v| v.span())),
+        ];
+        if law == WearModel::Archard {
+            if let Some((key, Some(at))) = law_inputs.iter().find(|(_, at)| at.is_some()) {
+                return Err(self.invalid(
+                    &format!("wear.{key}"),
+                    at,
+                    format!(
+                        "is an input of law = \"{}\", and the law is \"{}\" (its wear coefficient is contact.wear_coefficient): set law = \"{}\", or remove {key}",
+                        WearModel::StressAssisted.as_str(),
+                        law.as_str(),
+                        WearModel::StressAssisted.as_str()
+                    ),
+                ));
+            }
+            return Ok((law, None));
+        }
+        let ev = crate::units::ELECTRON_VOLT;
+        let activation_energy = self.quantity(
+            "wear.activation_energy",
+            self.required(
+                &w.activation_energy,
+                "wear.activation_energy",
+                Some(&span),
+                "the activation energy ΔU of removing one atom, e.g. activation_energy = \"0.91 eV\"",
+            )?,
+            Accept::interval(Dimension::Energy, 0.0, true, 10.0 * ev, false)
+                .why("the activation energy ΔU"),
+        )?;
+        let activation_volume = self.quantity(
+            "wear.activation_volume",
+            self.required(
+                &w.activation_volume,
+                "wear.activation_volume",
+                Some(&span),
+                "the activation volume ΔV, e.g. activation_volume = \"0.0067 nm^3\" (0: no stress assistance)",
+            )?,
+            Accept::interval(Dimension::Volume, 0.0, false, 1e-27, false)
+                .why("the activation volume ΔV, 0 to 1 nm^3"),
+        )?;
+        let attempt_frequency = self
+            .optional_quantity(
+                "wear.attempt_frequency",
+                &w.attempt_frequency,
+                Accept::positive(Dimension::Frequency).why("the attempt frequency f0"),
+            )?
+            .unwrap_or(crate::model::wear_law::ATTEMPT_FREQUENCY);
+        let scale = material.and_then(|m| catalogue::atomic_scale(m.name));
+        let from_catalogue = |key: &str, example: &str| {
+            self.missing(
+                &format!("wear.{key}"),
+                Some(&span),
+                &format!(
+                    "{example}; the catalogue gives it only for body a of {}",
+                    catalogue::ATOMIC_SCALE_MATERIALS.join(", ")
+                ),
+            )
+        };
+        let site_spacing = match &w.site_spacing {
+            Some(v) => self.quantity(
+                "wear.site_spacing",
+                v,
+                Accept::positive(Dimension::Length).why("the spacing a0 of surface sites"),
+            )?,
+            None => scale.map(|s| s.0).ok_or_else(|| {
+                from_catalogue(
+                    "site_spacing",
+                    "the spacing a0 of surface sites, e.g. site_spacing = \"0.384 nm\"",
+                )
+            })?,
+        };
+        let atomic_volume = match &w.atomic_volume {
+            Some(v) => {
+                let omega = self.quantity(
+                    "wear.atomic_volume",
+                    v,
+                    Accept::positive(Dimension::Volume).why("the volume Ω of one atom"),
+                )?;
+                let cap = crate::model::wear_law::MAX_ATOMIC_VOLUME_RATIO * site_spacing.powi(3);
+                if omega > cap {
+                    return Err(self.invalid(
+                        "wear.atomic_volume",
+                        &v.span(),
+                        format!(
+                            "must be at most 10 a0^3 = {} with site_spacing a0 = {} (one atom's volume is about a0^3)",
+                            format_quantity(cap, Dimension::Volume),
+                            format_quantity(site_spacing, Dimension::Length)
+                        ),
+                    ));
+                }
+                omega
+            }
+            None => scale.map(|s| s.1).ok_or_else(|| {
+                from_catalogue(
+                    "atomic_volume",
+                    "the volume Ω of one atom, e.g. atomic_volume = \"0.02002 nm^3\"",
+                )
+            })?,
+        };
+        let stress = match &w.stress {
+            None => ContactStress::Normal,
+            Some(word) => ContactStress::ALL
+                .into_iter()
+                .find(|s| s.as_str() == word.get_ref())
+                .ok_or_else(|| {
+                    let names = ContactStress::ALL.map(ContactStress::as_str);
+                    let hint = suggest(word.get_ref(), names)
+                        .map(|s| format!("; did you mean \"{s}\"?"))
+                        .unwrap_or_default();
+                    self.invalid(
+                        "wear.stress",
+                        &word.span(),
+                        format!("unknown stress{hint} (one of: normal, shear)"),
+                    )
+                })?,
+        };
+        if let (ContactStress::Shear, None) = (stress, shear_strength) {
+            let at = w.stress.as_ref().map_or(span.clone(), |s| s.span());
+            return Err(self.invalid(
+                "wear.stress",
+                &at,
+                "\"shear\" reads the junctions' shear strength τ: add interface.shear_strength, e.g. shear_strength = \"1 GPa\"",
+            ));
+        }
+        if stress == ContactStress::Normal && adhesion_model.law().general() {
+            let at = w.stress.as_ref().map_or(span.clone(), |s| s.span());
+            return Err(self.invalid(
+                "wear.stress",
+                &at,
+                format!(
+                    "\"normal\" reads each summit's contact pressure, which the {} law's table does not give: set interface.adhesion_model = \"jkr\" or \"dmt\", or stress = \"shear\" with interface.shear_strength",
+                    adhesion_model.label()
+                ),
+            ));
+        }
+        let sliding_speed = self.quantity(
+            "wear.sliding_speed",
+            self.required(
+                &w.sliding_speed,
+                "wear.sliding_speed",
+                Some(&span),
+                "the sliding speed v, e.g. sliding_speed = \"38 mm/s\" (the law's rate depends on it)",
+            )?,
+            Accept::positive(Dimension::Speed).why("the sliding speed v"),
+        )?;
+        Ok((
+            law,
+            Some(Activation {
+                activation_energy,
+                activation_volume,
+                attempt_frequency,
+                site_spacing,
+                atomic_volume,
+                stress,
+                sliding_speed,
+            }),
+        ))
+    }
+
     fn environment(
         &self,
         raw: &RawProblem,
@@ -1287,6 +1555,9 @@ impl Reader<'_> {
                     SceneParameter::ContactAngleA => &d.contact_angle_a,
                     SceneParameter::ContactAngleB => &d.contact_angle_b,
                     SceneParameter::Temperature => &d.temperature,
+                    SceneParameter::ActivationEnergy => &d.activation_energy,
+                    SceneParameter::ActivationVolume => &d.activation_volume,
+                    SceneParameter::SlidingSpeed => &d.sliding_speed,
                     // Not design variables (SceneParameter::DESIGN leaves them out).
                     SceneParameter::NominalArea
                     | SceneParameter::Load
@@ -1301,6 +1572,13 @@ impl Reader<'_> {
                             &format!("design.{}", q.as_str()),
                             &bound.span(),
                             "moves the humid air's liquid, and the file has no [environment]: add one with relative_humidity, e.g. relative_humidity = \"90 %\"",
+                        ));
+                    }
+                    if q.is_wear_law_input() && scene.activation.is_none() {
+                        return Err(self.invalid(
+                            &format!("design.{}", q.as_str()),
+                            &bound.span(),
+                            "moves an input of the stress-assisted wear law, and the file's law is Archard's: add [wear] law = \"stress_assisted\" with its inputs (docs/model.md §12)",
                         ));
                     }
                     placed.push((bound.span().start, self.design_variable(q, bound, scene)?));

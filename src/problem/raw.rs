@@ -118,6 +118,23 @@ pub struct RawProblem {
     pub environment: Option<Spanned<RawEnvironment>>,
     pub stiction: Option<Spanned<RawStiction>>,
     pub uncertainty: Option<Spanned<RawUncertainty>>,
+    pub wear: Option<Spanned<RawWear>>,
+}
+
+/// `[wear]`: the wear law and its inputs (docs/model.md §3, §12).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWear {
+    /// `"archard"` (default) or `"stress_assisted"`.
+    pub law: Option<Spanned<String>>,
+    pub activation_energy: Option<Spanned<RawQuantity>>,
+    pub activation_volume: Option<Spanned<RawQuantity>>,
+    pub attempt_frequency: Option<Spanned<RawQuantity>>,
+    pub site_spacing: Option<Spanned<RawQuantity>>,
+    pub atomic_volume: Option<Spanned<RawQuantity>>,
+    /// `"normal"` (default) or `"shear"`.
+    pub stress: Option<Spanned<String>>,
+    pub sliding_speed: Option<Spanned<RawQuantity>>,
 }
 
 /// `[environment]`: the humid air around the contact (docs/model.md §9).
@@ -158,6 +175,8 @@ pub struct RawContact {
     pub sliding_distance: Option<Spanned<RawQuantity>>,
     pub wear_coefficient: Option<Spanned<RawQuantity>>,
     pub wear_area: Option<Spanned<String>>,
+    /// T of the contact (K); `[environment] temperature` in humid air.
+    pub temperature: Option<Spanned<RawQuantity>>,
     pub allowed_wear_depth: Option<Spanned<RawQuantity>>,
     pub sliding_per_cycle: Option<Spanned<RawQuantity>>,
     pub restoring_force: Option<Spanned<RawQuantity>>,
@@ -240,6 +259,9 @@ pub struct RawDesign {
     pub contact_angle_a: Option<Spanned<RawBound>>,
     pub contact_angle_b: Option<Spanned<RawBound>>,
     pub temperature: Option<Spanned<RawBound>>,
+    pub activation_energy: Option<Spanned<RawBound>>,
+    pub activation_volume: Option<Spanned<RawBound>>,
+    pub sliding_speed: Option<Spanned<RawBound>>,
     pub materials: Option<Spanned<Vec<Spanned<String>>>>,
 }
 

@@ -61,6 +61,9 @@ impl DesignKeys for SceneParameter {
             SceneParameter::WearCoefficient => "contact.wear_coefficient",
             SceneParameter::SlidingDistance => "contact.sliding_distance",
             SceneParameter::RelativeHumidity => "environment.relative_humidity",
+            SceneParameter::ActivationEnergy => "wear.activation_energy",
+            SceneParameter::ActivationVolume => "wear.activation_volume",
+            SceneParameter::SlidingSpeed => "wear.sliding_speed",
         }
     }
 
@@ -79,6 +82,9 @@ impl DesignKeys for SceneParameter {
             | SceneParameter::ContactAngleA
             | SceneParameter::ContactAngleB => "{ min = \"0 deg\", max = \"110 deg\" }",
             SceneParameter::Temperature => "{ min = \"273 K\", max = \"350 K\" }",
+            SceneParameter::ActivationEnergy => "{ min = \"0.5 eV\", max = \"1.5 eV\" }",
+            SceneParameter::ActivationVolume => "{ min = \"1e-3 nm^3\", max = \"0.02 nm^3\" }",
+            SceneParameter::SlidingSpeed => "{ min = \"1 um/s\", max = \"0.1 m/s\" }",
             // Not design variables: bounds no message asks for.
             SceneParameter::NominalArea
             | SceneParameter::Load

@@ -183,6 +183,15 @@ impl Reader<'_> {
                     ),
                 ));
             }
+            if parameter.is_wear_law_input() && scene.activation.is_none() {
+                return Err(self.invalid(
+                    &field,
+                    &value.span(),
+                    format!(
+                        "{key} is an input of the stress-assisted wear law, and the problem's law is Archard's: add [wear] law = \"stress_assisted\" (docs/model.md §12)"
+                    ),
+                ));
+            }
             let distribution = self.distribution(&field, value, parameter)?;
             inputs.push((
                 UncertainInput {

@@ -8,6 +8,63 @@ use crate::app::eval::{EvalDocument, EvalOptions, LOAD_CURVE_POINTS};
 use crate::model::law::{DUGDALE_STRESS_FACTOR, TRANSITION_TABOR};
 use crate::model::{AdhesionModel, Evaluation, Scene, Sensitivity, WearArea};
 
+/// The stress-assisted law's inputs and numbers (docs/model.md §12), one line each;
+/// none under Archard.
+fn wear_law_lines(sc: &Scene, ev: &Evaluation) -> Vec<String> {
+    let (Some(a), Some(w)) = (sc.activation, ev.wear_details) else {
+        return Vec::new();
+    };
+    let ev_unit = crate::units::ELECTRON_VOLT;
+    let stress = match a.stress {
+        crate::model::wear_law::ContactStress::Normal => {
+            "each summit's mean contact pressure (H on a plastic junction)"
+        }
+        crate::model::wear_law::ContactStress::Shear => "the interface's shear strength τ",
+    };
+    let mut out = vec![
+        format!(
+            "activation energy ΔU = {} eV, activation volume ΔV = {}, attempt frequency f0 = {}",
+            sig(a.activation_energy / ev_unit, 4),
+            si(a.activation_volume, "m³", 4),
+            si(a.attempt_frequency, "Hz", 4)
+        ),
+        format!(
+            "site spacing a0 = {}, atomic volume Ω = {}, temperature T = {}, sliding speed v = {}",
+            si(a.site_spacing, "m", 4),
+            si(a.atomic_volume, "m³", 4),
+            si(sc.temperature, "K", 5),
+            si(a.sliding_speed, "m/s", 4)
+        ),
+        format!("the stress that assists: {stress}"),
+    ];
+    if let Some(k) = w.effective_wear_coefficient {
+        out.push(format!(
+            "effective wear coefficient k_eff = {} (the one-pass cap Ω/a0³ = {})",
+            sig_exp(k, 4),
+            sig(a.atomic_volume / a.site_spacing.powi(3), 4)
+        ));
+    }
+    if let Some(s) = w.mean_contact_stress {
+        out.push(format!(
+            "mean contact stress (area-weighted) = {}",
+            si(s, "Pa", 4)
+        ));
+    }
+    if let Some(f) = w.saturated_fraction {
+        out.push(format!(
+            "saturated share of the rate (Γa0/v > 1: every site of the path removed) = {} %",
+            sig(100.0 * f, 4)
+        ));
+    }
+    if let Some(e) = w.apparent_activation_energy {
+        out.push(format!(
+            "apparent activation energy −d ln(rate)/d(1/k_BT) = {} eV",
+            sig(e / ev_unit, 5)
+        ));
+    }
+    out
+}
+
 /// The formats `wearopt eval` writes (the first is the default).
 pub const FORMATS: &[super::Format] = &[
     super::Format::Text,
@@ -116,6 +173,22 @@ pub fn json_value(r: &EvalReport) -> Value {
             "scene".into(),
             serde_json::to_value(r.scene).unwrap_or(Value::Null),
         );
+        // The wear law's inputs, under a law that takes them (docs/model.md §12).
+        if let Some(a) = r.scene.activation {
+            obj.insert(
+                "wear_inputs".into(),
+                json!({
+                    "activation_energy": a.activation_energy,
+                    "activation_volume": a.activation_volume,
+                    "attempt_frequency": a.attempt_frequency,
+                    "site_spacing": a.site_spacing,
+                    "atomic_volume": a.atomic_volume,
+                    "stress": a.stress,
+                    "sliding_speed": a.sliding_speed,
+                    "temperature": r.scene.temperature,
+                }),
+            );
+        }
         obj.insert(
             "roughness_source".into(),
             r.scan.map_or(Value::Null, super::roughness::scan_json),
@@ -488,7 +561,12 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
         vec!["load W".into(), q(sc.load, "N")],
         vec!["nominal area A_n".into(), q(sc.nominal_area, "m²")],
         vec!["sliding distance L".into(), q(sc.sliding_distance, "m")],
-        vec!["wear coefficient k".into(), sig_exp(sc.wear_coefficient, 3)],
+        match sc.wear_law {
+            crate::model::WearModel::Archard => {
+                vec!["wear coefficient k".into(), sig_exp(sc.wear_coefficient, 3)]
+            }
+            law => vec!["wear law".into(), law.law().label().into()],
+        },
         vec!["asperity law".into(), law_label(ev, sc)],
     ];
     p.table(&["input", "value"], &rows, &[]);
@@ -795,12 +873,18 @@ pub fn text(r: &EvalReport) -> String {
     for l in r.scan.map(super::roughness::scan_lines).unwrap_or_default() {
         line(l);
     }
+    // Under a law that computes its own coefficient the file's k is not read.
+    let wear_word = match sc.wear_law {
+        crate::model::WearModel::Archard => {
+            format!("wear coefficient k = {}", sig_exp(sc.wear_coefficient, 3))
+        }
+        law => format!("{} wear law", law.law().label()),
+    };
     line(format!(
-        "  load W = {} on nominal area {}, sliding {}, wear coefficient k = {}, wearing area: {}",
+        "  load W = {} on nominal area {}, sliding {}, {wear_word}, wearing area: {}",
         si(sc.load, "N", 3),
         si(sc.nominal_area, "m²", 4),
         si(sc.sliding_distance, "m", 3),
-        sig_exp(sc.wear_coefficient, 3),
         match sc.wear_area {
             WearArea::Total => "all contacts",
             WearArea::Plastic => "plastic junctions only",
@@ -989,7 +1073,15 @@ pub fn text(r: &EvalReport) -> String {
         }
     }
     line(String::new());
-    line("Wear (Archard, V = k A L)".into());
+    let wear_law = sc.wear_law.law();
+    line(format!(
+        "Wear ({}, {})",
+        wear_law.label(),
+        wear_law.formula()
+    ));
+    for l in wear_law_lines(sc, ev) {
+        line(format!("  {l}"));
+    }
     line(format!(
         "  wear volume V = {} over {}",
         si(ev.wear_volume, "m³", 4),

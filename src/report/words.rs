@@ -32,6 +32,9 @@ fn input_words(i: SceneParameter) -> (&'static str, Dimension) {
         SceneParameter::WearCoefficient => "wear coefficient k",
         SceneParameter::SlidingDistance => "sliding distance L",
         SceneParameter::RelativeHumidity => "relative humidity RH",
+        SceneParameter::ActivationEnergy => "activation energy ΔU",
+        SceneParameter::ActivationVolume => "activation volume ΔV",
+        SceneParameter::SlidingSpeed => "sliding speed v",
     };
     (words, i.dimension())
 }

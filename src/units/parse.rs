@@ -290,6 +290,9 @@ impl Factor {
     }
 }
 
+/// One electronvolt in joules (exact in the SI since 2019).
+pub const ELECTRON_VOLT: f64 = 1.602_176_634e-19;
+
 /// Canonical spelling of a unit: no whitespace, `^` powers, `**` read as `^`.
 fn normalize(unit: &str) -> String {
     let mut s: String = unit.chars().filter(|c| !c.is_whitespace()).collect();
@@ -362,6 +365,14 @@ fn factor_in(unit: &str, dimension: Dimension) -> Option<Factor> {
         Dimension::SurfaceEnergy => {
             pow10(prefixed(unit, "J/m^2").or_else(|| prefixed(unit, "N/m")))
         }
+        Dimension::Energy => prefixed(unit, "eV")
+            .map(|exp10| Factor {
+                exp10,
+                mult: ELECTRON_VOLT,
+            })
+            .or_else(|| pow10(prefixed(unit, "J"))),
+        Dimension::Frequency => pow10(prefixed(unit, "Hz").or_else(|| (unit == "/s").then_some(0))),
+        Dimension::Speed => pow10(prefixed(unit, "m/s")),
         Dimension::Time => match unit {
             "min" => Some(Factor {
                 exp10: 0,
@@ -464,6 +475,19 @@ mod tests {
         assert!(close(q("2 min", Dimension::Time), 120.0));
         assert!(close(q("1 h", Dimension::Time), 3600.0));
         assert!(close(q("1e-4", Dimension::Dimensionless), 1e-4));
+        // The units of the stress-assisted wear law (docs/model.md §12).
+        assert!(close(
+            q("0.91 eV", Dimension::Energy),
+            0.91 * 1.602_176_634e-19
+        ));
+        assert!(close(q("1 meV", Dimension::Energy), 1.602_176_634e-22));
+        assert!(close(q("2e-19 J", Dimension::Energy), 2e-19));
+        assert!(close(q("1e13 Hz", Dimension::Frequency), 1e13));
+        assert!(close(q("10 THz", Dimension::Frequency), 1e13));
+        assert!(close(q("38 mm/s", Dimension::Speed), 0.038));
+        assert!(close(q("1 um/s", Dimension::Speed), 1e-6));
+        assert!(close(q("2 m/s", Dimension::Speed), 2.0));
+        assert!(close(q("0.0067 nm^3", Dimension::Volume), 6.7e-30));
     }
 
     #[test]
@@ -595,7 +619,7 @@ mod tests {
             err.to_string(),
             "unknown unit \"uQ\"; expected a force such as \"10 uN\", \"2 mN\" or a number in newtons"
         );
-        for text in ["10 xN", "10 GGPa", "10 um^-3", "1 eV", "3 furlongs"] {
+        for text in ["10 xN", "10 GGPa", "10 um^-3", "1 erg", "3 furlongs"] {
             assert!(
                 matches!(
                     parse_quantity(text, Dimension::Force),

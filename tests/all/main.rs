@@ -38,6 +38,7 @@ mod robust;
 mod robust_design;
 mod search_cost;
 mod stability;
+mod stress_assisted_wear;
 mod surface;
 mod surface_problem;
 mod surface_read;

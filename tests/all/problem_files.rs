@@ -388,7 +388,7 @@ const BAD: &[(&str, Option<usize>, &[&str])] = &[
         Some(3),
         &[
             "unknown key `contact.lod`; did you mean `load`?",
-            "(valid keys: load, nominal_area, sliding_distance, wear_coefficient, wear_area, allowed_wear_depth, sliding_per_cycle, restoring_force)",
+            "(valid keys: load, nominal_area, sliding_distance, wear_coefficient, wear_area, temperature, allowed_wear_depth, sliding_per_cycle, restoring_force)",
         ],
     ),
     (

@@ -364,6 +364,9 @@ fn a_root_near_the_zero_of_the_load_is_found_to_rounding() {
         sliding_distance: 1.0,
         wear_coefficient: 0.0001,
         wear_area: WearArea::Total,
+        wear_law: Default::default(),
+        temperature: 298.15,
+        activation: None,
         real_area_scale: 1.0,
         requirements: Requirements {
             allowed_wear_depth: None,

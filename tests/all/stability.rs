@@ -515,6 +515,9 @@ fn scene() -> impl Strategy<Value = Scene> {
                 } else {
                     WearArea::Total
                 },
+                wear_law: Default::default(),
+                temperature: 298.15,
+                activation: None,
                 real_area_scale: 1.0,
                 requirements: Default::default(),
                 adhesion_model: match law {
@@ -899,6 +902,7 @@ fn humid_scene() -> impl Strategy<Value = Scene> {
         250.0..450.0f64,
     )
         .prop_map(|(s, rh, a, b, t)| Scene {
+            temperature: t,
             environment: Some(wearopt::model::Environment {
                 relative_humidity: rh,
                 temperature: t,
