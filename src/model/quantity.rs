@@ -91,6 +91,15 @@ pub enum Quantity {
     /// γ, the work of adhesion (J/m²), read from the scene: the measure a front
     /// trades wear against when a design moves γ.
     WorkOfAdhesion,
+    // Debris or smoothing (docs/model.md §12); each exists only with a shear strength τ_j.
+    /// d* = Λ w G / τ_j², the junction diameter above which a junction breaks off a
+    /// debris particle (m).
+    CriticalJunctionSize,
+    /// The share of the contacts whose junction (Hertz diameter 2√(Rδ)) is wider
+    /// than d*; exists only in contact.
+    DebrisContactFraction,
+    /// The share of the real area in junctions wider than d*; exists only in contact.
+    DebrisAreaFraction,
 }
 
 /// What a quantity may be used as.
@@ -183,7 +192,7 @@ fn ln_friction(per_load: bool, ev: &Evaluation, scene: &Scene) -> f64 {
 
 impl Quantity {
     /// Every quantity, in table order.
-    pub const ALL: [Quantity; 25] = [
+    pub const ALL: [Quantity; 28] = [
         Quantity::WearRate,
         Quantity::WearVolume,
         Quantity::RealArea,
@@ -209,6 +218,9 @@ impl Quantity {
         Quantity::PlasticRealArea,
         Quantity::PlasticContactCount,
         Quantity::WorkOfAdhesion,
+        Quantity::CriticalJunctionSize,
+        Quantity::DebrisContactFraction,
+        Quantity::DebrisAreaFraction,
     ];
 
     /// The table. Roles: the objectives are the wear, the area, the pull-off and
@@ -340,6 +352,27 @@ impl Quantity {
                 POSITIVE,
                 FRONT_MEASURE,
             ),
+            Quantity::CriticalJunctionSize => row(
+                "critical_junction_size",
+                "d*",
+                Length,
+                POSITIVE,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::DebrisContactFraction => row(
+                "debris_contact_fraction",
+                "n_debris/n",
+                Dimensionless,
+                FRACTION,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::DebrisAreaFraction => row(
+                "debris_area_fraction",
+                "A_debris/A_r",
+                Dimensionless,
+                FRACTION,
+                QUANTITY_OF_INTEREST,
+            ),
         }
     }
 
@@ -417,6 +450,9 @@ impl Quantity {
             Quantity::PlasticRealArea => ev.plastic_real_area,
             Quantity::PlasticContactCount => ev.plastic_contact_count,
             Quantity::WorkOfAdhesion => scene.work_of_adhesion,
+            Quantity::CriticalJunctionSize => ev.debris?.critical_junction_size,
+            Quantity::DebrisContactFraction => ev.debris?.debris_contact_fraction?,
+            Quantity::DebrisAreaFraction => ev.debris?.debris_area_fraction?,
         })
     }
 
@@ -618,6 +654,11 @@ mod tests {
                 Quantity::PlasticRealArea => Some(ev.plastic_real_area),
                 Quantity::PlasticContactCount => Some(ev.plastic_contact_count),
                 Quantity::WorkOfAdhesion => Some(s.work_of_adhesion),
+                Quantity::CriticalJunctionSize => ev.debris.map(|d| d.critical_junction_size),
+                Quantity::DebrisContactFraction => {
+                    ev.debris.and_then(|d| d.debris_contact_fraction)
+                }
+                Quantity::DebrisAreaFraction => ev.debris.and_then(|d| d.debris_area_fraction),
             }
         };
         for q in Quantity::ALL {

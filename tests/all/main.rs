@@ -11,6 +11,7 @@ mod calibrate;
 mod capillary;
 mod cli;
 mod contact;
+mod debris;
 mod dmt;
 mod dmt_reference;
 mod dmt_studies;
