@@ -18,6 +18,7 @@ mod dmt_studies;
 mod dmt_weak;
 mod embed;
 mod figures;
+mod fit_wear;
 mod hock_schittkowski;
 mod html;
 mod lennard_jones_law;
