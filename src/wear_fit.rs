@@ -1,8 +1,8 @@
 //! The activation energy ΔU and volume ΔV of stress-assisted wear from measured wear
-//! rates (`wearopt fit-wear`; docs/model.md §13).
+//! rates (`wearopt fit-wear`; docs/model.md §14).
 //!
-//! In the atom-by-atom regime (Γ a₀/v ≪ 1, docs/model.md §12's companion law) the wear
-//! rate of a contact under stress σ at temperature T is
+//! In the atom-by-atom regime (Γ a₀/v ≪ 1 in the stress-assisted law, docs/model.md
+//! §12) the wear rate of a contact under stress σ at temperature T is
 //!
 //! ```text
 //! rate = A exp(−(ΔU − σ ΔV) / (k_B T)),   so   ln rate = c + ΔV σ/(k_B T) − ΔU/(k_B T)

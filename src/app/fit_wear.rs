@@ -1,5 +1,5 @@
 //! `wearopt fit-wear`: the activation energy and volume of stress-assisted wear from
-//! measured wear rates (docs/model.md §13).
+//! measured wear rates (docs/model.md §14).
 
 use std::path::Path;
 

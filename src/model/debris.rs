@@ -1,6 +1,6 @@
 //! Debris or smoothing: which contacts break off a particle and which wear atom
 //! by atom (Aghababaei, Warner & Molinari, Nat. Commun. 7 (2016) 11816;
-//! docs/model.md §12).
+//! docs/model.md §13).
 //!
 //! A junction wider than the critical size d* = Λ w G / τ_j² (w the work of
 //! adhesion, G the shear modulus of the softer body, τ_j the junction's shear
@@ -67,7 +67,7 @@ impl WearMechanism {
 /// Whether the wear law named `wear_law` removes material atom by atom (so that it
 /// assumes smoothing and is wrong where most of the area makes debris). Archard's
 /// law takes its coefficient from measurement and assumes neither; an atom-by-atom
-/// law (`stress_assisted`, docs/model.md §10 of the specification) does.
+/// law (`stress_assisted`, docs/model.md §12) does.
 pub fn assumes_smoothing(wear_law: &str) -> bool {
     matches!(wear_law, "stress_assisted")
 }
@@ -176,8 +176,7 @@ mod tests {
     /// ν = 0.22 so G = 65.57 GPa, w = 0.1 J/m², Λ = 12): (τ_j, d*, contact share,
     /// area share). The references are mpmath at 40 digits of the same closed
     /// forms, the area share checked against mpmath quadrature of (z − h)φ(z)
-    /// over z > h + δ*/σ (the two agree to 15 digits): /tmp/debris_ref.py as
-    /// quoted in docs/model.md §12.
+    /// over z > h + δ*/σ (the two agree to 15 digits): `scripts/reference_debris.py`.
     const TABLE: [(f64, f64, f64, f64); 3] = [
         (1e9, 7.86885245902e-8, 0.251097679393895, 0.572657675313914),
         (2e9, 1.96721311475e-8, 0.923716547827155, 0.996659111278884),

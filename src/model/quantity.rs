@@ -91,7 +91,7 @@ pub enum Quantity {
     /// γ, the work of adhesion (J/m²), read from the scene: the measure a front
     /// trades wear against when a design moves γ.
     WorkOfAdhesion,
-    // Debris or smoothing (docs/model.md §12); each exists only with a shear strength τ_j.
+    // Debris or smoothing (docs/model.md §13); each exists only with a shear strength τ_j.
     /// d* = Λ w G / τ_j², the junction diameter above which a junction breaks off a
     /// debris particle (m).
     CriticalJunctionSize,

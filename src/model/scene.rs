@@ -90,7 +90,7 @@ pub struct Requirements {
     /// τ, the shear strength of the junctions (Pa), > 0: friction F = τ A_r (Bowden–Tabor).
     pub shear_strength: Option<f64>,
     /// Λ, the shape factor of the critical junction size d* = Λ w G / τ_j² beyond
-    /// which a junction makes debris (docs/model.md §12), > 0; None is the default
+    /// which a junction makes debris (docs/model.md §13), > 0; None is the default
     /// [`super::debris::DEFAULT_DEBRIS_SHAPE_FACTOR`] (12). Used only with `shear_strength`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub debris_shape_factor: Option<f64>,

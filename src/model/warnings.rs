@@ -105,7 +105,7 @@ pub enum Warning {
         quantity: &'static str,
     },
     /// More than half of the real area is in junctions wider than the critical
-    /// size d* (docs/model.md §12): they break off debris particles. Built by
+    /// size d* (docs/model.md §13): they break off debris particles. Built by
     /// [`super::debris::Debris::warning`] from the wear law's name.
     DebrisRegime {
         /// The wear law in use (`archard`, …).
@@ -162,7 +162,7 @@ pub enum Note {
         pull_off_error: f64,
     },
     /// The debris shares are computed with Hertz junction sizes 2√(Rδ), the
-    /// diameter of the πRδ area measure (docs/model.md §12): exact for elastic DMT
+    /// diameter of the πRδ area measure (docs/model.md §13): exact for elastic DMT
     /// contacts; JKR, Lennard-Jones and plastic junctions are wider.
     DebrisHertzSizes {
         /// The scene's asperity law.

@@ -196,7 +196,7 @@ pub struct Evaluation {
     pub friction_force: Option<f64>,
     /// friction_force / load; None without `shear_strength` or for a load ≤ 0.
     pub friction_coefficient: Option<f64>,
-    /// Debris or smoothing (docs/model.md §12): d*, the shares of the contacts and
+    /// Debris or smoothing (docs/model.md §13): d*, the shares of the contacts and
     /// of the real area that make debris, and the wear mechanism; None without
     /// `shear_strength`. Its keys sit at the top level.
     #[serde(flatten)]

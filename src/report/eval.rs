@@ -1140,7 +1140,7 @@ pub fn text(r: &EvalReport) -> String {
     if let Some(d) = &ev.debris {
         line(String::new());
         line(
-            "Debris or smoothing (Aghababaei et al. 2016, d* = Λ w G / τ²; docs/model.md §12)"
+            "Debris or smoothing (Aghababaei et al. 2016, d* = Λ w G / τ²; docs/model.md §13)"
                 .into(),
         );
         line(format!(

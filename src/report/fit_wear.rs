@@ -12,7 +12,7 @@ use crate::wear_fit::{Estimate, TemperatureSource, WearFit, WearFitNote};
 pub const FORMATS: &[super::Format] = &[super::Format::Text, super::Format::Json];
 
 /// The model's words, in the JSON's `model` and the text's first line.
-const MODEL: &str = "ln rate = ln A + sigma dV/(kB T) - dU/(kB T) (stress-assisted, atom by atom: docs/model.md §13)";
+const MODEL: &str = "ln rate = ln A + sigma dV/(kB T) - dU/(kB T) (stress-assisted, atom by atom: docs/model.md §14)";
 
 /// A note in words, options named in `vocabulary`.
 pub fn note_for(n: &WearFitNote, vocabulary: Vocabulary) -> String {

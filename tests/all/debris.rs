@@ -1,4 +1,4 @@
-//! Debris or smoothing through `wearopt eval` on a problem file (docs/model.md §12):
+//! Debris or smoothing through `wearopt eval` on a problem file (docs/model.md §13):
 //! the table on the shipped hub, the words and the bad input.
 
 use crate::common::wearopt;

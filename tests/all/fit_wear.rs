@@ -1,4 +1,4 @@
-//! `wearopt fit-wear` through the command line (docs/model.md §13): the shipped
+//! `wearopt fit-wear` through the command line (docs/model.md §14): the shipped
 //! example, the formats and the bad input. The fit's accuracy against known values
 //! (1e-10 without noise, ≥ 90 of 100 intervals with 5 % noise) is
 //! `wear_fit::tests` in the library.
