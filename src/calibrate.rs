@@ -162,6 +162,30 @@ pub enum CalibrationError {
         /// μ.
         mu: f64,
     },
+    /// A wear-rate file (`fit-wear`) whose header is not `stress_Pa,RATE[,temperature_K]`.
+    #[error("{origin}:{line}: header {found:?}: expected `stress_Pa,` then the rate column named by its unit, `rate_atoms_per_s`, `rate_m3_per_s` or `rate_m3_per_m`, then optionally `temperature_K` (one row per measurement)")]
+    WearHeader {
+        /// The file.
+        origin: String,
+        /// 1-based line (0: the file is empty).
+        line: usize,
+        /// The header as written.
+        found: String,
+    },
+    /// A wear-rate row with another number of values than its header.
+    #[error("{origin}:{line}: {found:?} has {values} values: expected {expected} (the header's columns)")]
+    WearRow {
+        /// The file.
+        origin: String,
+        /// 1-based line.
+        line: usize,
+        /// The row as written.
+        found: String,
+        /// How many values it has.
+        values: usize,
+        /// The header's columns, comma-separated.
+        expected: String,
+    },
     /// A setting (radius, μ, modulus, quoted value, material) out of range.
     #[error("{name} {value}: {expected}")]
     Setting {

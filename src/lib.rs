@@ -35,3 +35,4 @@ pub mod surface;
 pub mod sweep;
 pub mod units;
 pub mod uq;
+pub mod wear_fit;

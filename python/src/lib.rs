@@ -770,6 +770,41 @@ fn fit_adhesion_json(
     })
 }
 
+/// `wearopt fit-wear DATA [--temperature T] [--speed v] --format json`; `source` is
+/// the file's path (`is_path`) or the CSV text itself (rows given in Python).
+#[pyfunction]
+#[pyo3(signature = (source, is_path, temperature=None, speed=None))]
+fn fit_wear_json(
+    py: Python<'_>,
+    source: String,
+    is_path: bool,
+    temperature: Option<String>,
+    speed: Option<String>,
+) -> PyResult<String> {
+    detached(py, || {
+        let settings = app::fit_wear::WearFitSettings {
+            temperature: temperature
+                .as_deref()
+                .map(app::fit_wear::temperature_option)
+                .transpose()
+                .map_err(words)?,
+            speed: speed
+                .as_deref()
+                .map(app::fit_wear::speed_option)
+                .transpose()
+                .map_err(words)?,
+        };
+        let fit = if is_path {
+            app::fit_wear::fit_wear(std::path::Path::new(&source), &settings)
+        } else {
+            app::fit_wear::fit_wear_text(&source, "<rows>", &settings)
+        }
+        .map_err(words)?;
+        report::fit_wear::render_for(&fit, report::Format::Json, app::Vocabulary::Keywords)
+            .map_err(|e| e.to_string())
+    })
+}
+
 /// `wearopt figures [--out DIR] --format json`: the summary, and the files written
 /// into `out` when it is given.
 #[pyfunction]
@@ -851,6 +886,7 @@ fn _wearopt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(contact_json, m)?)?;
     m.add_function(wrap_pyfunction!(contact_array, m)?)?;
     m.add_function(wrap_pyfunction!(fit_adhesion_json, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_wear_json, m)?)?;
     m.add_function(wrap_pyfunction!(figures_json, m)?)?;
     m.add_function(wrap_pyfunction!(accuracy_json, m)?)?;
     Ok(())

@@ -788,3 +788,55 @@ def test_stress_assisted_wear_from_a_dict_as_from_the_file():
     for key in ("wear_rate", "effective_wear_coefficient", "mean_contact_stress",
                 "saturated_fraction", "apparent_activation_energy"):
         assert from_dict[key] == from_file[key], key
+
+
+def test_fit_wear_equals_the_cli_and_takes_rows():
+    path = "problems/wear-rates.csv"
+    expected = json.loads(cli("fit-wear", path, "--format", "json").stdout)
+    assert wearopt.fit_wear(path) == expected
+    # The same data as columns (a dict, as a DataFrame would give them): the same
+    # numbers, from "<rows>" (line numbers count from the header there).
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    columns = {k: [float(r[k]) for r in rows] for k in rows[0]}
+    got = wearopt.fit_wear(columns)
+    for k in ("activation_volume", "activation_energy", "activation_energy_ev", "ln_prefactor"):
+        for q in ("estimate", "standard_error", "lower", "upper"):
+            assert got[k][q] == pytest.approx(expected[k][q], rel=1e-12), (k, q)
+    assert got["origin"] == "<rows>"
+    # One temperature from a keyword argument, rates per metre with a speed.
+    one = {"stress_Pa": [1e9, 2e9, 3e9], "rate_m3_per_m": [1e-20, 2e-20, 4e-20]}
+    f = wearopt.fit_wear(one, temperature="300 K", speed="1 mm/s")
+    assert f["activation_energy"] is None and f["speed"] == 1e-3
+    assert any("cannot be identified" in n for n in f["notes"])
+
+
+def test_fit_wear_words_errors_as_keywords():
+    with pytest.raises(ValueError, match="^speed="):
+        wearopt.fit_wear({"stress_Pa": [1e9, 2e9, 3e9], "rate_m3_per_m": [1, 2, 3]})
+    with pytest.raises(ValueError, match="at least 3 points"):
+        wearopt.fit_wear({"stress_Pa": [1e9, 2e9], "rate_m3_per_s": [1, 2]})
+    with pytest.raises(ValueError, match="one stress value only"):
+        wearopt.fit_wear({"stress_Pa": [1e9] * 3, "rate_m3_per_s": [1, 2, 3]})
+    with pytest.raises(ValueError, match="rate_m3_per_s"):
+        wearopt.fit_wear({"stress_Pa": [1e9, 2e9, 3e9], "rate_m3_per_s": [1, 0, 3]})
+    with pytest.raises(ValueError, match="^temperature="):
+        wearopt.fit_wear("problems/wear-rates.csv", temperature=300)
+
+
+def test_evaluate_reports_the_debris_regime_as_the_cli(tmp_path):
+    text = (ROOT / "problems" / "micro-gear.toml").read_text()
+    text = text.replace("[interface]\n", '[interface]\nshear_strength = "1 GPa"\n', 1)
+    path = tmp_path / "hub-debris.toml"
+    path.write_text(text)
+    expected = json.loads(cli("eval", str(path), "--format", "json").stdout)
+    got = wearopt.evaluate(str(path))
+    for k in ("critical_junction_size", "debris_contact_fraction", "debris_area_fraction",
+              "wear_mechanism", "debris_shape_factor"):
+        assert got[k] == expected[k], k
+    # The numbers for the hub at τ = 1 GPa.
+    assert got["critical_junction_size"] == pytest.approx(78.7e-9, rel=1e-3)
+    assert got["debris_contact_fraction"] == pytest.approx(0.251, abs=5e-4)
+    assert got["debris_area_fraction"] == pytest.approx(0.573, abs=5e-4)
+    assert got["wear_mechanism"] == "debris"
+    assert any("archard" in w for w in got["warnings"])

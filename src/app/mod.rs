@@ -22,6 +22,7 @@ pub mod curve;
 pub mod eval;
 pub mod figures;
 pub mod fit_adhesion;
+pub mod fit_wear;
 pub mod humidity;
 pub mod optimize;
 pub mod pareto;

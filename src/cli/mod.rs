@@ -6,6 +6,7 @@ mod accuracy;
 mod contact;
 mod figures;
 mod fit_adhesion;
+mod fit_wear;
 mod format;
 mod pareto;
 mod progress;
@@ -72,6 +73,13 @@ Example:\n  wearopt figures\n  wearopt figures --out figs --points 101 --format 
 wearopt fit-adhesion data.csv --radius \"1 mm\" --fit-mu --format json"
     )]
     FitAdhesion(fit_adhesion::FitAdhesionArgs),
+    /// Fit the activation energy ΔU and volume ΔV of stress-assisted wear to measured wear rates (ln rate = ln A + σΔV/k_BT − ΔU/k_BT), with standard errors and 95 % intervals; says when ΔU cannot be identified (one temperature) and when the points look saturated.
+    #[command(
+        after_help = "Header: stress_Pa, then rate_atoms_per_s | rate_m3_per_s | rate_m3_per_m, then optionally temperature_K.\n\
+Example:\n  wearopt fit-wear problems/wear-rates.csv\n  \
+wearopt fit-wear rates.csv --temperature \"350 K\" --speed \"1 mm/s\" --format json"
+    )]
+    FitWear(fit_wear::FitWearArgs),
     /// The scene across relative humidity (capillary adhesion): separation, capillary load, pull-off force, apparent work of adhesion Γ, wet fraction and wear rate, and the threshold humidity where Γ reaches ten times its dry value.
     #[command(
         after_help = "Columns: relative_humidity, separation, capillary_load, pull_off_force, apparent_work_of_adhesion, wetted_fraction, wear_rate, status.\n\
@@ -293,6 +301,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Command::Roughness(args) => roughness::run(args),
         Command::Contact(args) => contact::run(args),
         Command::FitAdhesion(args) => fit_adhesion::run(args),
+        Command::FitWear(args) => fit_wear::run(args),
         Command::Curve(args) => curve(args),
         Command::Humidity(args) => humidity(args),
         Command::Asperity(args) => asperity(args),

@@ -15,6 +15,7 @@ pub mod asperity_curve;
 pub mod asperity_law;
 pub mod capillary;
 pub mod coefficients;
+pub mod debris;
 pub(crate) mod dmt;
 pub mod environment;
 pub mod gauss;

@@ -104,6 +104,15 @@ pub enum Quantity {
     /// −d ln(wear rate)/d(1/k_BT) at fixed contact (J; docs/model.md §12); exists
     /// only under the stress-assisted law, with wear.
     ApparentActivationEnergy,
+    // Debris or smoothing (docs/model.md §13); each exists only with a shear strength τ_j.
+    /// d* = Λ w G / τ_j², the junction diameter above which a junction breaks off a
+    /// debris particle (m).
+    CriticalJunctionSize,
+    /// The share of the contacts whose junction (Hertz diameter 2√(Rδ)) is wider
+    /// than d*; exists only in contact.
+    DebrisContactFraction,
+    /// The share of the real area in junctions wider than d*; exists only in contact.
+    DebrisAreaFraction,
 }
 
 /// What a quantity may be used as.
@@ -196,7 +205,7 @@ fn ln_friction(per_load: bool, ev: &Evaluation, scene: &Scene) -> f64 {
 
 impl Quantity {
     /// Every quantity, in table order.
-    pub const ALL: [Quantity; 29] = [
+    pub const ALL: [Quantity; 32] = [
         Quantity::WearRate,
         Quantity::WearVolume,
         Quantity::RealArea,
@@ -226,6 +235,9 @@ impl Quantity {
         Quantity::MeanContactStress,
         Quantity::SaturatedFraction,
         Quantity::ApparentActivationEnergy,
+        Quantity::CriticalJunctionSize,
+        Quantity::DebrisContactFraction,
+        Quantity::DebrisAreaFraction,
     ];
 
     /// The table. Roles: the objectives are the wear, the area, the pull-off and
@@ -385,6 +397,27 @@ impl Quantity {
                 ANY,
                 QUANTITY_OF_INTEREST,
             ),
+            Quantity::CriticalJunctionSize => row(
+                "critical_junction_size",
+                "d*",
+                Length,
+                POSITIVE,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::DebrisContactFraction => row(
+                "debris_contact_fraction",
+                "n_debris/n",
+                Dimensionless,
+                FRACTION,
+                QUANTITY_OF_INTEREST,
+            ),
+            Quantity::DebrisAreaFraction => row(
+                "debris_area_fraction",
+                "A_debris/A_r",
+                Dimensionless,
+                FRACTION,
+                QUANTITY_OF_INTEREST,
+            ),
         }
     }
 
@@ -466,6 +499,9 @@ impl Quantity {
             Quantity::MeanContactStress => ev.wear_details?.mean_contact_stress?,
             Quantity::SaturatedFraction => ev.wear_details?.saturated_fraction?,
             Quantity::ApparentActivationEnergy => ev.wear_details?.apparent_activation_energy?,
+            Quantity::CriticalJunctionSize => ev.debris?.critical_junction_size,
+            Quantity::DebrisContactFraction => ev.debris?.debris_contact_fraction?,
+            Quantity::DebrisAreaFraction => ev.debris?.debris_area_fraction?,
         })
     }
 
@@ -686,6 +722,11 @@ mod tests {
                 Quantity::ApparentActivationEnergy => {
                     ev.wear_details.and_then(|w| w.apparent_activation_energy)
                 }
+                Quantity::CriticalJunctionSize => ev.debris.map(|d| d.critical_junction_size),
+                Quantity::DebrisContactFraction => {
+                    ev.debris.and_then(|d| d.debris_contact_fraction)
+                }
+                Quantity::DebrisAreaFraction => ev.debris.and_then(|d| d.debris_area_fraction),
             }
         };
         for q in Quantity::ALL {

@@ -103,6 +103,11 @@ pub struct Requirements {
     pub restoring_force: Option<f64>,
     /// τ, the shear strength of the junctions (Pa), > 0: friction F = τ A_r (Bowden–Tabor).
     pub shear_strength: Option<f64>,
+    /// Λ, the shape factor of the critical junction size d* = Λ w G / τ_j² beyond
+    /// which a junction makes debris (docs/model.md §13), > 0; None is the default
+    /// [`super::debris::DEFAULT_DEBRIS_SHAPE_FACTOR`] (12). Used only with `shear_strength`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub debris_shape_factor: Option<f64>,
     /// A cantilever beam held down by the interface: turns the apparent work of
     /// adhesion into the longest beam that comes free (de Boer & Michalske 1999).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -282,6 +287,7 @@ impl Scene {
             ("requirements.sliding_per_cycle", r.sliding_per_cycle),
             ("requirements.restoring_force", r.restoring_force),
             ("requirements.shear_strength", r.shear_strength),
+            ("requirements.debris_shape_factor", r.debris_shape_factor),
         ] {
             if let Some(x) = value {
                 check(field, x, positive(x), POSITIVE)?;

@@ -104,6 +104,19 @@ pub enum Warning {
         /// The result's JSON key.
         quantity: &'static str,
     },
+    /// More than half of the real area is in junctions wider than the critical
+    /// size d* (docs/model.md §13): they break off debris particles. Built by
+    /// [`super::debris::Debris::warning`] from the wear law's name.
+    DebrisRegime {
+        /// The wear law in use (`archard`, …).
+        wear_law: &'static str,
+        /// Whether that law removes material atom by atom (assumes smoothing).
+        assumes_smoothing: bool,
+        /// The share of the real area in junctions wider than d*.
+        debris_area_fraction: f64,
+        /// d* (m).
+        critical_junction_size: f64,
+    },
 }
 
 /// Information beside the numbers; the report words it.
@@ -147,6 +160,13 @@ pub enum Note {
         /// The relative error of its pull-off at the curves' end: below, one
         /// asperity's; above, the rough surface's (where adhesion is strong).
         pull_off_error: f64,
+    },
+    /// The debris shares are computed with Hertz junction sizes 2√(Rδ), the
+    /// diameter of the πRδ area measure (docs/model.md §13): exact for elastic DMT
+    /// contacts; JKR, Lennard-Jones and plastic junctions are wider.
+    DebrisHertzSizes {
+        /// The scene's asperity law.
+        adhesion_model: super::law::AdhesionModel,
     },
     /// Under the Lennard-Jones law, φ0 lies above the solved table (22.4):
     /// the law's curves there are the closed-form limit curves (JKR's contact

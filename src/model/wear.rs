@@ -198,6 +198,11 @@ pub struct Evaluation {
     pub friction_force: Option<f64>,
     /// friction_force / load; None without `shear_strength` or for a load ≤ 0.
     pub friction_coefficient: Option<f64>,
+    /// Debris or smoothing (docs/model.md §13): d*, the shares of the contacts and
+    /// of the real area that make debris, and the wear mechanism; None without
+    /// `shear_strength`. Its keys sit at the top level.
+    #[serde(flatten)]
+    pub debris: Option<super::debris::Debris>,
     /// The asperity law the numbers come from.
     pub adhesion_model: AdhesionModel,
     /// Under DMT, how non-contacting asperities are attracted (absent under JKR).
@@ -695,6 +700,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         stiction: None,
         friction_force: None,
         friction_coefficient: None,
+        debris: None,
         adhesion_model: scene.adhesion_model,
         attraction: scene
             .adhesion_model
@@ -784,6 +790,13 @@ fn with_designer_numbers(mut ev: Evaluation, scene: &Scene) -> Evaluation {
         let f = tau * ev.real_area;
         ev.friction_force = Some(f);
         ev.friction_coefficient = (scene.load > 0.0).then(|| f / scene.load);
+    }
+    ev.debris = super::debris::debris_of(scene, ev.nondimensional_separation);
+    if let Some(d) = &ev.debris {
+        ev.notes.push(Note::DebrisHertzSizes {
+            adhesion_model: scene.adhesion_model,
+        });
+        ev.warnings.extend(d.warning(scene.wear_law.as_str()));
     }
     ev
 }

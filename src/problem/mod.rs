@@ -929,6 +929,12 @@ impl Problem {
             &i.shear_strength,
             Accept::positive(Dimension::Pressure).why("the junctions' shear strength τ"),
         )?;
+        let debris_shape_factor = r.optional_quantity(
+            "interface.debris_shape_factor",
+            &i.debris_shape_factor,
+            Accept::positive(Dimension::Dimensionless)
+                .why("Λ of the critical junction size d* = Λ w G / τ², default 12"),
+        )?;
         let environment = r.environment(&raw, i)?;
         let cantilever = r.cantilever(&raw)?;
         let temperature = r.temperature(&raw, c, environment.as_ref())?;
@@ -960,6 +966,7 @@ impl Problem {
                 sliding_per_cycle,
                 restoring_force,
                 shear_strength,
+                debris_shape_factor,
                 cantilever,
             },
             adhesion_model,

@@ -210,6 +210,7 @@ pub struct RawInterface {
     pub adhesion_model: Option<Spanned<String>>,
     pub attraction: Option<Spanned<String>>,
     pub shear_strength: Option<Spanned<RawQuantity>>,
+    pub debris_shape_factor: Option<Spanned<RawQuantity>>,
     pub contact_angle: Option<Spanned<RawQuantity>>,
     pub contact_angle_a: Option<Spanned<RawQuantity>>,
     pub contact_angle_b: Option<Spanned<RawQuantity>>,

@@ -737,6 +737,27 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
     if let Some(mu) = ev.friction_coefficient {
         rows.push(vec!["friction coefficient F/W".into(), sig_exp(mu, 3)]);
     }
+    if let Some(d) = &ev.debris {
+        rows.push(vec![
+            "critical junction size d* = Λ w G / τ²".into(),
+            q(d.critical_junction_size, "m"),
+        ]);
+        if let (Some(c), Some(a), Some(m)) = (
+            d.debris_contact_fraction,
+            d.debris_area_fraction,
+            d.wear_mechanism,
+        ) {
+            rows.push(vec![
+                "junctions wider than d* (debris)".into(),
+                format!(
+                    "{} of the contacts, {} of the real area → {}",
+                    sig_exp(c, 3),
+                    sig_exp(a, 3),
+                    m.as_str()
+                ),
+            ]);
+        }
+    }
     p.table(&["result", "value"], &rows, &[]);
     if let Some(hum) = &ev.humidity {
         p.heading("Humid air (capillary adhesion)");
@@ -1207,6 +1228,31 @@ pub fn text(r: &EvalReport) -> String {
                 sig_exp(mu, 3)
             ))
         ));
+    }
+    if let Some(d) = &ev.debris {
+        line(String::new());
+        line(
+            "Debris or smoothing (Aghababaei et al. 2016, d* = Λ w G / τ²; docs/model.md §13)"
+                .into(),
+        );
+        line(format!(
+            "  critical junction size d* = {} (Λ = {}, G = {} of body a)",
+            si(d.critical_junction_size, "m", 4),
+            crate::units::format_number(d.debris_shape_factor),
+            si(d.shear_modulus, "Pa", 4)
+        ));
+        if let (Some(c), Some(a), Some(m)) = (
+            d.debris_contact_fraction,
+            d.debris_area_fraction,
+            d.wear_mechanism,
+        ) {
+            line(format!(
+                "  contacts wider than d*: {} of the contacts, {} of the real area → wear mechanism: {}",
+                sig_exp(c, 3),
+                sig_exp(a, 3),
+                m.as_str()
+            ));
+        }
     }
     if !r.sensitivities.is_empty() {
         line(String::new());

@@ -17,6 +17,7 @@ pub mod contact;
 pub mod curve;
 pub mod eval;
 pub mod figures;
+pub mod fit_wear;
 pub mod format;
 pub(crate) mod html;
 pub mod humidity;

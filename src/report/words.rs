@@ -146,6 +146,23 @@ pub fn warning(w: &Warning) -> String {
         Warning::NonFiniteResult { quantity } => format!(
             "{quantity} came out non-finite: the scene is beyond what the evaluator can represent (status out_of_range)"
         ),
+        Warning::DebrisRegime {
+            wear_law,
+            assumes_smoothing,
+            debris_area_fraction,
+            critical_junction_size,
+        } => {
+            let share = format!(
+                "{} % of the real area is in junctions wider than the critical size d* = {}, which break off debris particles (wear_mechanism = debris)",
+                super::sig(100.0 * debris_area_fraction, 3),
+                format_quantity(*critical_junction_size, Dimension::Length)
+            );
+            if *assumes_smoothing {
+                format!("{share}: the {wear_law} wear law assumes atom-by-atom smoothing, so its wear rate does not hold here")
+            } else {
+                format!("{share}: Archard's wear coefficient k ({wear_law} law) must then be one measured where junctions make debris")
+            }
+        }
     }
 }
 
@@ -207,6 +224,14 @@ pub fn note(n: &Note) -> String {
                 sig_exp(*tabor_parameter, 3),
             )
         }
+        Note::DebrisHertzSizes { adhesion_model } => format!(
+            "the debris shares take each junction's diameter as 2√(Rδ), that of the πRδ real area{}; wider junctions make more debris, so the shares are lower bounds where they are",
+            if *adhesion_model == crate::model::AdhesionModel::Dmt {
+                ": exact for elastic DMT contacts, plastic junctions are wider"
+            } else {
+                " (the Hertz size): the law's own contacts and plastic junctions are wider"
+            }
+        ),
         Note::LennardJonesLimitCurves {
             tabor_parameter,
             pull_off_error,

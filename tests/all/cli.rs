@@ -329,6 +329,11 @@ fn every_command_names_the_formats_it_writes() {
             "text, json",
         ),
         (
+            &["fit-wear", "problems/wear-rates.csv"],
+            "csv",
+            "text, json",
+        ),
+        (
             &[
                 "curve", "--theta", "10", "--lambda", "1", "--from", "0", "--to", "1", "--points",
                 "2",

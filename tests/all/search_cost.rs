@@ -373,6 +373,7 @@ fn a_root_near_the_zero_of_the_load_is_found_to_rounding() {
             sliding_per_cycle: None,
             restoring_force: None,
             shear_strength: None,
+            debris_shape_factor: None,
             cantilever: None,
         },
         adhesion_model: AdhesionModel::Dmt,

@@ -50,6 +50,7 @@ __all__ = [
     "sweep",
     "merge",
     "fit_adhesion",
+    "fit_wear",
     "figures",
     "accuracy",
 ]
@@ -584,6 +585,42 @@ def fit_adhesion(
             _quantity("quoted_bond_strength", quoted_bond_strength),
         )
     )
+
+
+def fit_wear(
+    path_or_rows: Any,
+    temperature: Any = None,
+    speed: Any = None,
+) -> Dict[str, Any]:
+    """The activation energy ΔU and volume ΔV of stress-assisted wear from
+    measured wear rates: the JSON of ``wearopt fit-wear DATA [--temperature T]
+    [--speed v] --format json``. ``path_or_rows`` is a CSV file (header
+    ``stress_Pa``, then ``rate_atoms_per_s``, ``rate_m3_per_s`` or
+    ``rate_m3_per_m``, then optionally ``temperature_K``) or its columns as a
+    mapping of those names to sequences (a dict, a pandas DataFrame).
+    ``temperature`` ("350 K" or kelvin) applies to every row of a file without
+    ``temperature_K``; ``speed`` ("1 mm/s" or m/s) turns m³/m into m³/s.
+
+    >>> f = wearopt.fit_wear("problems/wear-rates.csv")
+    >>> round(f["activation_energy_ev"]["estimate"], 1)
+    0.9
+    """
+    temperature = _quantity("temperature", temperature, "kelvin")
+    speed = _quantity("speed", speed, "m/s")
+    if isinstance(path_or_rows, (str, os.PathLike)):
+        return json.loads(_wearopt.fit_wear_json(os.fspath(path_or_rows), True, temperature, speed))
+    if not hasattr(path_or_rows, "keys"):
+        raise TypeError(
+            "path_or_rows must be a path or a mapping of column names (stress_Pa, "
+            f"rate_…, temperature_K) to sequences, not {type(path_or_rows).__name__}"
+        )
+    names = [str(k) for k in path_or_rows.keys()]
+    columns = [[repr(float(x)) for x in path_or_rows[k]] for k in path_or_rows.keys()]
+    if len({len(c) for c in columns}) > 1:
+        raise ValueError("<rows>: the columns have different lengths: " + ", ".join(
+            f"{n} {len(c)}" for n, c in zip(names, columns)))
+    text = ",".join(names) + "\n" + "".join(",".join(row) + "\n" for row in zip(*columns))
+    return json.loads(_wearopt.fit_wear_json(text, False, temperature, speed))
 
 
 def figures(

@@ -1,7 +1,7 @@
 """Type stubs of the `wearopt` package (see the docstrings in __init__.py)."""
 
 import os
-from typing import Any, Dict, Iterable, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -141,6 +141,13 @@ def fit_adhesion(
     quoted_bond_strength: Union[str, float, None] = None,
 ) -> Dict[str, Any]:
     """The JSON of `wearopt fit-adhesion DATA --radius R … --format json` as a dict."""
+
+def fit_wear(
+    path_or_rows: Union[str, os.PathLike[str], Mapping[str, Sequence[float]]],
+    temperature: Union[str, float, None] = None,
+    speed: Union[str, float, None] = None,
+) -> Dict[str, Any]:
+    """The JSON of `wearopt fit-wear DATA [--temperature T] [--speed v] --format json` as a dict."""
 
 def figures(
     out: Union[str, os.PathLike[str], None] = None,

@@ -1,0 +1,250 @@
+//! Debris or smoothing: which contacts break off a particle and which wear atom
+//! by atom (Aghababaei, Warner & Molinari, Nat. Commun. 7 (2016) 11816;
+//! docs/model.md §13).
+//!
+//! A junction wider than the critical size d* = Λ w G / τ_j² (w the work of
+//! adhesion, G the shear modulus of the softer body, τ_j the junction's shear
+//! strength, Λ a shape factor) breaks off a debris particle; a smaller one is
+//! smoothed away atom by atom. A summit's junction diameter is taken as its
+//! Hertz contact diameter 2√(Rδ) under every asperity law — the diameter of the
+//! πRδ area the model counts as real area (§3, §8 of docs/model.md), exact
+//! under DMT and an underestimate under JKR and Lennard-Jones, whose contacts
+//! are wider — so the cut is the interference δ* = d*²/(4R), and with Gaussian
+//! summit heights the share of the contacts and of the real area beyond it are
+//! closed forms in erfc.
+
+use serde::Serialize;
+
+use super::scene::Scene;
+use super::special::{kappa, tail0, tail1_given};
+use super::warnings::Warning;
+
+/// Λ when the problem file gives none: the shape factor of Aghababaei et al. (2016).
+pub const DEFAULT_DEBRIS_SHAPE_FACTOR: f64 = 12.0;
+
+/// Below this share of the real area in junctions wider than d*, wear is `smoothing`.
+pub const SMOOTHING_BELOW: f64 = 0.01;
+
+/// Above this share of the real area in junctions wider than d*, wear is `debris`.
+pub const DEBRIS_ABOVE: f64 = 0.5;
+
+/// How the contact wears, from the share of its real area in junctions wider than d*.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WearMechanism {
+    /// Less than 1 % of the real area makes debris: atom-by-atom smoothing.
+    Smoothing,
+    /// Between 1 % and 50 %.
+    Mixed,
+    /// More than 50 % of the real area makes debris.
+    Debris,
+}
+
+impl WearMechanism {
+    /// The word reports and JSON use.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            WearMechanism::Smoothing => "smoothing",
+            WearMechanism::Mixed => "mixed",
+            WearMechanism::Debris => "debris",
+        }
+    }
+
+    /// The mechanism of a contact whose real area is `debris_area_fraction` debris
+    /// (a share in [0, 1]): `smoothing` below [`SMOOTHING_BELOW`], `debris` above
+    /// [`DEBRIS_ABOVE`], `mixed` between (a boundary value is `mixed`).
+    pub fn of(debris_area_fraction: f64) -> WearMechanism {
+        if debris_area_fraction < SMOOTHING_BELOW {
+            WearMechanism::Smoothing
+        } else if debris_area_fraction > DEBRIS_ABOVE {
+            WearMechanism::Debris
+        } else {
+            WearMechanism::Mixed
+        }
+    }
+}
+
+/// Whether the wear law named `wear_law` removes material atom by atom (so that it
+/// assumes smoothing and is wrong where most of the area makes debris). Archard's
+/// law takes its coefficient from measurement and assumes neither; an atom-by-atom
+/// law (`stress_assisted`, docs/model.md §12) does.
+pub fn assumes_smoothing(wear_law: &str) -> bool {
+    matches!(wear_law, "stress_assisted")
+}
+
+/// The debris numbers of one evaluation (SI), present when the scene gives the
+/// junction shear strength τ_j.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Debris {
+    /// d* = Λ w G / τ_j², the junction diameter above which a junction breaks off a
+    /// debris particle (m); 0 without adhesion (w = 0).
+    pub critical_junction_size: f64,
+    /// The share of the contacts whose junction is wider than d*; None when separated.
+    pub debris_contact_fraction: Option<f64>,
+    /// The share of the real area (the πRδ measure) in junctions wider than d*;
+    /// None when separated.
+    pub debris_area_fraction: Option<f64>,
+    /// `smoothing`, `mixed` or `debris` from the area share; None when separated.
+    pub wear_mechanism: Option<WearMechanism>,
+    /// G = E1 / (2(1 + ν1)), the shear modulus of the softer body a (Pa).
+    pub shear_modulus: f64,
+    /// Λ, the shape factor used.
+    pub debris_shape_factor: f64,
+}
+
+impl Debris {
+    /// The warning where most of the real area makes debris (`wear_mechanism` is
+    /// `debris`), naming `wear_law`, the wear law in use, and whether it assumes
+    /// smoothing ([`assumes_smoothing`]); None otherwise.
+    pub fn warning(&self, wear_law: &'static str) -> Option<Warning> {
+        (self.wear_mechanism == Some(WearMechanism::Debris)).then(|| Warning::DebrisRegime {
+            wear_law,
+            assumes_smoothing: assumes_smoothing(wear_law),
+            debris_area_fraction: self.debris_area_fraction.unwrap_or(1.0),
+            critical_junction_size: self.critical_junction_size,
+        })
+    }
+}
+
+/// G = E / (2(1 + ν)) (Pa) of a body of Young's modulus E (Pa) and Poisson ratio ν.
+pub fn shear_modulus(youngs_modulus: f64, poisson_ratio: f64) -> f64 {
+    youngs_modulus / (2.0 * (1.0 + poisson_ratio))
+}
+
+/// d* = Λ w G / τ_j² (m): Λ the shape factor (> 0), w the work of adhesion (J/m²),
+/// G the shear modulus (Pa), τ_j the junction shear strength (Pa, > 0).
+pub fn critical_junction_size(
+    shape_factor: f64,
+    work_of_adhesion: f64,
+    shear_modulus: f64,
+    shear_strength: f64,
+) -> f64 {
+    shape_factor * work_of_adhesion * shear_modulus / (shear_strength * shear_strength)
+}
+
+/// The shares (of the contacts, of the πRδ real area) of summits whose
+/// interference exceeds `cut` (in units of σ, ≥ 0) at the non-dimensional
+/// separation `h`, with Gaussian summit heights (docs/model.md §3):
+///
+/// - contacts: Q(h + cut) / Q(h) = T_0(a) / T_0(h),
+/// - area: [φ(a) − h Q(a)] / [φ(h) − h Q(h)] = [T_1(a) + cut T_0(a)] / T_1(h),
+///
+/// with a = h + cut, Q the upper tail of the standard normal, φ its density and
+/// T_n the tail moments of `special`. Both are ratios of the scaled moments times
+/// e^{κ(h) − κ(a)}, so nothing underflows before the share itself does (a share
+/// below 1e-308 is 0) and the far tail keeps its relative accuracy.
+pub fn debris_fractions(h: f64, cut: f64) -> (f64, f64) {
+    let a = h + cut;
+    let (t0_h, t0_a) = (tail0(h), tail0(a));
+    let scale = (kappa(h) - kappa(a)).exp();
+    let contacts = t0_a / t0_h * scale;
+    let area = (tail1_given(a, t0_a) + cut * t0_a) / tail1_given(h, t0_h) * scale;
+    (contacts.clamp(0.0, 1.0), area.clamp(0.0, 1.0))
+}
+
+/// The debris numbers of `scene` at the non-dimensional separation `h` (None when
+/// separated); None without `requirements.shear_strength`. Λ is
+/// `requirements.debris_shape_factor` or [`DEFAULT_DEBRIS_SHAPE_FACTOR`].
+pub fn debris_of(scene: &Scene, h: Option<f64>) -> Option<Debris> {
+    let tau = scene.requirements.shear_strength?;
+    let shape = scene
+        .requirements
+        .debris_shape_factor
+        .unwrap_or(DEFAULT_DEBRIS_SHAPE_FACTOR);
+    let g = shear_modulus(scene.youngs_modulus_a, scene.poisson_ratio_a);
+    let d = critical_junction_size(shape, scene.work_of_adhesion, g, tau);
+    let cut = d * d / (4.0 * scene.asperity_radius) / scene.sigma;
+    let fractions = h.map(|h| debris_fractions(h, cut));
+    Some(Debris {
+        critical_junction_size: d,
+        debris_contact_fraction: fractions.map(|f| f.0),
+        debris_area_fraction: fractions.map(|f| f.1),
+        wear_mechanism: fractions.map(|f| WearMechanism::of(f.1)),
+        shear_modulus: g,
+        debris_shape_factor: shape,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// h of the shipped hub (`problems/micro-gear.toml`, Lennard-Jones law, 800 µN).
+    const HUB_H: f64 = 2.082_115_779_067_568;
+
+    /// The table for the hub (σ = 3 nm, R = 1 µm, polysilicon E = 160 GPa,
+    /// ν = 0.22 so G = 65.57 GPa, w = 0.1 J/m², Λ = 12): (τ_j, d*, contact share,
+    /// area share). The references are mpmath at 40 digits of the same closed
+    /// forms, the area share checked against mpmath quadrature of (z − h)φ(z)
+    /// over z > h + δ*/σ (the two agree to 15 digits): `scripts/reference_debris.py`.
+    const TABLE: [(f64, f64, f64, f64); 3] = [
+        (1e9, 7.86885245902e-8, 0.251097679393895, 0.572657675313914),
+        (2e9, 1.96721311475e-8, 0.923716547827155, 0.996659111278884),
+        (
+            0.5e9,
+            3.14754098361e-7,
+            1.27110200451798e-23,
+            2.9159233626524e-22,
+        ),
+    ];
+
+    #[test]
+    fn the_hub_table() {
+        let g = shear_modulus(160e9, 0.22);
+        assert!((g - 65.5737704918e9).abs() < 1e2, "{g}");
+        for (tau, d_ref, count_ref, area_ref) in TABLE {
+            let d = critical_junction_size(12.0, 0.1, g, tau);
+            assert!((d / d_ref - 1.0).abs() < 1e-11, "τ {tau}: d* {d}");
+            let cut = d * d / (4.0 * 1e-6) / 3e-9;
+            let (count, area) = debris_fractions(HUB_H, cut);
+            // erfcx is good to a few ulps; the far tail's ratio to 1e-12.
+            assert!((count / count_ref - 1.0).abs() < 1e-12, "τ {tau}: {count}");
+            assert!((area / area_ref - 1.0).abs() < 1e-12, "τ {tau}: {area}");
+        }
+        // The rounded number.
+        let d = critical_junction_size(12.0, 0.1, g, 1e9);
+        assert_eq!(format!("{:.1}", d * 1e9), "78.7");
+    }
+
+    /// No cut: every contact and all the area; a cut beyond every double: none.
+    #[test]
+    fn limits_of_the_cut() {
+        for h in [-30.0, -2.0, 0.0, 2.0, 15.0, 40.0] {
+            let (c, a) = debris_fractions(h, 0.0);
+            assert!(
+                (c - 1.0).abs() < 1e-13 && (a - 1.0).abs() < 1e-12,
+                "h {h}: {c} {a}"
+            );
+            assert_eq!(debris_fractions(h, 1e3), (0.0, 0.0), "h {h}");
+        }
+    }
+
+    /// Far out (h = 40, where Q(h) itself is 3.6e-350 and underflows) the
+    /// shares stay finite and follow the Gaussian tail: with T_0(u) ≈ e^{−u²/2}/u
+    /// and T_1(u) ≈ e^{−u²/2}/u² (each to a relative 1/u²), the contact share is
+    /// (h/a) e^{−(a² − h²)/2} and the area share (1/a² + cut/a) h² e^{−(a² − h²)/2},
+    /// to the size of the next term (a few 1/h² ≈ 6e-4).
+    #[test]
+    fn far_tail_does_not_underflow() {
+        let (h, cut) = (40.0, 0.05);
+        let a: f64 = h + cut;
+        let e = (-(a * a - h * h) / 2.0).exp();
+        let (c, ar) = debris_fractions(h, cut);
+        let c_asym = h / a * e;
+        assert!((c / c_asym - 1.0).abs() < 2.0 / (h * h), "{c} {c_asym}");
+        // T_1(u) ≈ φ-scaled 1/u², T_0(u) ≈ 1/u: area ≈ (1/a² + cut/a) h² e.
+        let a_asym = (1.0 / (a * a) + cut / a) * h * h * e;
+        assert!((ar / a_asym - 1.0).abs() < 3.0 / (h * h), "{ar} {a_asym}");
+        assert!(c > 0.0 && c < 1.0 && ar > c);
+    }
+
+    #[test]
+    fn mechanism_thresholds() {
+        assert_eq!(WearMechanism::of(0.0099), WearMechanism::Smoothing);
+        assert_eq!(WearMechanism::of(0.01), WearMechanism::Mixed);
+        assert_eq!(WearMechanism::of(0.5), WearMechanism::Mixed);
+        assert_eq!(WearMechanism::of(0.5001), WearMechanism::Debris);
+        assert!(assumes_smoothing("stress_assisted"));
+        assert!(!assumes_smoothing("archard"));
+    }
+}
