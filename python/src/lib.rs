@@ -385,6 +385,7 @@ fn sweep_text(
         } else {
             source.clone().into_bytes()
         };
+        let bytes = app::sweep::fingerprint_content(&problem, &bytes);
         let mut text = report::sweep::head(
             format,
             &report::sweep::Head {
