@@ -544,3 +544,62 @@ fn merge_says_what_is_wrong() {
         "{e}"
     );
 }
+
+// ------------------------------------------------------------ unclear
+
+/// The humid hub with `from` in its text replaced by `to`, in `dir`.
+fn humid_hub_with(dir: &Path, name: &str, from: &str, to: &str) -> PathBuf {
+    let text = std::fs::read_to_string(root("problems/micro-gear-humid.toml")).unwrap();
+    let edited = text.replace(from, to);
+    assert_ne!(edited, text, "{from:?} is in the file");
+    let path = dir.join(name);
+    std::fs::write(&path, edited).unwrap();
+    path
+}
+
+/// The README's own `molar_volume = "18.07 cm^3/mol"` was refused: it reads as
+/// the same liquid as 1.807e-5 m^3/mol (the same quantity in SI), to the byte.
+#[test]
+fn a_molar_volume_in_cm3_per_mol_is_read() {
+    let dir = scratch("molar-volume");
+    let liquid =
+        |v: &str| format!("liquid = {{ surface_tension = \"72 mN/m\", molar_volume = \"{v}\" }}");
+    let cm3 = humid_hub_with(
+        &dir,
+        "cm3.toml",
+        "liquid = \"water\"",
+        &liquid("18.07 cm^3/mol"),
+    );
+    let si = humid_hub_with(
+        &dir,
+        "si.toml",
+        "liquid = \"water\"",
+        &liquid("1.807e-5 m^3/mol"),
+    );
+    let json = |p: &Path| {
+        let out = common::stdout(wearopt().arg("eval").arg(p).args(["--format", "json"]), 0);
+        let mut v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+        v.as_object_mut().unwrap().remove("file");
+        v
+    };
+    // 18.07e-6 and 1.807e-5 are one decimal number: the same double.
+    assert_eq!(json(&cm3), json(&si));
+}
+
+/// `cantilever = [1, 2, 3]` was read by position (thickness, gap, modulus), and
+/// a wrong length named the Rust struct `RawCantilever`: only a table is read.
+#[test]
+fn a_cantilever_is_a_table_not_a_list() {
+    let dir = scratch("cantilever");
+    let shipped =
+        "cantilever = { thickness = \"2 um\", gap = \"2 um\", youngs_modulus = \"160 GPa\" }";
+    for list in ["[\"2 um\", \"2 um\", \"160 GPa\"]", "[1, 2]"] {
+        let path = humid_hub_with(&dir, "list.toml", shipped, &format!("cantilever = {list}"));
+        let e = refused(wearopt().arg("eval").arg(&path));
+        assert!(
+            e.contains("cantilever") && e.contains("expected a table"),
+            "{e}"
+        );
+        assert!(!e.contains("RawCantilever"), "{e}");
+    }
+}
