@@ -603,3 +603,36 @@ fn a_cantilever_is_a_table_not_a_list() {
         assert!(!e.contains("RawCantilever"), "{e}");
     }
 }
+
+/// `humidity` where every row is `out_of_range` exited 0 (`eval` of the same
+/// scene exits 1): 1 N on 5 µm² of the humid hub needs a real area above the
+/// nominal one at every humidity. No usable row: exit 1; the shipped hub: 0.
+#[test]
+fn humidity_without_a_usable_row_exits_1() {
+    let dir = scratch("humidity");
+    let text = std::fs::read_to_string(root("problems/micro-gear-humid.toml")).unwrap();
+    let heavy = text
+        .replacen("load = \"800 uN\"", "load = \"1 N\"", 1)
+        .replacen(
+            "nominal_area = \"1000 um^2\"",
+            "nominal_area = \"5 um^2\"",
+            1,
+        );
+    let path = dir.join("heavy.toml");
+    std::fs::write(&path, heavy).unwrap();
+    let range = [
+        "--from", "0", "--to", "0.9", "--points", "3", "--format", "json",
+    ];
+    let out = common::stdout(wearopt().arg("humidity").arg(&path).args(range), 1);
+    let v: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 3);
+    assert!(points.iter().all(|p| p["status"] == "out_of_range"), "{v}");
+    common::stdout(wearopt().arg("eval").arg(&path), 1);
+    common::stdout(
+        wearopt()
+            .args(["humidity", "problems/micro-gear-humid.toml"])
+            .args(range),
+        0,
+    );
+}
