@@ -85,6 +85,44 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Sen
     py.detach(f).map_err(value_error)
 }
 
+/// Runs `f` on a thread of its own while this one, without the GIL, wakes every
+/// 100 ms to let Python handle its signals: Ctrl-C raises `KeyboardInterrupt` at
+/// once (under [`detached`] it arrived only when the call returned, seconds to
+/// minutes later). The abandoned work finishes on its thread and is dropped: the
+/// solvers have no point to stop at, and nothing it holds is shared.
+fn interruptible<T: Send + 'static>(
+    py: Python<'_>,
+    f: impl FnOnce() -> Result<T, String> + Send + 'static,
+) -> PyResult<T> {
+    let (sender, receiver) = std::sync::mpsc::channel();
+    std::thread::Builder::new()
+        .name("wearopt-contact".into())
+        .spawn(move || {
+            // A receiver gone (the call was interrupted) leaves nothing to tell.
+            let _ = sender.send(f());
+        })
+        .map_err(|e| value_error(format!("cannot start the solve's thread: {e}")))?;
+    let mut receiver = receiver;
+    loop {
+        // The receiver goes to the GIL-free wait and comes back (it is Send, not Sync).
+        let (got, back) = py.detach(move || {
+            let got = receiver.recv_timeout(std::time::Duration::from_millis(100));
+            (got, receiver)
+        });
+        receiver = back;
+        match got {
+            Ok(result) => return result.map_err(value_error),
+            Err(std::sync::mpsc::RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => {
+                return Err(value_error(
+                    "the solve's thread ended without a result (a bug: please report it)"
+                        .to_string(),
+                ))
+            }
+        }
+    }
+}
+
 /// `wearopt eval FILE --format json`.
 #[pyfunction]
 fn evaluate_json(py: Python<'_>, source: String, is_path: bool) -> PyResult<String> {
@@ -385,6 +423,7 @@ fn sweep_text(
         } else {
             source.clone().into_bytes()
         };
+        let bytes = app::sweep::fingerprint_content(&problem, &bytes);
         let mut text = report::sweep::head(
             format,
             &report::sweep::Head {
@@ -623,7 +662,7 @@ fn contact_json<'py>(
     coarse_grain: bool,
     decimal_comma: bool,
 ) -> PyResult<ContactOut<'py>> {
-    let doc = detached(py, || {
+    let doc = interruptible(py, move || {
         let options = contact_options(
             &modulus,
             &pressures,
@@ -674,7 +713,7 @@ fn contact_array<'py>(
     let array = heights.as_array();
     let (ny, nx) = array.dim();
     let values: Vec<f64> = array.iter().copied().collect();
-    let doc = detached(py, || {
+    let doc = interruptible(py, move || {
         let options = contact_options(
             &modulus,
             &pressures,

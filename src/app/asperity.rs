@@ -14,6 +14,18 @@ pub use crate::model::asperity_curve::{
 /// The most interferences one run evaluates.
 pub const MAX_POINTS: usize = 10_000;
 
+/// The most interferences of a traced Lennard-Jones curve (μ inside
+/// [`SOLVED_TABOR`]): each is a root on the traced path, tens of milliseconds
+/// apiece (200 took 20 s, 10 000 ran 25 min before this bound).
+pub const MAX_TRACED_POINTS: usize = 1_000;
+
+/// The widest interferences |δ̂| of a traced Lennard-Jones curve (μ inside
+/// [`SOLVED_TABOR`]): the trace starts beyond `from` and steps to `to`, its
+/// time growing with both (from −1000: 41 s; from −10⁴: 166 s, then not
+/// converged; to 10⁶: still tracing after 32 min). JKR, DMT and the limits
+/// outside [`SOLVED_TABOR`] are closed forms and take the full ±1e6.
+pub const MAX_TRACED_INTERFERENCE: f64 = 1_000.0;
+
 /// The options of `wearopt asperity`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AsperityOptions {
@@ -58,7 +70,36 @@ impl AsperityOptions {
                 rule: format!("must lie in 2..={MAX_POINTS}"),
             });
         }
+        if self.traced() {
+            let why = format!(
+                "the Lennard-Jones sphere at μ = {} is traced point by point (μ from {} to {} is solved), which this bound keeps to about a minute; JKR and DMT (--adhesion-model) take up to {MAX_POINTS} points within ±1e6",
+                self.tabor, SOLVED_TABOR.0, SOLVED_TABOR.1
+            );
+            for (name, x) in [("from", self.from), ("to", self.to)] {
+                if x.abs() > MAX_TRACED_INTERFERENCE {
+                    return Err(AppError::Invalid {
+                        options: vec![(OptionName(name), x.to_string())],
+                        rule: format!(
+                            "must lie within ±{MAX_TRACED_INTERFERENCE} (Maugis units): {why}"
+                        ),
+                    });
+                }
+            }
+            if self.points > MAX_TRACED_POINTS {
+                return Err(AppError::Invalid {
+                    options: vec![(OptionName("points"), self.points.to_string())],
+                    rule: format!("must lie in 2..={MAX_TRACED_POINTS}: {why}"),
+                });
+            }
+        }
         Ok(())
+    }
+
+    /// Whether the curve is traced by the Lennard-Jones solver (its law at a
+    /// Tabor parameter inside [`SOLVED_TABOR`]), not a closed form.
+    pub fn traced(&self) -> bool {
+        self.law == CurveLaw::LennardJones
+            && (SOLVED_TABOR.0..=SOLVED_TABOR.1).contains(&self.tabor)
     }
 }
 

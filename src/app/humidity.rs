@@ -133,6 +133,17 @@ pub struct HumidityDocument {
     pub continuum_humidity: Option<f64>,
 }
 
+impl HumidityDocument {
+    /// True when no row is a usable result (every one not converged or out of
+    /// range): the study finished without one, as `eval`'s failed evaluation
+    /// (exit code 1).
+    pub fn failed(&self) -> bool {
+        self.rows
+            .iter()
+            .all(|r| matches!(r.status, Status::NotConverged | Status::OutOfRange))
+    }
+}
+
 /// The scene evaluated at humidity `rh`.
 fn row(scene: &Scene, environment: &Environment, rh: f64) -> HumidityRow {
     let s = Scene {

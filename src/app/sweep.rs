@@ -118,3 +118,22 @@ pub fn pareto_optimal(
 ) -> Vec<bool> {
     crate::sweep::pareto_optimal(points, direction)
 }
+
+/// The content a sweep's fingerprint covers (`report::sweep::fingerprint`):
+/// `problem_bytes` (the problem file as read, or a dict's JSON text) and, when
+/// the problem names a measured scan (`[roughness] topography`), the scan file's
+/// bytes — so that a changed scan under the same name is a different sweep, whose
+/// old output is neither kept by a rerun nor merged with new parts. A scan that
+/// cannot be read again adds its path only (the problem was loaded from it).
+pub fn fingerprint_content(problem: &Problem, problem_bytes: &[u8]) -> Vec<u8> {
+    let mut content = problem_bytes.to_vec();
+    if let Some(scan) = &problem.scan {
+        content.extend_from_slice(b"\0scan\0");
+        content.extend_from_slice(scan.path.as_bytes());
+        content.push(0);
+        if let Ok(bytes) = std::fs::read(&scan.path) {
+            content.extend_from_slice(&bytes);
+        }
+    }
+    content
+}

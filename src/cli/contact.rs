@@ -85,6 +85,18 @@ pub(crate) struct ContactArgs {
     fields: Option<PathBuf>,
 }
 
+/// The fields `--fields` writes: (name, 1-based pressure number), in order.
+fn field_names(pressures: usize, adhesion: bool) -> Vec<(&'static str, usize)> {
+    let names: &[&'static str] = if adhesion {
+        &["pressure", "gap", "adhesive_pressure", "adhesive_gap"]
+    } else {
+        &["pressure", "gap"]
+    };
+    (1..=pressures)
+        .flat_map(|i| names.iter().map(move |&n| (n, i)))
+        .collect()
+}
+
 pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
     let pixel_size = args
         .pixel_size
@@ -111,13 +123,36 @@ pub(crate) fn run(args: ContactArgs) -> Result<ExitCode> {
         }),
         _ => None,
     };
-    // The folder is made as `figures --out` makes its own, before the solves.
+    // The outputs are checked before the solves, which take seconds to minutes.
+    if let Some(path) = &args.plot {
+        if path.as_os_str() == "-" && args.format != Format::Text {
+            return Err(super::usage(format!(
+                "--plot - would write the SVG to stdout, where the {} report goes: give --plot a file name (--plot area.svg), or use --format text",
+                args.format.as_str()
+            )));
+        }
+        super::check_output(path, "the area plot", &[&args.scan])?;
+    }
+    // The folder is made as `figures --out` makes its own, before the solves, and
+    // each field's file is checked there: writable, not the scan, not a link
+    // (which the write would follow to overwrite its target).
     if let Some(dir) = &args.fields {
         std::fs::create_dir_all(dir).map_err(|e| AppError::Output {
             option: OptionName("fields"),
             path: dir.display().to_string(),
             reason: e.to_string(),
         })?;
+        for (name, i) in field_names(pressures.len(), adhesion.is_some()) {
+            let path = dir.join(format!("{name}_{i}.npy"));
+            if std::fs::symlink_metadata(&path).is_ok_and(|m| m.file_type().is_symlink()) {
+                return Err(super::usage(format!(
+                    "--fields {}: {} is a symbolic link, and writing the field would overwrite what it points to: remove it or choose another folder",
+                    dir.display(),
+                    path.display()
+                )));
+            }
+            super::check_output(&path, "a field", &[&args.scan])?;
+        }
     }
     let options = ContactOptions {
         modulus,

@@ -310,6 +310,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
 }
 
 fn eval(file: PathBuf, format: Format, out: Option<PathBuf>) -> Result<ExitCode> {
+    if let Some(path) = &out {
+        check_output(path, "the report", &[&file])?;
+    }
     let problem = app::load(&file)?;
     let origin = file.display().to_string();
     let doc = app::eval::eval(&problem, &origin, &report::eval::options(format))?;
@@ -407,6 +410,55 @@ pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Re
     }
 }
 
+/// Checks an output path before the work, so that a long computation is not lost
+/// at its end (exit code 2): `path` ("-": stdout, always fine) must not be one of
+/// `inputs` (the same file by any name: writing would overwrite what was read)
+/// and must be writable — a missing folder, a folder in its place or no permission
+/// is found now. Only a regular file or a new path is opened (not truncated; a new
+/// file made by the check is removed again); a device or a pipe is left to the
+/// write.
+pub(crate) fn check_output(
+    path: &std::path::Path,
+    what: &str,
+    inputs: &[&std::path::Path],
+) -> Result<()> {
+    if path.as_os_str() == "-" {
+        return Ok(());
+    }
+    if let Ok(out) = std::fs::canonicalize(path) {
+        if let Some(input) = inputs
+            .iter()
+            .find(|i| std::fs::canonicalize(i).is_ok_and(|i| i == out))
+        {
+            return Err(usage(format!(
+                "cannot write {what} to {}: it is the input {} (writing would overwrite it): choose another path",
+                path.display(),
+                input.display()
+            )));
+        }
+    }
+    let existing = std::fs::metadata(path).ok();
+    if existing
+        .as_ref()
+        .is_some_and(|m| !m.is_file() && !m.is_dir())
+    {
+        return Ok(());
+    }
+    let opened = std::fs::OpenOptions::new()
+        .append(true)
+        .create(true)
+        .open(path);
+    match opened {
+        Ok(_) => {
+            if existing.is_none() {
+                let _ = std::fs::remove_file(path);
+            }
+            Ok(())
+        }
+        Err(e) => Err(unwritable(path, what, &e)),
+    }
+}
+
 /// The error of an output path that cannot be written (exit code 2).
 pub(crate) fn unwritable(path: &std::path::Path, what: &str, e: &std::io::Error) -> anyhow::Error {
     usage(format!("cannot write {what} to {}: {e}", path.display()))
@@ -435,13 +487,30 @@ fn curve(args: CurveArgs) -> Result<ExitCode> {
 }
 
 fn asperity(args: AsperityArgs) -> Result<ExitCode> {
-    let doc = app::asperity::asperity(&app::asperity::AsperityOptions {
+    let options = app::asperity::AsperityOptions {
         tabor: args.tabor,
         from: args.from,
         to: args.to,
         points: args.points,
         law: args.adhesion_model,
-    })?;
+    };
+    options.validate()?;
+    if let Some(path) = &args.plot {
+        check_output(path, "the plot", &[])?;
+    }
+    // A traced curve takes seconds to a minute: a spinner says it is working.
+    let spinner = options
+        .traced()
+        .then(|| progress::bar(None, "tracing the Lennard-Jones sphere"))
+        .flatten();
+    if let Some(s) = &spinner {
+        s.enable_steady_tick(std::time::Duration::from_millis(200));
+    }
+    let doc = app::asperity::asperity(&options);
+    if let Some(s) = &spinner {
+        s.finish_and_clear();
+    }
+    let doc = doc?;
     if let Some(path) = &args.plot {
         write_output(path, &report::asperity::plot_svg(&doc), "the plot")?;
     }
@@ -460,6 +529,9 @@ fn humidity(args: HumidityArgs) -> Result<ExitCode> {
         points: args.points,
     };
     options.validate()?;
+    if let Some(path) = &args.plot {
+        check_output(path, "the plot", &[&args.file])?;
+    }
     let problem = app::load(&args.file)?;
     let bar = progress::Bar(progress::bar(Some(0), "humidities"));
     let doc =
@@ -469,7 +541,12 @@ fn humidity(args: HumidityArgs) -> Result<ExitCode> {
         write_output(path, &report::humidity::plot_svg(&doc), "the plot")?;
     }
     print_out(&report::humidity::render(&doc, args.format)?)?;
-    Ok(ExitCode::SUCCESS)
+    // No usable row is no usable result (the report says why), as for eval.
+    Ok(if doc.failed() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }
 
 /// The exit code for an error: 2 for bad input and usage, 1 otherwise.

@@ -89,6 +89,11 @@ impl Sink {
 
 /// Runs `wearopt sweep`.
 pub fn run(args: SweepArgs) -> Result<ExitCode> {
+    for (path, what) in [(&args.out, "the sweep"), (&args.plot, "the plot")] {
+        if let Some(path) = path {
+            super::check_output(path, what, &[&args.file])?;
+        }
+    }
     let problem = wearopt::app::load(&args.file)?;
     let method = match args.method {
         MethodArg::Sobol => Method::Sobol,
@@ -114,8 +119,9 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     let plan = plan.part(shard);
     let sweep = &plan.sweep;
     let range = plan.range.clone();
-    // The problem's content for the fingerprint: the file as read.
-    let problem_bytes = std::fs::read(&args.file).unwrap_or_default();
+    // The problem's content for the fingerprint: the file as read, and its scan.
+    let problem_bytes =
+        sw::fingerprint_content(&problem, &std::fs::read(&args.file).unwrap_or_default());
     let head = out::head(
         format,
         &out::Head {
@@ -128,8 +134,11 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     let direction = plan.direction;
 
     // Resume: a complete output of this very shard of this very sweep (its head,
-    // fingerprint and shard included, as this run would write it) is kept.
-    if let Some(path) = &args.out {
+    // fingerprint and shard included, as this run would write it) is kept. Only a
+    // regular file is read back: a pipe, a terminal or a device such as
+    // /dev/stdout or /dev/full is a fresh output (reading it would wait for input
+    // that never comes, or read without end).
+    if let Some(path) = args.out.as_ref().filter(|p| is_regular_file(p)) {
         if let Ok(existing) = std::fs::read_to_string(path) {
             if let Ok(part) = out::parse_part(&existing) {
                 if part.format == format && part.head == head && part.covers(range.clone()) {
@@ -206,6 +215,11 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         write_map(plot, &plan.name, &points, direction)?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// True when `path` is a regular file (following symbolic links).
+fn is_regular_file(path: &Path) -> bool {
+    std::fs::metadata(path).is_ok_and(|m| m.is_file())
 }
 
 fn write_map(

@@ -78,6 +78,16 @@ pub enum Warning {
         /// The plausible range (SI).
         plausible_max: f64,
     },
+    /// The condensing liquid is water and T is below its freezing point
+    /// (273.15 K): ice, not a liquid meniscus, and the Kelvin equation of
+    /// docs/model.md §9 does not hold; a temperature meant in °C and read in
+    /// kelvin (`temperature = 25`) looks so.
+    LiquidBelowFreezing {
+        /// T (K).
+        temperature: f64,
+        /// The liquid's freezing point (K).
+        freezing_point: f64,
+    },
     /// The Kelvin radius is below 0.5 nm (RH ≲ 35 % for water at 25 °C): the
     /// continuum Kelvin and Laplace equations of docs/model.md §9 are doubtful there.
     KelvinRadiusBelowContinuum {
@@ -189,6 +199,9 @@ pub const DENSE_CONTACT_FRACTION: f64 = 0.1;
 /// The range of η R σ where measured surfaces lie.
 pub const SUMMIT_PARAMETER_RANGE: (f64, f64) = (0.01, 0.2);
 
+/// The freezing point of water at 1 atm (K): 0 °C.
+pub const WATER_FREEZING_POINT: f64 = 273.15;
+
 /// Warnings that follow from the scene alone: implausible magnitudes, σ ≥ R, ηRσ.
 pub fn scene_warnings(scene: &Scene) -> Vec<Warning> {
     let mut w = Vec::new();
@@ -207,6 +220,15 @@ pub fn scene_warnings(scene: &Scene) -> Vec<Warning> {
                 value,
                 plausible_min: lo,
                 plausible_max: hi,
+            });
+        }
+    }
+    if let Some(env) = scene.environment {
+        if env.liquid == super::environment::Liquid::Water && env.temperature < WATER_FREEZING_POINT
+        {
+            w.push(Warning::LiquidBelowFreezing {
+                temperature: env.temperature,
+                freezing_point: WATER_FREEZING_POINT,
             });
         }
     }

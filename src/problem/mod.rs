@@ -1813,6 +1813,22 @@ impl Reader<'_> {
                 ),
             ));
         }
+        // The same limit as the scene's own temperature: a design the study
+        // reaches must be one `eval` accepts (700 K was once "optimal").
+        let critical = crate::model::capillary::WATER_CRITICAL_TEMPERATURE;
+        if q == SceneParameter::Temperature
+            && scene.environment.is_some_and(|e| e.liquid == Liquid::Water)
+            && max >= critical
+        {
+            return Err(self.invalid(
+                &format!("{key}.max"),
+                &bound.span(),
+                format!(
+                    "is {}: must be below water's critical point, 647.096 K (no liquid water above it); accepted: 0 K < min < max < 647.096 K",
+                    format_quantity(max, dim)
+                ),
+            ));
+        }
         let value = q.get(scene);
         if !(min..=max).contains(&value) {
             return Err(self.invalid(

@@ -157,13 +157,37 @@ pub struct RawStiction {
     pub cantilever: Option<Spanned<RawCantilever>>,
 }
 
-/// `stiction.cantilever`: a beam held down by the interface.
+/// `stiction.cantilever`: a beam held down by the interface. A table only: an
+/// array (`cantilever = [1, 2, 3]`) was read by position, its wrong length
+/// named this struct.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
+#[serde(remote = "Self")]
 pub struct RawCantilever {
     pub thickness: Option<Spanned<RawQuantity>>,
     pub gap: Option<Spanned<RawQuantity>>,
     pub youngs_modulus: Option<Spanned<RawQuantity>>,
+}
+
+impl<'de> Deserialize<'de> for RawCantilever {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Table;
+        impl<'de> serde::de::Visitor<'de> for Table {
+            type Value = RawCantilever;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str(
+                    "a table { thickness = \"2 um\", gap = \"2 um\", youngs_modulus = \"160 GPa\" }",
+                )
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                map: A,
+            ) -> Result<Self::Value, A::Error> {
+                RawCantilever::deserialize(serde::de::value::MapAccessDeserializer::new(map))
+            }
+        }
+        deserializer.deserialize_map(Table)
+    }
 }
 
 /// `[contact]`.

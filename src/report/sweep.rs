@@ -11,8 +11,9 @@
 //! * JSON: one object; its head names the sweep (`samples`, `method`, `seed`), its
 //!   `rows` array holds one row object per line, and `\n  ]\n}\n` closes it.
 //!
-//! Every output begins with its fingerprint: a hash of the problem's content,
-//! the method, seed, N and wearopt's version, and the shard — in CSV a first line
+//! Every output begins with its fingerprint: a hash of the problem's content
+//! (and of the scan its `topography` names), the method, seed, N, wearopt's
+//! version and build ([`BUILD`]), and the shard — in CSV a first line
 //! `# wearopt sweep fingerprint=… shard=I/N samples=N …` (the comment readers
 //! skip: pandas `comment="#"`, NumPy's default), in JSON the keys `fingerprint`
 //! and `shard`. A rerun keeps a part only if its head, fingerprint and shard
@@ -67,8 +68,15 @@ pub struct Head<'a> {
     pub shard: Shard,
 }
 
-/// The sweep's fingerprint: FNV-1a (64 bit) of the problem's content, the
-/// method, seed, N and wearopt's version — the same on every machine.
+/// This build of wearopt: a hash of the sources it was compiled from (set by
+/// `build.rs`), so that two builds of one version — whose rows may differ — are
+/// told apart by a sweep's fingerprint and head.
+pub const BUILD: &str = env!("WEAROPT_BUILD_ID");
+
+/// The sweep's fingerprint: FNV-1a (64 bit) of the problem's content (the
+/// caller's bytes: the file, and the scan it names — see
+/// `app::sweep::fingerprint_content`), the method, seed, N, wearopt's version
+/// and [`BUILD`] — the same on every machine for one build.
 pub fn fingerprint(problem: &[u8], sweep: &Sweep) -> u64 {
     let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
     let mut eat = |bytes: &[u8]| {
@@ -85,6 +93,7 @@ pub fn fingerprint(problem: &[u8], sweep: &Sweep) -> u64 {
     eat(&sweep.seed().to_le_bytes());
     eat(&sweep.samples().to_le_bytes());
     eat(env!("CARGO_PKG_VERSION").as_bytes());
+    eat(BUILD.as_bytes());
     hash
 }
 
@@ -102,7 +111,7 @@ pub fn head(format: Encoding, h: &Head) -> String {
     match format {
         Encoding::Csv => {
             let mut out = format!(
-                "# wearopt sweep fingerprint={print} shard={shard} samples={} method={} seed={} version={}\n",
+                "# wearopt sweep fingerprint={print} shard={shard} samples={} method={} seed={} version={} build={BUILD}\n",
                 h.sweep.samples(),
                 h.sweep.method().as_str(),
                 h.sweep.seed(),
@@ -124,10 +133,11 @@ pub fn head(format: Encoding, h: &Head) -> String {
         Encoding::Json => {
             let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
             format!(
-                "{{\n  \"fingerprint\": {},\n  \"shard\": {},\n  \"version\": {},\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},\n  \"rows\": [",
+                "{{\n  \"fingerprint\": {},\n  \"shard\": {},\n  \"version\": {},\n  \"build\": {},\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},\n  \"rows\": [",
                 s(json!(print)),
                 s(json!(shard)),
                 s(json!(env!("CARGO_PKG_VERSION"))),
+                s(json!(BUILD)),
                 s(json!(h.name)),
                 s(json!(h.sweep.method().as_str())),
                 h.sweep.seed(),
@@ -262,11 +272,10 @@ pub enum MergeError {
     /// Neither sweep CSV nor sweep JSON.
     #[error("not the output of `wearopt sweep`: {0}")]
     NotASweep(String),
-    /// A JSON part without its closing lines.
-    #[error(
-        "incomplete: the JSON output stops before its closing `]` and `}}` (rerun this shard)"
-    )]
-    Incomplete,
+    /// A part cut short: a JSON part without its closing lines, a CSV part in
+    /// the middle of a line (what stops, in words).
+    #[error("incomplete: {0} (rerun this shard)")]
+    Incomplete(&'static str),
     /// A row line that does not parse.
     #[error("line {line}: not a sweep row")]
     BadRow {
@@ -284,7 +293,7 @@ pub enum MergeError {
         previous: u64,
     },
     /// Parts of different sweeps, or of different formats.
-    #[error("its head differs from the first part's: parts of different sweeps (problem content, method, seed, samples, version or format: see the fingerprint line) cannot be joined")]
+    #[error("its head differs from the first part's: parts of different sweeps (problem or scan content, method, seed, samples, version, build or format: see the fingerprint line) cannot be joined")]
     HeadMismatch,
     /// A part whose rows are not its shard's.
     #[error("it is shard {index}/{count} of {samples} designs, rows {start}..{end}, but holds {found}: cut short or not this sweep's part (rerun that shard)")]
@@ -314,6 +323,22 @@ pub enum MergeError {
     #[error("row {found} appears twice (is one shard given twice?)")]
     Overlap {
         /// The repeated row.
+        found: u64,
+    },
+    /// More rows than the sweep has (`--samples` below the rows found).
+    #[error("the parts hold rows 0..{found}, more than the {expected} designs given (--samples {expected}): give the sweep's own N")]
+    Long {
+        /// Rows the sweep has.
+        expected: u64,
+        /// Rows found.
+        found: u64,
+    },
+    /// CSV parts without their fingerprint line, and no `--samples`: nothing says
+    /// how many rows the sweep has, so a last part cut on a row boundary would
+    /// pass.
+    #[error("the parts hold rows 0..{found}, but they lack the `# wearopt sweep` line that gives the sweep's N, so a last part cut short cannot be told from a complete one: give --samples N")]
+    UnknownTotal {
+        /// Rows found.
         found: u64,
     },
     /// Fewer rows than the sweep has.
@@ -366,6 +391,13 @@ fn leading_index(s: &str) -> Option<u64> {
 
 /// Parses the output of one `wearopt sweep` run (CSV or JSON).
 pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
+    // A sweep writes "\n" only; "\r\n" is a conversion on the way (a Windows
+    // editor, git's autocrlf), which would otherwise read as another sweep's head.
+    if text.contains("\r\n") {
+        return Err(MergeError::NotASweep(
+            "its lines end in CR LF (\\r\\n), not the LF a sweep writes: the file was converted on the way (a Windows editor, git's autocrlf); convert it back (dos2unix) and merge again".into(),
+        ));
+    }
     if text.starts_with('{') {
         let open = "  \"rows\": [";
         let at = text.find(open).ok_or_else(|| {
@@ -384,7 +416,9 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
         let body = body
             .strip_suffix(tail(Encoding::Json))
             .or_else(|| (body == "\n  ]\n}\n").then_some(""))
-            .ok_or(MergeError::Incomplete)?;
+            .ok_or(MergeError::Incomplete(
+                "the JSON output stops before its closing `]` and `}`",
+            ))?;
         let head_lines = head.lines().count();
         let mut rows = Vec::new();
         for (k, line) in body.lines().enumerate().skip(1) {
@@ -444,7 +478,9 @@ pub fn parse_part(text: &str) -> Result<Part<'_>, MergeError> {
         }
         let body = &text[end + 1..];
         if !body.is_empty() && !body.ends_with('\n') {
-            return Err(MergeError::Incomplete);
+            return Err(MergeError::Incomplete(
+                "the CSV output stops in the middle of a line",
+            ));
         }
         let columns = header.split(',').count();
         let head_lines = head.lines().count();
@@ -575,16 +611,17 @@ impl Merger {
         Ok(out)
     }
 
-    /// The closing text; checks that no row is missing (against `samples` when
-    /// the format or the caller knows it).
+    /// The closing text; checks that the rows are exactly the sweep's N (the
+    /// caller's `samples`, else the heads'; refused when neither gives it).
     pub fn finish(self, samples: Option<u64>) -> Result<String, MergeError> {
-        if let Some(expected) = samples.or(self.samples) {
-            if self.next != expected {
-                return Err(MergeError::Short {
-                    expected,
-                    found: self.next,
-                });
+        let found = self.next;
+        match samples.or(self.samples) {
+            Some(expected) if found > expected => return Err(MergeError::Long { expected, found }),
+            Some(expected) if found < expected => {
+                return Err(MergeError::Short { expected, found })
             }
+            Some(_) => {}
+            None => return Err(MergeError::UnknownTotal { found }),
         }
         Ok(tail(self.format).to_string())
     }

@@ -132,6 +132,20 @@ pub fn warning(w: &Warning) -> String {
                 }
             )
         }
+        Warning::LiquidBelowFreezing { temperature, freezing_point } => format!(
+            "the temperature T = {} is below water's freezing point, {} K: ice, not a liquid meniscus, and the capillary force does not hold there{}",
+            format_quantity(*temperature, Dimension::Temperature),
+            (freezing_point * 100.0).round() / 100.0,
+            if *temperature <= 100.0 {
+                format!(
+                    "; a temperature in degrees Celsius read as kelvin? {} °C is \"{} K\"",
+                    format_number(*temperature),
+                    ((temperature + 273.15) * 100.0).round() / 100.0
+                )
+            } else {
+                String::new()
+            }
+        ),
         Warning::KelvinRadiusBelowContinuum { kelvin_radius } => format!(
             "the Kelvin radius is {} (< 0.5 nm, a few molecules of water): the continuum Kelvin–Laplace picture of the capillary force is doubtful at this humidity; read the capillary numbers as an estimate",
             format_quantity(*kelvin_radius, Dimension::Length)

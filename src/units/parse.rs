@@ -347,7 +347,13 @@ fn factor_in(unit: &str, dimension: Dimension) -> Option<Factor> {
             }),
             _ => pow10(prefixed(unit, "rad")),
         },
-        Dimension::MolarVolume => pow10(prefixed(unit, "m^3/mol").map(|e| 3 * e)),
+        // cm³/mol as well: the unit molar volumes are tabulated in (water's
+        // 18.07 cm³/mol, the README's example), though centi is no prefix here.
+        Dimension::MolarVolume => pow10(
+            prefixed(unit, "m^3/mol")
+                .map(|e| 3 * e)
+                .or_else(|| (unit == "cm^3/mol").then_some(-6)),
+        ),
         Dimension::Pressure => pow10(prefixed(unit, "Pa")),
         Dimension::Force => pow10(prefixed(unit, "N")),
         Dimension::Length => pow10(

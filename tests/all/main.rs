@@ -46,5 +46,6 @@ mod surface_problem;
 mod surface_read;
 mod svg_bounds;
 mod sweep;
+mod testers;
 mod uncertainty;
 mod uq;

@@ -30,12 +30,23 @@ computations release the GIL, so calls from several threads run in parallel.
 from __future__ import annotations
 
 import json
+import numbers
 import os
 from typing import Any, Dict, Iterable, Optional, Tuple, Union
 
 import numpy as np
 
 from . import _wearopt
+
+
+def _is_int(value: Any) -> bool:
+    """An integer, Python's or NumPy's (``np.int64(10)``), not a bool."""
+    return isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_))
+
+
+def _is_number(value: Any) -> bool:
+    """A real number, Python's or NumPy's (``np.float32(1)``), not a bool."""
+    return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
 
 __all__ = [
     "evaluate",
@@ -121,8 +132,9 @@ def pareto(
     >>> front["front"], front["turn"], len(front["points"])
     ([0, 1, 2, 3, 4], 4, 7)
     """
-    if points is not None and (isinstance(points, bool) or not isinstance(points, int)):
+    if points is not None and not _is_int(points):
         raise TypeError(f"points must be an int or None, not {type(points).__name__}")
+    points = None if points is None else int(points)
     if points is not None and points < 0:
         raise ValueError(f"points={points}: must lie in 2..=200")
     for name, value in (("adhesion", adhesion), ("direction", direction)):
@@ -148,7 +160,7 @@ def humidity(problem: Problem, from_: Any, to: Any, points: int) -> Dict[str, An
     for name, value in (("from_", from_), ("to", to)):
         if isinstance(value, str):
             given.append(value)
-        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+        elif _is_number(value):
             x = float(value)
             # As the command line writes a number: 1, not 1.0.
             given.append(str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x))
@@ -156,8 +168,9 @@ def humidity(problem: Problem, from_: Any, to: Any, points: int) -> Dict[str, An
             raise TypeError(
                 f"{name} must be a number (a relative humidity in [0, 1)) or a percentage string such as \"50 %\", not {type(value).__name__}"
             )
-    if isinstance(points, bool) or not isinstance(points, int):
+    if not _is_int(points):
         raise TypeError(f"points must be an int, not {type(points).__name__}")
+    points = int(points)
     if points < 0:
         raise ValueError(f"points={points}: must lie in 2..=100000")
     return json.loads(_wearopt.humidity_json(*_source(problem), given[0], given[1], points))
@@ -265,10 +278,11 @@ def asperity(
     (-1.55, True)
     """
     for name, value in (("tabor", tabor), ("from_", from_), ("to", to)):
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if not _is_number(value):
             raise TypeError(f"{name} must be a number, not {type(value).__name__}")
-    if isinstance(points, bool) or not isinstance(points, int):
+    if not _is_int(points):
         raise TypeError(f"points must be an int, not {type(points).__name__}")
+    points = int(points)
     if points < 0:
         raise ValueError(f"points={points}: must lie in 2..=10000")
     if not isinstance(adhesion_model, str):
@@ -282,7 +296,7 @@ def _quantity(name: str, value: Any, si_unit: str = "SI units") -> Optional[str]
     """A quantity as the command line reads it: a string with a unit, or a number in SI."""
     if value is None or isinstance(value, str):
         return value
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
+    if _is_number(value):
         return repr(float(value))
     raise TypeError(f"{name} must be a string with a unit or a number in {si_unit}, not {type(value).__name__}")
 
@@ -513,11 +527,13 @@ def sweep(
     """
     i, n = shard if shard is not None else (0, 1)
     for name, v in (("samples", samples), ("seed", seed), ("shard index", i), ("shard count", n)):
-        if isinstance(v, bool) or not isinstance(v, int):
+        if not _is_int(v):
             raise TypeError(f"{name} must be an int, not {type(v).__name__}")
         if v < 0:
             raise ValueError(f"{name} {v}: must be >= 0")
-    return _wearopt.sweep_text(*_source(problem), samples, method, seed, i, n, format)
+    return _wearopt.sweep_text(
+        *_source(problem), int(samples), method, int(seed), int(i), int(n), format
+    )
 
 
 def merge(
