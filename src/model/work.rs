@@ -1,5 +1,5 @@
 //! The work of separation: Γ̄ = -∫_{h0}^∞ P̄(h) dh, the apparent work of adhesion
-//! of docs/model.md §9 in model units (what a cantilever-beam test measures, per
+//! of docs/model.md §10 in model units (what a cantilever-beam test measures, per
 //! unit nominal area, from the unloaded equilibrium h0 to infinity).
 //!
 //! **Method: the integrals exchanged** ([`work_of_separation`]). The solid load is

@@ -971,7 +971,7 @@ fn design_accept(q: SceneParameter) -> Accept {
 }
 
 impl Reader<'_> {
-    /// `[environment]` and `[interface] contact_angle` (docs/model.md §9): None
+    /// `[environment]` and `[interface] contact_angle` (docs/model.md §10): None
     /// without an `[environment]` table.
     fn environment(
         &self,

@@ -120,7 +120,7 @@ pub struct RawProblem {
     pub uncertainty: Option<Spanned<RawUncertainty>>,
 }
 
-/// `[environment]`: the humid air around the contact (docs/model.md §9).
+/// `[environment]`: the humid air around the contact (docs/model.md §10).
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawEnvironment {
