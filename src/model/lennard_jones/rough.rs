@@ -42,7 +42,7 @@ const REACH: f64 = 9.591_663_046_625_44;
 /// one at h < 0) holds its summits nearest Δ = 0 most: its window is where
 /// e^{-(h+Δ)²/2 + h²/2} ≥ e^{-46}, Δ ∈ −h ± √(h² + 92) (REACH
 /// either side of the peak at h = 0, wider beyond: a window of REACH about
-/// Δ = 0 would cut summits that still weigh at large h, docs/history.md). An
+/// Δ = 0 would cut summits that still weigh at large h: docs/history.md). An
 /// unscaled share's window is
 /// REACH either side of its peak Δ = −h; the non-contact one at h > 0 reaches
 /// further towards contact, where its summits pull hardest: the far summits
