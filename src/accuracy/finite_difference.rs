@@ -2,7 +2,8 @@
 //! rules, and a high-accuracy reference for them.
 //!
 //! The rules mirror [`crate::model::sensitivity`] (which is central differences
-//! with Richardson at δ = 1e-4): x → x·e^{±δ} (central, 2 evaluations) and also
+//! with Richardson at δ = [`LOG_STEP`](crate::model::sensitivity::LOG_STEP) = 1e-3):
+//! x → x·e^{±δ} (central, 2 evaluations) and also
 //! x·e^{±2δ} with `D = D₁ + (D₁ − D₂)/3` (Richardson, 4 evaluations).
 //!
 //! The reference differentiates the *reference* wear rate

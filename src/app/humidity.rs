@@ -1,4 +1,4 @@
-//! `wearopt humidity`: a scene across relative humidity (docs/model.md §9): the
+//! `wearopt humidity`: a scene across relative humidity (docs/model.md §10): the
 //! separation, capillary load, pull-off force, apparent work of adhesion Γ, wet
 //! fraction and wear rate at evenly spaced humidities, and the threshold humidity
 //! where Γ reaches ten times its dry value.
@@ -11,7 +11,7 @@ use super::{valid_scene, AppError, OptionName};
 /// The most humidities one run evaluates.
 pub const MAX_POINTS: usize = 100_000;
 
-/// Γ at the threshold humidity over Γ in dry air (docs/model.md §9).
+/// Γ at the threshold humidity over Γ in dry air (docs/model.md §10).
 pub const THRESHOLD_RATIO: f64 = 10.0;
 
 /// The options of `wearopt humidity`.
@@ -234,7 +234,7 @@ pub fn humidity_with(
 /// The lowest humidity where Γ reaches ten times its dry value: the first sampled
 /// humidity at or above it brackets it with the one before (or with dry air), and
 /// bisection on RH finds it to 1e-12 (Γ grows with RH: the Kelvin length and the
-/// wet area grow; docs/model.md §9). None when no sample reaches it, or where dry
+/// wet area grow; docs/model.md §10). None when no sample reaches it, or where dry
 /// Γ is 0 (no adhesion to multiply).
 fn threshold(
     scene: &Scene,

@@ -1,4 +1,4 @@
-//! Capillary adhesion at a relative humidity (docs/model.md §9).
+//! Capillary adhesion at a relative humidity (docs/model.md §10).
 //!
 //! A liquid (water unless given) condenses in every gap narrower than the Kelvin
 //! length d_K = r_K (cos θ_a + cos θ_b), r_K = γ_L V_m / (R_g T ln(1/RH)), and

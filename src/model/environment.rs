@@ -9,7 +9,7 @@ use serde::Serialize;
 pub const GAS_CONSTANT: f64 = 8.314_462_618;
 /// T_c of water (K), IAPWS 1994.
 pub const WATER_CRITICAL_TEMPERATURE: f64 = 647.096;
-/// V_m of liquid water (m³/mol) at 25 °C (docs/model.md §9).
+/// V_m of liquid water (m³/mol) at 25 °C (docs/model.md §10).
 pub const WATER_MOLAR_VOLUME: f64 = 1.8069e-5;
 /// 25 °C in kelvin, the default temperature.
 pub const ROOM_TEMPERATURE: f64 = 298.15;

@@ -54,7 +54,7 @@ pub struct Model {
     s_touch: f64,
     /// s0³ (= c_d to an ulp), the constant of the cancellation-free Δ(v).
     c_d_cubed: f64,
-    /// The capillary term of docs/model.md §9 (None: dry, or no meniscus).
+    /// The capillary term of docs/model.md §10 (None: dry, or no meniscus).
     pub capillary: Option<Capillary>,
     /// The law whose integrals are taken: `law` itself, except where a
     /// closed-form limit stands in for it (see [`Model::stand_in`]).
@@ -170,7 +170,7 @@ pub struct Integrals {
     /// (Dugdale beyond its reach, where both are large: Δ_h (h - Δ_h/2)); None
     /// where the difference of the two fields is exact enough.
     pub noncontact_gap: Option<f64>,
-    /// The capillary load of docs/model.md §9 and its derivatives, at their own
+    /// The capillary load of docs/model.md §10 and its derivatives, at their own
     /// scale (all 0 without a meniscus).
     pub capillary: CapillaryShare,
 }
@@ -345,7 +345,7 @@ impl Model {
         (self.effective != self.law && self.coefficients.has_adhesion()).then_some(self.effective)
     }
 
-    /// This model with a capillary term (docs/model.md §9) added to its load.
+    /// This model with a capillary term (docs/model.md §10) added to its load.
     pub fn with_capillary(self, capillary: Option<Capillary>) -> Self {
         Model { capillary, ..self }
     }

@@ -86,7 +86,7 @@ pub struct Scene {
     /// Under DMT: how non-contacting asperities are attracted (ignored under JKR).
     #[serde(skip)]
     pub attraction: AttractionKind,
-    /// The humid air around the contact (docs/model.md §9: the problem file's
+    /// The humid air around the contact (docs/model.md §10: the problem file's
     /// `[environment]`); None is dry air, the paper's scene.
     #[serde(skip)]
     pub environment: Option<Environment>,

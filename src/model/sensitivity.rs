@@ -8,11 +8,12 @@
 //! to about eta = 1e-13 relative, so the rounding error of a central difference is
 //! about eta/d = 1e-10, while Richardson's combination `D = D1 + (D1 - D2)/3`
 //! leaves a truncation error O(d^4), estimated as `|D1 - D2|/3 (d/l)^2` for
-//! derivatives that vary on scales l >= 0.1 in ln x, plus rounding `2 eta/d`. `wearopt accuracy` measured the rules
-//! against a 1e-12 reference: Richardson at d = 1e-3 is the most accurate (3.2e-12
-//! worst over the shipped scenes), several times better than at d = 1e-4. Each
-//! parameter is moved as the scene-parameter table moves it
-//! ([`SceneParameter::set`]).
+//! derivatives that vary on scales l >= 0.1 in ln x, plus rounding `2 eta/d`.
+//! Against a reference derivative to 1e-12 (`wearopt accuracy`, its rows of the
+//! step rules; measured: 3.2e-12 worst over the shipped scenes, and why d = 1e-3:
+//! docs/history.md) the test `finite_differences_against_the_reference_derivative`
+//! holds the wear rate's elasticity in σ within 1e-8. Each parameter is moved as
+//! the scene-parameter table moves it ([`SceneParameter::set`]).
 
 use serde::Serialize;
 

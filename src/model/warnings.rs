@@ -89,7 +89,7 @@ pub enum Warning {
         freezing_point: f64,
     },
     /// The Kelvin radius is below 0.5 nm (RH ≲ 35 % for water at 25 °C): the
-    /// continuum Kelvin and Laplace equations of docs/model.md §9 are doubtful there.
+    /// continuum Kelvin and Laplace equations of docs/model.md §10 are doubtful there.
     KelvinRadiusBelowContinuum {
         /// r_K (m).
         kelvin_radius: f64,

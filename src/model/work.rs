@@ -1,5 +1,5 @@
 //! The work of separation: Γ̄ = -∫_{h0}^∞ P̄(h) dh, the apparent work of adhesion
-//! of docs/model.md §9 in model units (what a cantilever-beam test measures, per
+//! of docs/model.md §10 in model units (what a cantilever-beam test measures, per
 //! unit nominal area, from the unloaded equilibrium h0 to infinity).
 //!
 //! **Method: the integrals exchanged** ([`work_of_separation`]). The solid load is
@@ -681,10 +681,9 @@ mod tests {
     /// contact to far out. The two differ by the far field beyond h = 1e6,
     /// which the quadrature over h takes in closed form as Bradley's
     /// (P̂/B = 1) and the grid integrates as the table has it: so the bound is
-    /// 1e-9 of Γ̄ plus 1e-3 of that closed-form tail (measured: up to 6e-4 of
-    /// it with the table before 2026-11-27, whose rings left P̂/B 6e-4 short
-    /// of 1; 3.1e-4 since, the solver's rigid far field exact — the rest not
-    /// yet traced, some 4e-6 of Γ̄).
+    /// 1e-9 of Γ̄ plus 1e-3 of that closed-form tail (measured: 3.1e-4 of it,
+    /// the rest not yet traced, some 4e-6 of Γ̄; what an earlier table gave:
+    /// docs/history.md).
     #[test]
     fn the_lennard_jones_work_by_its_grid_matches_the_quadrature_over_h() {
         use crate::model::AsperityLaw;

@@ -1019,7 +1019,7 @@ fn design_accept(q: SceneParameter) -> Accept {
 }
 
 impl Reader<'_> {
-    /// `[environment]` and `[interface] contact_angle` (docs/model.md §9): None
+    /// `[environment]` and `[interface] contact_angle` (docs/model.md §10): None
     /// without an `[environment]` table.
     /// T of the contact: `contact.temperature`, or in humid air
     /// `environment.temperature` (one of them), else 298.15 K.

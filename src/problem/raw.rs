@@ -137,7 +137,7 @@ pub struct RawWear {
     pub sliding_speed: Option<Spanned<RawQuantity>>,
 }
 
-/// `[environment]`: the humid air around the contact (docs/model.md §9).
+/// `[environment]`: the humid air around the contact (docs/model.md §10).
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawEnvironment {

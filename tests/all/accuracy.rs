@@ -195,7 +195,7 @@ fn finite_differences_against_the_reference_derivative() {
     let p = SceneParameter::Sigma;
     let r = finite_difference::reference_elasticity(scene, p).expect("reference derivative");
     assert!(r.error < 1e-10, "{r:?}");
-    // The model's own sensitivity (Richardson, δ = 1e-4) is the default rule.
+    // The model's own sensitivity (Richardson, δ = LOG_STEP = 1e-3) is the default rule.
     let model = wearopt::model::sensitivities(
         scene,
         Quadrature::default(),

@@ -1,4 +1,4 @@
-//! Capillary adhesion (docs/model.md §9): the capillary load against the 40-digit table
+//! Capillary adhesion (docs/model.md §10): the capillary load against the 40-digit table
 //! of `scripts/reference_capillary.py` (closed forms and direct quadrature, agreeing to
 //! ≥ 25 digits), the rough surface's pull-off, unloaded separation and work of
 //! separation against its 20-digit table (two methods agreeing to ≥ 15 digits), and the

@@ -129,7 +129,7 @@ fn reference_shares(
     want
 }
 
-/// With a meniscus (docs/model.md §9) the Lennard-Jones law's pull-off (the
+/// With a meniscus (docs/model.md §10) the Lennard-Jones law's pull-off (the
 /// deepest minimum of P̄) and unloaded separation (P̄ = 0) against the
 /// independent quadrature above plus the capillary load (its closed form,
 /// itself checked against the 40-digit table in capillary.rs), its extrema

@@ -41,9 +41,9 @@ const REACH: f64 = 9.591_663_046_625_44;
 /// A share scaled by e^{-h²/2} (the contact one at h > 0, the non-contact
 /// one at h < 0) holds its summits nearest Δ = 0 most: its window is where
 /// e^{-(h+Δ)²/2 + h²/2} ≥ e^{-46}, Δ ∈ −h ± √(h² + 92) (REACH
-/// either side of the peak at h = 0, wider beyond: at h = 8.7 the contact
-/// window ran only to Δ = 0.9 with e^{-hΔ} still e^{-8}, and P̄ jumped by 7e-4
-/// of the contact share as a node left it). An unscaled share's window is
+/// either side of the peak at h = 0, wider beyond: a window of REACH about
+/// Δ = 0 would cut summits that still weigh at large h: docs/history.md). An
+/// unscaled share's window is
 /// REACH either side of its peak Δ = −h; the non-contact one at h > 0 reaches
 /// further towards contact, where its summits pull hardest: the far summits
 /// at the peak pull less by Bradley's (z0/(z0 + h))², so the window grows by
@@ -139,12 +139,13 @@ pub fn stand_in_pull_off_error(above: bool) -> f64 {
 /// converged solution's: δ̂ against the apex gap G, each point extrapolated
 /// on three meshes, has a least slope −dδ̂/dG of +2.07e-4 at μ = 0.697 and
 /// −7.5e-4 at 0.698, falling linearly with μ (+1.17e-3 at 0.696); the
-/// trace's own mesh puts the cusp within 3e-4 of it). Until 2026-11-29 it
-/// stood at 0.7093, where `wearopt asperity` first found jumps: its trace
-/// stepped over the S-shape whole where that is narrower than a step (1.5e-3
-/// of δ̂ at μ = 0.715). The table's last single-valued curve is at 0.692,
-/// its first S-shaped one at 0.7275 (test
-/// `the_cusp_lies_between_the_tables_kinds_of_curve`).
+/// trace's own mesh puts the cusp within 3e-4 of it; docs/model.md §11 *The
+/// rough surface*). The table's last single-valued curve is at 0.692, its
+/// first S-shaped one at 0.7275: the test
+/// `the_cusp_lies_between_the_tables_kinds_of_curve` asserts that the curves
+/// 1e-3 below and 2e-3 above are single-valued and S-shaped, and
+/// `cusp_between_kinds_campaign` that the least slope changes sign within
+/// ±5e-4. The value it replaced: docs/history.md.
 pub const CUSP_TABOR: f64 = 0.6972;
 
 /// The Lagrange weights of the four nodes around μ, cubic in 1/μ (∝ ẑ0, the
@@ -154,12 +155,12 @@ pub const CUSP_TABOR: f64 = 0.6972;
 /// None outside the table. Each node comes with a second weight, cubic in
 /// ln μ, for the single summit's pull-off. In 1/μ the integrals: the shares
 /// vary with μ at fixed ℓ much like powers of the range (the far attraction
-/// as ẑ0²), and the interpolation to a node left out (twice the table's
-/// spacing, z0 ≤ 3, ℓ = 1 … 100, h = −1 … 4) errs by 1.0e-3 of the shares'
-/// size in 1/μ against 5.9e-3 in ln μ (2.0e-3 in μ^{-1/2}, 8.2e-3 in
-/// μ^{-3/2}). In ln μ the pull-off, a step from DMT's 2 to JKR's 1.5 over a
-/// few decades of μ (in 1/μ it missed the reference by 8.9e-6 at μ = 0.05,
-/// in ln μ by less than 1e-6); above [`SPARSE_ABOVE`] in μ^{-2/3}.
+/// as ẑ0²; measured against ln μ, μ^{-1/2} and μ^{-3/2}: docs/history.md).
+/// In ln μ the pull-off, a step from DMT's 2 to JKR's 1.5 over a few decades
+/// of μ (measured against 1/μ: docs/history.md); above [`SPARSE_ABOVE`] in
+/// μ^{-2/3}. What the interpolation errs by:
+/// [`INTERPOLATION_ERROR`](super::table::INTERPOLATION_ERROR) and its
+/// neighbours; docs/model.md §11 *The rough surface*.
 fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     let c = curves();
     let (lo, hi) = super::table::tabor_range();
@@ -558,17 +559,15 @@ fn add_moments(share: &mut [f64; 3], g: f64, u: f64) {
 }
 
 /// The separations the per-scene [`Grid`] serves, h ∈ [lo, hi]; outside, the
-/// shares are integrated at h itself. Every evaluation of `eval` on the
-/// shipped Lennard-Jones scenes lies in 1.06…3.9, of `optimize` on the hub's
-/// study in 0.47…11.0 (a meniscus's separation search no longer steps far
-/// out: `separation::newton_root`). Not wider: above 16 the approach part's
-/// panels would start further out and land elsewhere near the switch (at
-/// ℓ = 0.59 a grid for h ≤ 40 missed the adaptive reference by 2e-11 where
-/// this one misses by 6.4e-13, `the_stretched_grid_matches_an_adaptive_quadrature`);
-/// below −6 the grid's sums of the few non-contact nodes left in the window
-/// at h ≈ −9.6 differ from the windowed quadrature's in sign at 1e-28 of the
-/// load (the stability suite's million-case run found a positive non-contact
-/// load there).
+/// shares are integrated at h itself (docs/model.md §11 *Accuracy and speed
+/// in the evaluator*). Every evaluation of `eval` on the shipped
+/// Lennard-Jones scenes lies in 1.06…3.9, of `optimize` on the hub's study in
+/// 0.47…11.0. Not wider: above 16 the approach part's panels would start
+/// further out and land elsewhere near the switch, below −6 the grid's sums
+/// of the few non-contact nodes left in the window could differ from the
+/// windowed quadrature's in sign (both measured: docs/history.md). Inside,
+/// the test `the_stretched_grid_matches_an_adaptive_quadrature` holds the
+/// grid to an adaptive quadrature within 1e-12 of the larger share's size.
 pub const GRID_SEPARATIONS: (f64, f64) = (-6.0, 16.0);
 
 /// One scene's quadrature nodes over every summit the separations of
@@ -1814,8 +1813,8 @@ mod tests {
 
     /// The far field below a layout's first node, on panels shrinking by 1.5
     /// against 1.05 in τ (three times as many): the same integral to 5e-12
-    /// (4e-15 but where the layout starts on the contact part, s = 0.01: 2.8e-12
-    /// on the table of 2026-11-27, 5e-13 on the one before), on curves across
+    /// (4e-15 but where the layout starts on the contact part, s = 0.01; what
+    /// earlier tables gave there: docs/history.md), on curves across
     /// the table and scales from 0.01 to 300.
     #[test]
     fn the_far_field_is_converged() {

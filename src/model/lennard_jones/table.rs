@@ -257,7 +257,7 @@ struct Body {
     tail: Tail,
 }
 
-/// The contact part beyond δ̂_max (docs/model.md §11): a Hertz load whose
+/// The contact part beyond δ̂_max (docs/model.md §11 *The loading table*): a Hertz load whose
 /// shift tends to the squeezed gap's limit,
 ///
 ///   P̂(δ̂) = P̂_m + ∫_{δ̂_max}^{δ̂} 1.5 (x − C(x))^{1/2} dx,
@@ -268,15 +268,17 @@ struct Body {
 /// r from the last panel's slope at δ̂_max (so P̂ and P̂' run on continuously
 /// there), q and κ from the departures at δ̂_max/√2 and δ̂_max/2 ([`departure_law`]).
 /// Deep in contact the surfaces' gap closes as p^{-1/9}, and the
-/// deficit is that gap's mean: on the curves written to δ̂ = 150 s(x) alone
-/// is within 0.2 % of their deficit at 150 for μ ≥ 0.1 (0.3 % at μ = 0.01),
+/// deficit is that gap's mean (measured: on the curves written to δ̂ = 150
+/// s(x) alone is within 0.2 % of their deficit at 150 for μ ≥ 0.1, 0.3 % at
+/// μ = 0.01),
 /// and their ratio's departure from 1 falls as a power of δ̂ that varies
-/// slowly along a curve and from one curve to the next (0.86 at μ = 0.01 on
-/// the curve written to δ̂ = 904, 0.85 by its end; 0.99 … 1.03 at μ = 0.105
-/// and 1.06 … 1.09 at 0.918 from 50 to 150): with the power 1 and no drift, as
-/// until 2026-11-28, the departure at μ = 0.01 and δ̂ = 800 was 17 % short of
-/// the solver's. The slope and its integral as Chebyshev series on panels
-/// doubling in their distance from the branch point, their ends' sums kept.
+/// slowly along a curve and from one curve to the next (measured: 0.86 at
+/// μ = 0.01 on the curve written to δ̂ = 904, 0.85 by its end; 0.99 … 1.03 at
+/// μ = 0.105 and 1.06 … 1.09 at 0.918 from 50 to 150), hence the fitted power
+/// and drift (the simpler law it replaced: docs/history.md). The slope and its
+/// integral as Chebyshev series on panels doubling in their distance from the
+/// branch point, their ends' sums kept. What the tail does to P̄:
+/// [`TAIL_ERROR`].
 #[derive(Debug, Clone, PartialEq)]
 struct Tail {
     /// δ̂_max and P̂ there.
@@ -420,12 +422,13 @@ fn squeezed(z0: f64, x: f64, guess: f64) -> (f64, f64) {
 /// δ̂_max/√2 and δ̂_max/2 (L_a, L_b): the secant exponents
 /// q_u = ln(r_u/r)/(−L_u) = q + κ L_u/2 give κ = 2 (q_a − q_b)/(L_a − L_b),
 /// within [0, 0.5] (a drift that could turn the departure back up, κ < 0,
-/// is none), and q = q_a − κ L_a/2, within [0.5, 1.5]. On the table's
-/// curves q = 0.87 at μ = 0.01, about 1 from μ = 0.05 to 0.4, rising to 1.2 at
-/// 22.4; κ = 0.02 … 0.13. Where the three departures are not of one sign
-/// (around μ = 0.037, where the departure changes sign and is 2 % of its
-/// size elsewhere) q = 1, κ = 0: the departure's 1/δ̂ of the tail until
-/// 2026-11-28. Returns (q, κ).
+/// is none), and q = q_a − κ L_a/2, within [0.5, 1.5] (measured on the
+/// table's curves: q = 0.87 at μ = 0.01, about 1 from μ = 0.05 to 0.4, rising
+/// to 1.2 at 22.4; κ = 0.02 … 0.13). Where the three departures are not of one
+/// sign (around μ = 0.037, where the departure changes sign and is 2 % of its
+/// size elsewhere) q = 1, κ = 0: a departure falling as 1/δ̂. Returns (q, κ);
+/// docs/model.md §11 *The loading table*; test
+/// `the_departure_law_recovers_its_own_form`.
 pub fn departure_law(r: f64, (a, r_a): (f64, f64), (b, r_b): (f64, f64), start: f64) -> (f64, f64) {
     let (l_a, l_b) = ((a / start).ln(), (b / start).ln());
     let (q_a, q_b) = ((r_a / r).ln() / -l_a, (r_b / r).ln() / -l_b);
@@ -902,10 +905,10 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// μ's side of it, reaching past the table's curve nearest the cusp; the
 /// largest at μ = 0.676, 3.1e-8 at 0.73, next to the first S-shaped curve).
 /// The law's largest error against the converged sphere (the tail beyond
-/// the table's reach, [`TAIL_ERROR`], moves P̄ by less). (Until 2026-11-28,
-/// with the first S-shaped curve, 0.7275, at refinement 1 — 4.3e-6 off its
-/// own at 2, where the trace nearly stops converging — 2.7e-6 beside the
-/// cusp; on the table of 67 curves: 4.0e-6 and 9.2e-6.)
+/// the table's reach, [`TAIL_ERROR`], moves P̄ by less); docs/model.md §11
+/// *The rough surface*. Asserted, P̄ and dP̄/dh, by the test
+/// `the_interpolation_in_tabor_against_curves_between_the_tables` (every
+/// curve: `between_the_tables_campaign`). How it came down: docs/history.md.
 pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 3.2e-7);
 /// Just above the cusp, between it and the first S-shaped curve (0.7275),
 /// as [`INTERPOLATION_ERROR`]: (μ, P̄'s error there), the largest of five
@@ -915,19 +918,23 @@ pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 3.2e-7);
 /// single-valued curves' below it, extrapolated to μ_c — and the first
 /// three S-shaped curves: at the cusp the S-shape's loop closes, and the
 /// loading path's integrals are those of a curve smooth in μ through it
-/// plus the loop's share, which grows from zero as (μ − μ_c)². Until
-/// 2026-11-29, extrapolated from the S-shaped curves alone, 1.5e-5 at 0.71.
+/// plus the loop's share, which grows from zero as (μ − μ_c)². Asserted by
+/// the test `just_above_the_cusp_the_interpolation_is_what_the_reports_say`
+/// (all five: `above_the_cusp_campaign`); docs/model.md §11 *The rough
+/// surface*; the stencil it replaced: docs/history.md.
 pub const INTERPOLATION_ERROR_ABOVE_CUSP: (f64, f64) = (0.71, 2.9e-7);
 /// As [`INTERPOLATION_ERROR`] above μ = 5 (`rough::SPARSE_ABOVE`) up to the
 /// solved table's end, where the grid is sparser (18.4 curves a decade, each
 /// 4–23 minutes to write on the stretching mesh) and six curves serve a
-/// stencil, interpolated in 1/μ by Lagrange's quintic: at the midpoints
-/// μ = 5.32, 9.93 and 21.0, 2.1e-8, 9.8e-8 and 2.5e-7 (the last between the
-/// table's last two curves, where the stencil is most one-sided). With four
-/// curves a stencil on the same grid 1.4e-6 and 2.6e-6 at 5.32 and 21.0; on
-/// half the grid (9.2 a decade, until 2026-11-28) 1.7e-5 and 3.7e-5: the
-/// switch moves about as μ^{-1/2} (δ̂_s ≈ −1.08 μ^{-1/2}), faster than a cubic over
-/// that spacing follows.
+/// stencil, interpolated in 1/μ by Lagrange's quintic: the largest of the
+/// errors at the midpoints μ = 5.32, 9.93 and 21.0, which is at 21.0 (between
+/// the table's last two curves, where the stencil is most one-sided). Six
+/// curves, not four: the
+/// switch moves about as μ^{-1/2} (δ̂_s ≈ −1.08 μ^{-1/2}), faster than a cubic
+/// over that spacing follows (measured: docs/history.md). Asserted, with the
+/// three midpoints' figures in its doc, by the test
+/// `the_interpolation_in_tabor_against_curves_between_the_tables`;
+/// docs/model.md §11 *The rough surface*.
 pub const INTERPOLATION_ERROR_SPARSE: f64 = 2.5e-7;
 /// Beyond δ̂_max (50, or 16 ẑ0 where that is further: μ < 0.18) the tail (a
 /// Hertz load whose shift follows the squeezed gap, [`squeezed_deficit`],
@@ -943,17 +950,10 @@ pub const INTERPOLATION_ERROR_SPARSE: f64 = 2.5e-7;
 /// `scripts/lennard_jones_table.sh far`, its own tail beyond), relative to
 /// ∫|p| φ̄ over h = −1 … 4, with and without plasticity: [μ, then at each ℓ
 /// of [`TAIL_SCALES`]] (1e-12: rounding, the tail not reached). Everywhere
-/// below the interpolation in μ ([`INTERPOLATION_ERROR`]). (Until
-/// 2026-11-28, the departure falling as 1/δ̂ and the reach 4 ẑ0 below
-/// μ = 0.0444: at μ = 0.01 1e-12 / 2.3e-7 / 2.2e-6 / 2.1e-6, around 0.037 up
-/// to 3.6e-7 / 2.3e-6 / 2.1e-6 / 1.7e-6 — not measured there then —, at
-/// 0.105 1.6e-8 / 2.3e-7 / 2.7e-7 / 2.4e-7 against these curves; the fitted
-/// departure alone took μ = 0.01 to 9.6e-8 and left 2.3e-6 around 0.037;
-/// with it and the reach 8 ẑ0, 6.6e-7 there. With the reach 50 everywhere, at
-/// μ = 0.01: 6.7e-5 / 1.1e-4 / 9.0e-5 / 4.7e-5; with the shift held constant,
-/// until 2026-11-27, at ℓ = 30 / 100: 3.1e-3 / 8.3e-3, 9.2e-5 / 4.9e-4,
-/// 1.0e-5 / 5.6e-5; growing as a fitted power of δ̂: 4.0e-4 / 2.3e-3,
-/// 6.1e-7 / 7.3e-6, 1.2e-7 / 1.2e-6.)
+/// below the interpolation in μ ([`INTERPOLATION_ERROR`]). Asserted by the
+/// test `the_tail_beyond_the_tables_reach_is_what_the_reports_say` (every
+/// curve: `tail_beyond_reach_campaign`); docs/model.md §11 *The loading
+/// table*; the tails tried before: docs/history.md.
 pub const TAIL_ERROR: [[f64; 5]; 8] = [
     [0.01, 1e-12, 1e-12, 5.8e-12, 1.4e-9],
     [0.0374, 1e-12, 7.1e-9, 1.35e-7, 1.6e-7],
@@ -1148,8 +1148,10 @@ pub const LIMIT_STEPS: usize = 48;
 /// P̄ relative to ∫|p| φ̄ over ℓ = 1 … 100, with and without plasticity,
 /// h = −1 … 4). The pull-off's on the solved curves below, at ℓ = 3: 6.3e-2
 /// at μ = 5, 3.7e-2 at 8.24, 2.0e-2 at 13.6, 1.4e-2 at 17.4 — falling about
-/// as μ^{-1.2}. JKR's law in its place (until 2026-11-28): 0.33 at ℓ = 1,
-/// 0.75 at ℓ = 3, and at ℓ = 10 a pull-off 21 decades too small.
+/// as μ^{-1.2}. Asserted by the test
+/// `the_limit_curve_stands_in_for_the_sphere_as_stated`; docs/model.md §11
+/// *Above the table: the limit curves*; JKR's law in its place:
+/// docs/history.md.
 pub const LIMIT_ERROR: (f64, f64) = (1.03e-2, 2.75e-3);
 
 /// The law above the solved table against a curve the solver wrote there
@@ -1158,17 +1160,18 @@ pub const LIMIT_ERROR: (f64, f64) = (1.03e-2, 2.75e-3);
 /// ∫|p| φ̄, as [`LIMIT_ERROR`]). At μ = 31.6 the pull-off is within 6.7e-3
 /// (ℓ = 3; 2.0e-3 at ℓ = 1), P̄ within 1.42e-3: with the jump in where the
 /// solver puts it ([`JumpIn`], 5.5e-7 there) what is left is JKR's contact
-/// branch at finite μ. (With the jump in at δ̂_s,top (μ_top/μ)^{1/2}, 0.96 %
-/// too deep, until 2026-11-28: 5.9e-3 and 3.5e-3, the pull-off's closer by
-/// two errors' partly cancelling.)
+/// branch at finite μ. Asserted by the test
+/// `the_law_above_the_table_against_a_solved_curve_there`; docs/model.md §11
+/// *Above the table: the limit curves*.
 pub const LIMIT_CHECK: (f64, f64, f64) = (31.62, 6.7e-3, 1.42e-3);
 
 /// JKR's law against the last limit curve, where it takes over (the rough
 /// surface's pull-off, relative, where adhesion is strong: ℓ = σ/ε = 0.3, 1,
-/// 3 give 3.1e-4, 7.3e-4, 2.9e-3; 6.1e-3 with the jump in held at μ^{-1/2},
-/// until 2026-11-28). Where it is weak JKR's pull-off falls far below the
-/// limit curve's (at ℓ = 10, 1.5e-29 of the load scale against 6.9e-19: both
-/// nothing a part feels).
+/// 3 give 3.1e-4, 7.3e-4, 2.9e-3; test
+/// `jkr_takes_over_where_the_limit_curves_end`; docs/model.md §11 *Above the
+/// table: the limit curves*). Where it is weak JKR's pull-off falls far below
+/// the limit curve's (at ℓ = 10, 1.5e-29 of the load scale against 6.9e-19:
+/// both nothing a part feels).
 pub const LIMIT_END_ERROR: f64 = 2.9e-3;
 
 /// Where the sphere jumps into contact above the solved table:
@@ -1180,9 +1183,10 @@ pub const LIMIT_END_ERROR: f64 = 2.9e-3;
 /// (δ̂ = δ/(μ ε)); a constant offset of order ε is the second term. C and D
 /// through the solved table's last two curves (1.4915 and 0.5648): the
 /// solved curves' switch from μ = 10.6 up to them within 5.2e-6, and at 31.6
-/// (`tests/data/lennard_jones_above.txt`, not in the table) within 5.5e-7.
-/// The μ^{-1/2} of the curves from 5 to 10 (until 2026-11-28) was 0.96 % too
-/// deep there: the local exponent grows from 0.50 at μ = 10 to 0.53 at 31.6.
+/// (`tests/data/lennard_jones_above.txt`, not in the table) within 5.5e-7
+/// (test `the_jump_in_follows_the_solved_curves`); a single power of μ does
+/// not do: the local exponent grows from 0.50 at μ = 10 to 0.53 at 31.6 (the
+/// rule it replaced: docs/history.md).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JumpIn {
     /// C, of μ^{-4/7}.
