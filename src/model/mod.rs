@@ -1,14 +1,20 @@
-//! The physics of docs/model.md: coefficients and indices, the asperity laws
-//! ([`law`]: JKR, §3, and DMT with van der Waals or Dugdale attraction of the
-//! asperities out of contact, §7), the load and area integrals, the separation
-//! solve, Archard wear, and the dimensional layer that ties them to a [`Scene`],
-//! with the scene's parameters and the evaluation's outputs each in one table
-//! ([`SceneParameter`], [`Quantity`]).
+//! The physics of docs/model.md: coefficients and indices; the asperity laws
+//! ([`law`]: JKR §3, DMT with van der Waals or Dugdale attraction of the
+//! asperities out of contact §7, and the self-consistent Lennard-Jones sphere
+//! §11, [`lennard_jones`]; each an [`asperity_law`] found through the registry);
+//! the capillary term of a meniscus in humid air (§10, [`capillary`],
+//! [`environment`]); the load and area integrals, the separation solve, the
+//! work of separation ([`work`]); the wear laws ([`wear_law`]: Archard §3 and the
+//! stress-assisted law §12, behind one registry) and whether junctions smooth or
+//! make debris (§13, [`debris`]); sensitivities; and the dimensional layer that
+//! ties them to a [`Scene`], with the scene's parameters and the evaluation's
+//! outputs each in one table ([`SceneParameter`], [`Quantity`]).
 //! No I/O, no printing, no English: outcomes are values ([`Status`], [`Warning`],
 //! [`Note`]) that the report stage words.
 //!
-//! Internals are crate-private: the DMT attraction quadrature (`dmt`) and the
-//! Gaussian special functions (`special`).
+//! Internals are crate-private: the DMT attraction quadrature (`dmt`), the
+//! Gaussian special functions (`special`), and the modules behind the public
+//! names (`jkr`, `material`, `parameter`, `registry`).
 
 pub mod asperity;
 pub mod asperity_curve;

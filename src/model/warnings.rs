@@ -80,7 +80,7 @@ pub enum Warning {
     },
     /// The condensing liquid is water and T is below its freezing point
     /// (273.15 K): ice, not a liquid meniscus, and the Kelvin equation of
-    /// docs/model.md §9 does not hold; a temperature meant in °C and read in
+    /// docs/model.md §10 does not hold; a temperature meant in °C and read in
     /// kelvin (`temperature = 25`) looks so.
     LiquidBelowFreezing {
         /// T (K).

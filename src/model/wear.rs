@@ -224,7 +224,7 @@ pub struct Evaluation {
     /// closed-form limit whose numbers stand in (`dmt` or `jkr`); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stand_in_model: Option<AdhesionModel>,
-    /// Capillary adhesion (docs/model.md §9): present when the scene has an
+    /// Capillary adhesion (docs/model.md §10): present when the scene has an
     /// `[environment]` or a cantilever; its keys sit at the top level.
     #[serde(flatten)]
     pub humidity: Option<Humidity>,
@@ -234,7 +234,7 @@ pub struct Evaluation {
     pub wear_details: Option<WearDetails>,
 }
 
-/// The humid air's numbers at the operating point (docs/model.md §9), SI.
+/// The humid air's numbers at the operating point (docs/model.md §10), SI.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Humidity {
     /// RH, 0 to below 1.

@@ -432,7 +432,8 @@ fn curve_flags() {
 
 /// Every shipped problem uses a law its Tabor parameter allows: DMT below 0.3
 /// (the DLC contact, φ0 = 0.257; the materials study, 0.164); in the transition
-/// 0.3–3 the Lennard-Jones law for the hub, the gold switch and the latch study,
+/// 0.3–3 the Lennard-Jones law for the hub (dry, under scatter, and its robust
+/// study), the gold switch and the latch study,
 /// and the humid hub and coating study under DMT (their van der Waals attraction
 /// across the gaps is the dry adhesion that the capillary rise of docs/model.md
 /// §10 is measured against); the optimisation studies and the scan keep JKR
@@ -456,6 +457,7 @@ fn shipped_scenes_use_the_law_their_tabor_parameter_calls_for() {
             "micro-gear",
             "micro-gear-humid",
             "micro-gear-scatter",
+            "micro-gear-robust",
             "gold-switch",
             "latch-pareto",
         ]
