@@ -1004,7 +1004,7 @@ fn rank(r: &Run, feasibility: f64) -> (u8, f64) {
 }
 
 /// Minimises the statistic (or the nominal objective) subject to the
-/// deterministic rows at the median and P(g_j ≤ 0) ≤ targets[j], by SORA from
+/// deterministic rows at the median and P(g_j ≤ 0) ≤ `targets[j]`, by SORA from
 /// each start (in parallel, collected in order; the best converged optimal run is
 /// kept, ties to the earlier start), then verifies the design by sampling (module
 /// doc). Under [`Verify::Correct`], each violated constraint's PMA target is
