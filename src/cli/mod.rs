@@ -410,6 +410,22 @@ pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Re
     }
 }
 
+/// Says on stderr that `command` works on the nominal study of a robust file
+/// (its statistic objective and chance constraints are read by `optimize`
+/// only; docs/robust-design.md).
+pub(crate) fn say_nominal_only(
+    problem: &wearopt::problem::Problem,
+    file: &std::path::Path,
+    command: &str,
+) {
+    if problem.robust.is_robust() {
+        eprintln!(
+            "note: {}: the statistic objective and chance constraints are read by `wearopt optimize` only; this {command} is of the nominal study (every input at its nominal value)",
+            file.display()
+        );
+    }
+}
+
 /// Checks an output path before the work, so that a long computation is not lost
 /// at its end (exit code 2): `path` ("-": stdout, always fine) must not be one of
 /// `inputs` (the same file by any name: writing would overwrite what was read)

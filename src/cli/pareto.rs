@@ -134,6 +134,7 @@ impl Observer for Stream<'_> {
 /// Runs `wearopt pareto`.
 pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     let problem = wearopt::app::load(&args.file)?;
+    super::say_nominal_only(&problem, &args.file, "front");
     let origin = args.file.display().to_string();
     let mut options = out::options(args.format, args.points);
     options.adhesion = args

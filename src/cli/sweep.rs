@@ -95,6 +95,7 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         }
     }
     let problem = wearopt::app::load(&args.file)?;
+    super::say_nominal_only(&problem, &args.file, "sweep");
     let method = match args.method {
         MethodArg::Sobol => Method::Sobol,
         MethodArg::Lhs => Method::Lhs,
