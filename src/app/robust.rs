@@ -380,7 +380,8 @@ fn objective_sample(
 }
 
 /// The robust study of `problem`, started from the nominal optimum and the
-/// baseline. `deadline` bounds the deterministic solves.
+/// baseline. `deadline` (the study's `time_limit` from its start) bounds SORA:
+/// past it no solve, cycle or correction starts, and the status is `time_limit`.
 pub fn robust(problem: &Problem, nominal: &Optimum, deadline: Instant) -> Option<RobustOutcome> {
     let start = Instant::now();
     let program = RobustProgram::new(problem)?;
@@ -393,6 +394,7 @@ pub fn robust(problem: &Problem, nominal: &Optimum, deadline: Instant) -> Option
         targets: r.chance.iter().map(|c| c.probability_max).collect(),
         verify: r.verify,
         seed: u.seed,
+        deadline: Some(deadline),
         ..RobustSettings::default()
     };
     let remaining = deadline.saturating_duration_since(Instant::now());

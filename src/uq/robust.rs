@@ -686,6 +686,11 @@ pub struct RobustSettings {
     /// Points of the independent sample on which the statistic is verified at
     /// the optimum (default 4096; 0: none).
     pub verify_samples: usize,
+    /// When SORA must stop (default none): no deterministic solve runs past it
+    /// (each gets the time left as its time limit), no new cycle or correction
+    /// round starts after it, and a run it stops ends `time_limit`. The
+    /// verification of the design reached still runs.
+    pub deadline: Option<std::time::Instant>,
 }
 
 impl Default for RobustSettings {
@@ -704,6 +709,7 @@ impl Default for RobustSettings {
             max_corrections: 5,
             seed: 1,
             verify_samples: 4096,
+            deadline: None,
         }
     }
 }
@@ -776,7 +782,8 @@ pub enum RobustStatus {
     Infeasible,
     /// The last SQP reached its iteration cap.
     IterationLimit,
-    /// The last SQP reached its time limit.
+    /// The last SQP reached its time limit, or the deadline stopped SORA
+    /// ([`RobustSettings::deadline`]).
     TimeLimit,
     /// The last SQP made no more progress (or its start could not be evaluated),
     /// or the settings were invalid.
@@ -901,6 +908,8 @@ struct Run {
     mptp: Vec<InverseForm>,
     history: Vec<SoraCycle>,
     converged: bool,
+    /// The deadline stopped it before its cycles converged.
+    timed_out: bool,
     evaluations: usize,
 }
 
@@ -921,9 +930,26 @@ fn sora<P: UncertainProgram>(
     let mut history = Vec::new();
     let mut last: Option<(SqpResult, Vec<InverseForm>)> = None;
     for _ in 0..s.max_cycles {
+        let mut sqp_settings = s.sqp.clone();
+        if let Some(deadline) = s.deadline {
+            let left = deadline.saturating_duration_since(std::time::Instant::now());
+            if left.is_zero() {
+                if let Some((sqp, mptp)) = last {
+                    return Run {
+                        sqp,
+                        mptp,
+                        history,
+                        converged: false,
+                        timed_out: true,
+                        evaluations,
+                    };
+                }
+            }
+            sqp_settings.time_limit = Some(sqp_settings.time_limit.map_or(left, |t| t.min(left)));
+        }
         let mut shifted = ShiftedProgram::new(program, s.statistic, points, u.clone());
         shifted.failures_allowed = s.failures_allowed;
-        let sqp = minimize(&shifted, &d, &s.sqp);
+        let sqp = minimize(&shifted, &d, &sqp_settings);
         evaluations += shifted.evaluations();
         d = sqp.x.clone();
         let model = program.inputs(&d);
@@ -971,6 +997,7 @@ fn sora<P: UncertainProgram>(
                 mptp,
                 history,
                 converged,
+                timed_out: false,
                 evaluations,
             };
         }
@@ -981,6 +1008,7 @@ fn sora<P: UncertainProgram>(
         mptp,
         history,
         converged: false,
+        timed_out: false,
         evaluations,
     }
 }
@@ -1094,7 +1122,12 @@ pub fn optimize_robust<P: UncertainProgram>(
         evaluations += evals;
         chance = reports;
         let violated: Vec<usize> = (0..chance.len()).filter(|&j| chance[j].violated).collect();
-        if violated.is_empty() || s.verify == Verify::Report || corrections >= s.max_corrections {
+        let late = s.deadline.is_some_and(|dl| std::time::Instant::now() >= dl);
+        if violated.is_empty()
+            || s.verify == Verify::Report
+            || corrections >= s.max_corrections
+            || late
+        {
             break;
         }
         corrections += 1;
@@ -1136,7 +1169,9 @@ pub fn optimize_robust<P: UncertainProgram>(
         }
         _ => None,
     };
-    let status = if !run.converged && run.sqp.status == SqpStatus::Optimal {
+    let status = if run.timed_out {
+        RobustStatus::TimeLimit
+    } else if !run.converged && run.sqp.status == SqpStatus::Optimal {
         RobustStatus::CycleLimit
     } else if run.sqp.status != SqpStatus::Optimal {
         RobustStatus::of_sqp(run.sqp.status)

@@ -520,3 +520,18 @@ fn robust_results_do_not_depend_on_the_thread_count() {
     assert_eq!(key(&one.0), key(&four.0));
     assert_eq!(key(&one.1), key(&four.1));
 }
+
+/// A deadline already past stops SORA at its first solve: status `time_limit`
+/// (never `optimal` or `cycle_limit`), the design it reached still verified.
+#[test]
+fn a_past_deadline_ends_time_limit() {
+    let settings = RobustSettings {
+        targets: vec![std_normal_cdf(-3.0); 3],
+        deadline: Some(std::time::Instant::now()),
+        ..RobustSettings::default()
+    };
+    let r = optimize_robust(&YounChoi { sd: 0.3 }, &[vec![5.0, 5.0]], &settings);
+    assert_eq!(r.status, RobustStatus::TimeLimit, "{:?}", r.status);
+    assert_eq!(r.chance.len(), 3);
+    assert!(r.history.len() <= 1, "{} cycles", r.history.len());
+}
