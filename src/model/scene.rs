@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use super::environment::Environment;
 use super::law::{AdhesionModel, AttractionKind};
-use super::wear_law::{self, Activation, ContactStress, WearModel};
+use super::wear_law::inputs::{self as wear_law, Activation, ContactStress, WearModel};
 
 /// Which real area wears (paper eq. 13): all contacts, or only the plastic
 /// ("welded") junctions.

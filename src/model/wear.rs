@@ -633,6 +633,7 @@ pub fn evaluate_from(scene: &Scene, options: &EvaluationOptions, hints: SearchHi
         plastic_area,
         elastic_load: at.map_or(zero, |a| Scaled::new(a.load_elastic, a.scale_exponent)),
         area_scale,
+        equivalent_modulus: e,
     });
     let wear_area_scaled = wear.rate;
     let real_area = area.scale(area_scale).value();

@@ -122,7 +122,7 @@ impl WearLaw for StressAssisted {
 /// in the model's units (P = K R^{1/2} σ^{3/2} p, A = πRσΔ); H over it is c_h.
 fn contact_stress_scale(input: &WearInput<'_>) -> f64 {
     let s = input.scene;
-    let k = 4.0 / 3.0 * crate::model::wear::equivalent_modulus(s);
+    let k = 4.0 / 3.0 * input.equivalent_modulus;
     k / std::f64::consts::PI * (s.sigma / s.asperity_radius).sqrt()
 }
 
