@@ -12,7 +12,6 @@
 
 use std::time::{Duration, Instant};
 
-use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::{self, Evaluation, EvaluationOptions, Quantity, Scene, SceneParameter, Status};
@@ -23,14 +22,15 @@ use crate::optimize::{
 use crate::problem::{Event, Problem, UncertainInput};
 use crate::uq::distribution::Distribution;
 use crate::uq::model::InputModel;
-use crate::uq::reliability::{self, EventResult};
+use crate::uq::reliability::EventResult;
 use crate::uq::robust::{
-    common_points, estimate, optimize_robust, verification_settings, Outputs, RobustResult,
-    RobustSettings, RobustStatus, Statistic, UncertainProgram,
+    chance_probabilities, common_points, estimate, objective_values, optimize_robust,
+    verification_settings, Outputs, RobustResult, RobustSettings, RobustStatus, Statistic,
+    UncertainProgram,
 };
 use crate::uq::Estimate;
 
-use super::uncertainty::{limit_state, scene_at};
+use super::uncertainty::{event_needs_pull_off, limit_state, scene_at};
 
 /// The SQP's KKT tolerance on a statistic objective at least this: a quantile
 /// over a fixed sample is smooth only between the designs where two sample
@@ -109,12 +109,7 @@ impl<'a> RobustProgram<'a> {
             .iter()
             .map(|c| c.event.clone())
             .collect();
-        let pull_off = functions.options.pull_off
-            || events.iter().any(|e| match e {
-                Event::Stiction => true,
-                Event::WearOut => false,
-                Event::Threshold { quantity, .. } => quantity.needs_pull_off(),
-            });
+        let pull_off = functions.options.pull_off || events.iter().any(event_needs_pull_off);
         let options = EvaluationOptions {
             pull_off,
             ..functions.options
@@ -354,19 +349,11 @@ fn objective_sample(
     points: &[Vec<f64>],
     statistic: Option<Statistic>,
 ) -> ObjectiveSample {
-    let model = program.inputs(d);
-    let values: Vec<Option<f64>> = points
-        .par_iter()
-        .map(|u| {
-            program
-                .outputs(d, &model.to_physical(u))
-                .map(|o| o.objective)
-                .filter(|v| v.is_finite())
-        })
-        .collect();
-    let failed = values.iter().filter(|v| v.is_none()).count();
-    let mut values: Vec<f64> = values.into_iter().flatten().collect();
+    let all = objective_values(program, d, points);
+    let mut values: Vec<f64> = all.into_iter().filter(|v| v.is_finite()).collect();
+    let failed = points.len() - values.len();
     values.sort_by(f64::total_cmp);
+    let model = program.inputs(d);
     let nominal = program
         .outputs(d, &model.to_physical(&vec![0.0; model.dim()]))
         .map_or(f64::NAN, |o| o.objective);
@@ -421,24 +408,20 @@ pub fn robust(problem: &Problem, nominal: &Optimum, deadline: Instant) -> Option
     let robust_sample = objective_sample(&program, &result.design, &points, r.statistic);
     let nominal_unit = space.unit(&nominal.design);
     let nominal_sample = objective_sample(&program, &nominal_unit, &points, r.statistic);
-    let model = program.inputs(&nominal_unit);
-    let nominal_events = r
-        .chance
-        .iter()
-        .enumerate()
-        .map(|(j, c)| {
-            let g = |x: &[f64]| {
-                program
-                    .outputs(&nominal_unit, x)
-                    .and_then(|o| o.limit_states.get(j).copied())
-            };
-            EventAt {
-                event: c.event.name().to_string(),
-                target: c.probability_max,
-                analysis: reliability::analyze(&model, g, &verification_settings()),
-            }
-        })
-        .collect();
+    let nominal_events = chance_probabilities(
+        &program,
+        &nominal_unit,
+        r.chance.len(),
+        &verification_settings(),
+    )
+    .into_iter()
+    .zip(&r.chance)
+    .map(|(analysis, c)| EventAt {
+        event: c.event.name().to_string(),
+        target: c.probability_max,
+        analysis,
+    })
+    .collect();
     Some(RobustOutcome {
         statistic: r.statistic,
         inputs: u.inputs.iter().map(|i| i.parameter).collect(),

@@ -257,7 +257,7 @@ fn evaluate(scene: &Scene, pull_off: bool) -> Evaluation {
 }
 
 /// Whether an event's limit state reads the pull-off force.
-fn event_needs_pull_off(event: &Event) -> bool {
+pub(crate) fn event_needs_pull_off(event: &Event) -> bool {
     match event {
         Event::Stiction => true,
         Event::WearOut => false,
