@@ -145,9 +145,17 @@ pub struct Meniscus {
 }
 
 impl Environment {
-    /// cos θ_a + cos θ_b.
+    /// cos θ_a + cos θ_b, 0 where its magnitude is below the rounding of the
+    /// cosines near 90° (|sum| ≤ 8 ε ≈ 1.8e-15, an angle within 1e-13° of 90°):
+    /// cos(π/2) in floating point is 6.1e-17, not 0, and two right angles would
+    /// otherwise condense a meniscus 6e-25 m high where docs/model.md §10 says none.
     pub fn cos_sum(&self) -> f64 {
-        self.contact_angle_a.cos() + self.contact_angle_b.cos()
+        let sum = self.contact_angle_a.cos() + self.contact_angle_b.cos();
+        if sum.abs() <= 8.0 * f64::EPSILON {
+            0.0
+        } else {
+            sum
+        }
     }
 
     /// The meniscus, or None where nothing condenses: RH = 0, cos θ_a + cos θ_b ≤ 0,

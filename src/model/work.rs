@@ -385,7 +385,7 @@ fn exchanged(model: &Model, law: &ContactLaw, h0: f64) -> (f64, usize) {
             Part::Capillary => capillary_integrand(model, h0, cap_scale, x),
         }
     };
-    let integral = integrate(&start, &mut f);
+    let integral = integrate(&start, &mut f) + capillary_beyond(model, h0);
     (-integral, evaluations)
 }
 
@@ -448,6 +448,7 @@ fn exchanged_tabulated(model: &Model, table: &dyn Tabulated, solid: f64, h0: f64
             capillary_integrand(model, h0, scale, t)
         };
         integral += integrate(&capillary_pieces(model, h0, scale), &mut f);
+        integral += capillary_beyond(model, h0);
     }
     (-integral, evaluations)
 }
@@ -490,6 +491,66 @@ fn capillary_pieces(model: &Model, from: f64, scale: f64) -> Vec<(Part, f64, f64
         .collect()
 }
 
+/// ∫_{H}^∞ P̄_cap dh (≤ 0), H = max(from, [`super::coefficients::MAX_SEPARATION`]):
+/// the meniscus beyond the quadrature's end, which matters only where the
+/// Kelvin gap reaches past H (RH within about 3e-7 of 1 at σ = 3 nm). There
+/// T_1(h) = 0 and J(h) = T_1(h − k)/k, so with u = h − k and c = f/k = 2π R N σ
+///
+/// ```text
+/// ∫_H^∞ P̄_cap dh = −p ∫_{H−k}^∞ (1 − e^{−c T_1(u)}) du
+/// ```
+///
+/// On u ≤ −U (U = 40) T_1(u) = √(2π)|u| + T_1(|u|) is √(2π)|u| to rounding, and
+/// that part is the closed form ∫_U^{k−H} (1 − e^{−c√(2π) v}) dv; the rest,
+/// u ∈ [max(H − k, −U), U], is the module's adaptive quadrature (T_1(U) underflows).
+/// As RH → 1 (k → ∞) the whole work of the meniscus tends to p k, i.e. γ_L
+/// (cos θ_a + cos θ_b) in J/m² (docs/model.md §10: the flooded interface); test
+/// `the_flooded_limit_holds_as_humidity_reaches_one`.
+fn capillary_beyond(model: &Model, from: f64) -> f64 {
+    const U: f64 = 40.0;
+    let Some(capillary) = model.capillary else {
+        return 0.0;
+    };
+    let k = capillary.range;
+    let start = from.max(super::coefficients::MAX_SEPARATION);
+    let lo = start - k;
+    if lo >= U || !lo.is_finite() {
+        return 0.0;
+    }
+    let c = capillary.wetting / k;
+    // The linear part, v = −u ∈ [U, k − H]: L(1 − e^{−aU}) + e^{−aU}(aL − (1 − e^{−aL}))/a.
+    let linear = if lo < -U {
+        let a = c * SQRT_TWO_PI;
+        let l = -lo - U;
+        let x = a * l;
+        // x − (1 − e^{−x}) without its cancellation for small x.
+        let excess = if x < 1e-3 {
+            x * x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x / 120.0)))
+        } else {
+            x + (-x).exp_m1()
+        };
+        l * -(-a * U).exp_m1() + (-a * U).exp() * excess / a
+    } else {
+        0.0
+    };
+    let from_u = lo.max(-U);
+    let edges = [
+        -U, -20.0, -10.0, -6.0, -3.0, -1.0, 0.0, 1.0, 3.0, 6.0, 10.0, U,
+    ];
+    let mut cuts = vec![from_u];
+    cuts.extend(edges.iter().copied().filter(|&e| e > from_u));
+    let pieces: Vec<(Part, f64, f64)> = cuts
+        .windows(2)
+        .map(|w| (Part::Capillary, w[0], w[1]))
+        .collect();
+    let mut f = |_: Part, u: f64| {
+        let t1 = tail1_given(u, tail0(u)) * (-kappa(u)).exp();
+        -(-c * t1).exp_m1()
+    };
+    let rest = integrate(&pieces, &mut f);
+    -capillary.flooded * (linear + rest)
+}
+
 /// t at h = [`super::coefficients::MAX_SEPARATION`] in the map h = from + L (1 - t)/t
 /// (1 when from is already beyond it).
 fn capillary_end(from: f64, scale: f64) -> f64 {
@@ -517,7 +578,8 @@ pub fn work_by_separation(model: &Model, from: f64) -> (f64, usize) {
         let h = from + scale * (1.0 - t) / t;
         model.at(h).load().value() * scale / (t * t)
     };
-    let mut integral = integrate(&[(Part::Load, t_end, 1.0)], &mut integrand);
+    let mut integral =
+        integrate(&[(Part::Load, t_end, 1.0)], &mut integrand) + capillary_beyond(model, from);
     // Beyond h = MAX_SEPARATION a power-law attraction's tail in closed form:
     // −c_0 (z0/(z0 + h))² per summit under van der Waals, 4/3 of it under
     // Lennard-Jones (Hamaker constant 16π Z0² γ against 12π).

@@ -290,6 +290,51 @@ fn a_flooded_interface_has_the_liquids_work_of_adhesion() {
     assert!(last < 0.02, "{last}");
 }
 
+/// As RH → 1 the Kelvin gap outgrows any separation the quadrature reaches (k = d_K/σ
+/// passes 1e6 near RH = 1 − 3e-7 at σ = 3 nm): the meniscus beyond it is taken in closed
+/// form, and Γ stays at the flooded limit γ_L (cos θ_a + cos θ_b) (docs/model.md §10).
+/// Before, the work fell to 0.041 J/m² at 1 − 1e-7 and 0.004 at 1 − 1e-8 (limit 0.1439).
+/// Without solid adhesion the miss is the elastic energy stored and the unwetted fringe,
+/// O(1/k + 1/F): below 1e-4 here.
+#[test]
+fn the_flooded_limit_holds_as_humidity_reaches_one() {
+    for dry in [1e-6, 1e-7, 1e-8, 1e-10] {
+        let mut scene = hub(Some(1.0 - dry));
+        scene.work_of_adhesion = 0.0;
+        let m = scene.environment.unwrap().meniscus().unwrap();
+        let ev = evaluate(&scene, &EvaluationOptions::default());
+        let gamma = ev.humidity.unwrap().apparent_work_of_adhesion.unwrap();
+        let miss = 1.0 - gamma / m.adhesion;
+        assert!(
+            (0.0..1e-4).contains(&miss),
+            "RH = 1 − {dry:e}: Γ {gamma} J/m² against γ_c {} (k = {})",
+            m.adhesion,
+            m.height / scene.sigma
+        );
+    }
+}
+
+/// Two right angles condense nothing (cos θ_a + cos θ_b = 0, docs/model.md §10), although
+/// cos(π/2) in floating point is 6.1e-17: the humid scene is the dry one bit for bit.
+#[test]
+fn right_contact_angles_condense_no_meniscus() {
+    let right = Environment {
+        relative_humidity: 0.9,
+        contact_angle_a: PI / 2.0,
+        contact_angle_b: (90.0f64).to_radians(),
+        ..Environment::default()
+    };
+    assert!(right.meniscus().is_none(), "{:?}", right.meniscus());
+    let mut humid = hub(None);
+    humid.environment = Some(right);
+    let (wet, dry) = (
+        evaluate(&humid, &EvaluationOptions::default()),
+        evaluate(&hub(None), &EvaluationOptions::default()),
+    );
+    assert_eq!(wet.wear_rate.to_bits(), dry.wear_rate.to_bits());
+    assert_eq!(wet.pull_off_force, dry.pull_off_force);
+}
+
 #[test]
 fn the_load_slope_changes_sign_once_with_a_meniscus() {
     // capillary.rs proves P̄'/φ increasing for a law with J ≥ 0; check the sign of P̄'
