@@ -332,10 +332,13 @@ pub fn limit_state(event: &Event, ev: &Evaluation, scene: &Scene) -> Option<f64>
 /// A hash (FNV-1a, hexadecimal) of what determines the numbers.
 fn fingerprint(scene: &Scene, u: &Uncertainty, method: Method, samples: u64, seed: u64) -> String {
     let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+    // The build (a hash of the sources, build.rs) too: parts computed by two
+    // builds of one version may differ in their last digits and never merge.
     let text = format!(
-        "{scene:?}|{u:?}|{}|{samples}|{seed}|{}",
+        "{scene:?}|{u:?}|{}|{samples}|{seed}|{}|{}",
         method.as_str(),
-        env!("CARGO_PKG_VERSION")
+        env!("CARGO_PKG_VERSION"),
+        env!("WEAROPT_BUILD_ID")
     );
     for &b in text.as_bytes() {
         hash ^= u64::from(b);
@@ -761,6 +764,33 @@ pub enum PartError {
     /// No parts at all.
     #[error("no parts to merge")]
     NoParts,
+}
+
+/// What one shard of the study would hold, without evaluating it: the study's
+/// fingerprint, the units `shard.range(units)` and the values per unit (the
+/// points times the outputs). A rerun that finds a part with these, whole, may
+/// keep it ([`UncertaintyPart::is_complete_for`]).
+pub fn part_identity(
+    problem: &Problem,
+    origin: &str,
+    options: &UncertaintyOptions,
+    shard: Shard,
+) -> Result<(String, Range<u64>), AppError> {
+    let s = setup(problem, origin, options)?;
+    Ok((s.fingerprint(), shard.range(s.units())))
+}
+
+impl UncertaintyPart {
+    /// True when this part is the whole of `shard` of the study `fingerprint`
+    /// whose units are `range` ([`part_identity`]), written by this version: every
+    /// point present (a cut file fails to parse before this).
+    pub fn is_complete_for(&self, fingerprint: &str, shard: Shard, range: &Range<u64>) -> bool {
+        self.fingerprint == fingerprint
+            && self.shard == shard
+            && self.range == *range
+            && self.version == env!("CARGO_PKG_VERSION")
+            && self.points.len() as u64 == (range.end - range.start) * self.points_per_unit as u64
+    }
 }
 
 /// Evaluates one shard of the study: the units `shard.range(units)`. `source`

@@ -219,7 +219,7 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
 }
 
 /// True when `path` is a regular file (following symbolic links).
-fn is_regular_file(path: &Path) -> bool {
+pub(crate) fn is_regular_file(path: &Path) -> bool {
     std::fs::metadata(path).is_ok_and(|m| m.is_file())
 }
 

@@ -87,6 +87,31 @@ pub(crate) fn run(args: UncertaintyArgs) -> Result<ExitCode> {
             )));
         }
         let (problem, source) = load_with_text(&args.file)?;
+        // Resume, as a sweep does: a complete part of this very shard of this very
+        // study (fingerprint, shard, units, every point) at --out is kept. Only a
+        // regular file is read back (not a pipe or a device).
+        if let Some(path) = args
+            .out
+            .as_ref()
+            .filter(|p| super::sweep::is_regular_file(p))
+        {
+            let (fingerprint, range) = uq::part_identity(&problem, &origin, &options, shard)?;
+            let done = std::fs::read_to_string(path)
+                .ok()
+                .and_then(|text| report::uncertainty::parse_part(&text).ok())
+                .is_some_and(|part| part.is_complete_for(&fingerprint, shard, &range));
+            if done {
+                eprintln!(
+                    "{}: complete (units {}..{} of shard {}/{}): skipped",
+                    path.display(),
+                    range.start,
+                    range.end,
+                    shard.index,
+                    shard.count
+                );
+                return Ok(ExitCode::SUCCESS);
+            }
+        }
         let part = uq::uncertainty_part(&problem, &origin, &source, &options, shard, &bar)?;
         if let Some(b) = &bar.0 {
             b.finish_and_clear();

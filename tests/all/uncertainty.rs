@@ -396,6 +396,55 @@ fn three_parts(dir: &std::path::Path, method: &str, samples: &str) -> Vec<std::p
         .collect()
 }
 
+/// A rerun of a shard whose `--out` already holds that very part, whole, keeps it and
+/// says so on stderr (as a sweep's rerun does); another seed (another fingerprint) or a
+/// cut file is computed again.
+#[test]
+fn a_rerun_of_a_complete_shard_is_skipped() {
+    let dir = part_dir("resume");
+    let path = dir.join("part-1.json");
+    let run = |seed: &str, code: i32| {
+        let out = wearopt()
+            .args([
+                "uncertainty",
+                SCATTER,
+                "--method",
+                "sampling",
+                "--samples",
+                "64",
+            ])
+            .args([
+                "--seed",
+                seed,
+                "--shard",
+                "1/3",
+                "--out",
+                path.to_str().unwrap(),
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(code), "{out:?}");
+        String::from_utf8(out.stderr).unwrap()
+    };
+    assert!(!run("1", 0).contains("skipped"));
+    let first = std::fs::read(&path).unwrap();
+    // Mark the kept file: a skipped rerun leaves it as it is, byte for byte.
+    let marked = format!("{}\n \n", String::from_utf8(first.clone()).unwrap());
+    std::fs::write(&path, &marked).unwrap();
+    let err = run("1", 0);
+    assert!(err.contains("complete") && err.contains("skipped"), "{err}");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), marked);
+    // Another seed is another study: computed and written anew.
+    assert!(!run("2", 0).contains("skipped"));
+    assert_ne!(std::fs::read(&path).unwrap(), first);
+    // A cut part is not a part: computed again.
+    let whole = std::fs::read(&path).unwrap();
+    std::fs::write(&path, &whole[..whole.len() / 2]).unwrap();
+    assert!(!run("2", 0).contains("skipped"));
+    assert_eq!(std::fs::read(&path).unwrap(), whole);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// Merged shards (given out of order) are the unsharded run, byte for byte, in
 /// every format, for each method that shards; a Slurm job-array task writes the
 /// part `--shard` writes.
