@@ -51,3 +51,10 @@ pub(crate) fn slurm_shard() -> Result<Option<Shard>> {
     .map_err(|e| usage(e.to_string()))?;
     Ok(Some(shard))
 }
+
+/// True when `path` is a regular file (following symbolic links): the only kind of
+/// `--out` a rerun reads back to skip a finished shard (a pipe, a terminal or a
+/// device such as /dev/stdout is never read).
+pub(crate) fn is_regular_file(path: &std::path::Path) -> bool {
+    std::fs::metadata(path).is_ok_and(|m| m.is_file())
+}

@@ -139,7 +139,11 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
     // regular file is read back: a pipe, a terminal or a device such as
     // /dev/stdout or /dev/full is a fresh output (reading it would wait for input
     // that never comes, or read without end).
-    if let Some(path) = args.out.as_ref().filter(|p| is_regular_file(p)) {
+    if let Some(path) = args
+        .out
+        .as_ref()
+        .filter(|p| super::shard::is_regular_file(p))
+    {
         if let Ok(existing) = std::fs::read_to_string(path) {
             if let Ok(part) = out::parse_part(&existing) {
                 if part.format == format && part.head == head && part.covers(range.clone()) {
@@ -216,11 +220,6 @@ pub fn run(args: SweepArgs) -> Result<ExitCode> {
         write_map(plot, &plan.name, &points, direction)?;
     }
     Ok(ExitCode::SUCCESS)
-}
-
-/// True when `path` is a regular file (following symbolic links).
-pub(crate) fn is_regular_file(path: &Path) -> bool {
-    std::fs::metadata(path).is_ok_and(|m| m.is_file())
 }
 
 fn write_map(

@@ -93,7 +93,7 @@ pub(crate) fn run(args: UncertaintyArgs) -> Result<ExitCode> {
         if let Some(path) = args
             .out
             .as_ref()
-            .filter(|p| super::sweep::is_regular_file(p))
+            .filter(|p| super::shard::is_regular_file(p))
         {
             let (fingerprint, range) = uq::part_identity(&problem, &origin, &options, shard)?;
             let done = std::fs::read_to_string(path)
