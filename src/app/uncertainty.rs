@@ -9,7 +9,8 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::model::{
-    self, quantity::LN_CEIL, Evaluation, EvaluationOptions, Quantity, Scene, SceneParameter, Status,
+    self, quantity::LN_CEIL, Evaluation, EvaluationOptions, Quantity, Scene, SceneParameter,
+    SearchHints, Status,
 };
 use crate::problem::{Event, Problem, UncertainInput, Uncertainty};
 use crate::sweep::Shard;
@@ -247,13 +248,30 @@ impl Cause {
 /// The evaluation, with the pull-off search only where something read needs it
 /// (a root search of its own that the wear outputs do not need).
 fn evaluate(scene: &Scene, pull_off: bool) -> Evaluation {
-    model::evaluate(
+    evaluate_hinted(scene, pull_off, SearchHints::default())
+}
+
+/// [`evaluate`] with its separation and pull-off searches started from `hints`
+/// (a nearby point's answers): the same branch rules, so the same numbers to the
+/// searches' tolerance (5.6e-15 relative in wear rate on the shipped scatter hub),
+/// in fewer model evaluations.
+fn evaluate_hinted(scene: &Scene, pull_off: bool, hints: SearchHints) -> Evaluation {
+    model::evaluate_from(
         scene,
         &EvaluationOptions {
             pull_off,
             ..EvaluationOptions::default()
         },
+        hints,
     )
+}
+
+/// The searches' answers at `ev`, as hints for a point near it.
+fn hints_from(ev: &Evaluation) -> SearchHints {
+    SearchHints {
+        separation: ev.nondimensional_separation,
+        pull_off: ev.nondimensional_pull_off_separation,
+    }
 }
 
 /// Whether an event's limit state reads the pull-off force.
@@ -474,12 +492,27 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
     match s.method {
         Method::Sobol => {
             progress.begin((range.end - range.start) as usize);
+            // A sample's points after A are A with one coordinate changed (B
+            // aside): their searches start from A's answers, which halves the
+            // model evaluations (2.0 s against 4.1 s for 2048 samples of the
+            // shipped hub on one thread). Each sample is whole in one unit, so
+            // the numbers do not depend on threads or shards.
             let per_k: Vec<Vec<Point>> = range
                 .into_par_iter()
                 .map(|k| {
-                    let r = sobol::points(&s.model, k, s.seed)
+                    let points = sobol::points(&s.model, k, s.seed);
+                    let mut hints = SearchHints::default();
+                    let r = points
                         .iter()
-                        .map(|x| run(x))
+                        .enumerate()
+                        .map(|(j, x)| {
+                            let sc = scene_at(nominal, &u.inputs, x);
+                            let ev = evaluate_hinted(&sc, pull_off, hints);
+                            if j == 0 {
+                                hints = hints_from(&ev);
+                            }
+                            outputs_of(&ev, &sc, &u.outputs)
+                        })
                         .collect();
                     progress.advance();
                     r
@@ -489,18 +522,30 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
         }
         Method::Morris => {
             let settings = s.morris_settings();
-            let points: Vec<Vec<f64>> = range
-                .flat_map(|r| morris::points(&s.model, r as usize, &settings))
+            let trajectories: Vec<Vec<Vec<f64>>> = range
+                .map(|r| morris::points(&s.model, r as usize, &settings))
                 .collect();
-            progress.begin(points.len());
-            points
+            progress.begin(trajectories.iter().map(Vec::len).sum());
+            // Each point of a trajectory moves one input from the last: its
+            // searches start from the last point's answers (one trajectory, one
+            // unit: the numbers do not depend on threads or shards).
+            let per_trajectory: Vec<Vec<Point>> = trajectories
                 .par_iter()
-                .map(|x| {
-                    let r = run(x);
-                    progress.advance();
-                    r
+                .map(|points| {
+                    let mut hints = SearchHints::default();
+                    points
+                        .iter()
+                        .map(|x| {
+                            let sc = scene_at(nominal, &u.inputs, x);
+                            let ev = evaluate_hinted(&sc, pull_off, hints);
+                            hints = hints_from(&ev);
+                            progress.advance();
+                            outputs_of(&ev, &sc, &u.outputs)
+                        })
+                        .collect()
                 })
-                .collect()
+                .collect();
+            per_trajectory.into_iter().flatten().collect()
         }
         Method::Sampling => {
             progress.begin((range.end - range.start) as usize);

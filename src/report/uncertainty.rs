@@ -142,8 +142,13 @@ fn interval_text(e: &Estimate, d: Dimension) -> String {
     )
 }
 
+/// An index to four places; one within rounding of 0 (|v| < 1e-12, e.g. the
+/// last-bit noise of an input that does not act on the output) is 0.0000, not
+/// -0.0000. JSON keeps the value as estimated.
 fn index_text(v: f64) -> String {
-    if v.is_finite() {
+    if v.abs() < 1e-12 {
+        "0.0000".into()
+    } else if v.is_finite() {
         format!("{v:.4}")
     } else {
         "—".into()

@@ -199,8 +199,13 @@ fn shipped_scatter_sobol_indices() {
     assert!(wear.total[k].value > 0.5, "{:?}", wear.total[k]);
     let pull_off = &results[1];
     // The pull-off is a property of the surfaces: the load does not move it
-    // (Jansen's ST is a mean of squares of exact zeros).
-    assert_eq!(pull_off.total[load].value, 0.0);
+    // (Jansen's ST is a mean of squares of differences at rounding: the searches
+    // of a sample's points start from its point A's answers).
+    assert!(
+        pull_off.total[load].value.abs() <= 1e-25,
+        "{:?}",
+        pull_off.total[load]
+    );
     let v = wearopt::report::uncertainty::json_value(&doc);
     let row = &v["indices"][0];
     for key in [
