@@ -12,11 +12,11 @@ use crate::units::{format_quantity, Dimension};
 use super::quantity::{positive_quantity, OptionQuantity};
 use super::{AppError, OptionName};
 
+pub use super::scan_contact::{fulfil, scan_contact, statistical, ScanContact, Statistical};
 pub use crate::contact::adhesion::{
     Adhesion, AdhesiveSolution, PullOff, Resolution, RESOLVED_PIXELS, WELL_RESOLVED_PIXELS,
 };
 pub use crate::contact::{Outcome, DEFAULT_TOLERANCE};
-pub use crate::problem::scan_contact::{scan_contact, statistical, ScanContact, Statistical};
 
 /// The options of `wearopt contact` (SI values).
 #[derive(Debug, Clone, PartialEq)]

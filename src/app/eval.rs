@@ -64,10 +64,8 @@ pub fn eval(
     let load_curve = options
         .load_curve_points
         .map(|n| model::load_curve(&problem.scene, &evaluation, &evaluation_options, n));
-    // Measured at loading under contact_model = "bem_corrected"; solved here otherwise.
-    let scan_contact = problem.scan.as_ref().map(|scan| match &scan.exact {
-        Some(exact) => Ok(exact.clone()),
-        None => super::contact::scan_contact(scan, &problem.scene, evaluation.equivalent_modulus),
+    let scan_contact = problem.scan.as_ref().map(|scan| {
+        super::contact::scan_contact(scan, &problem.scene, evaluation.equivalent_modulus)
     });
     Ok(EvalDocument {
         scan_contact,

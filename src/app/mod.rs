@@ -33,10 +33,24 @@ pub mod sweep;
 pub mod uncertainty;
 
 mod error;
+mod scan_contact;
 
 pub use error::{AppError, OptionName, Vocabulary};
 
-pub use crate::problem::{load, parse, Problem, ProblemError};
+pub use crate::problem::{Problem, ProblemError};
+
+/// Reads and validates a problem file ([`crate::problem::load`]), then fulfils what
+/// it asks of the application layer ([`contact::fulfil`]: the exact contact on its
+/// scan under `contact_model = "bem_corrected"`). What every command loads.
+pub fn load(path: &std::path::Path) -> Result<Problem, ProblemError> {
+    contact::fulfil(crate::problem::load(path)?)
+}
+
+/// Parses and validates problem-file text ([`crate::problem::parse`]; `origin` names
+/// it in messages), then fulfils it as [`load`] does.
+pub fn parse(text: &str, origin: &str) -> Result<Problem, ProblemError> {
+    contact::fulfil(crate::problem::parse(text, origin)?)
+}
 
 use crate::optimize::Study;
 

@@ -1031,7 +1031,7 @@ pub fn merge(
         }
     }
     // The problem, read again from the part, must be the study's.
-    let problem = crate::problem::parse(&first.problem, &first.origin).map_err(|e| {
+    let problem = super::parse(&first.problem, &first.origin).map_err(|e| {
         fail(
             first_name,
             PartError::Problem {

@@ -50,7 +50,6 @@ mod locate;
 pub mod notes;
 pub(crate) mod raw;
 pub mod robust;
-pub mod scan_contact;
 mod study;
 mod topography;
 pub mod uncertainty;
@@ -68,7 +67,7 @@ pub use notes::{BodyKey, CatalogueProperty, InputNote};
 pub use robust::{ChanceConstraint, Robust};
 pub(crate) use study::DesignKeys;
 pub use study::{Dimensioned, Study};
-pub use topography::{ContactModel, ScanSource};
+pub use topography::{AreaCorrection, ContactModel, ScanSource};
 pub use uncertainty::{Event, UncertainInput, Uncertainty};
 
 use crate::model::wear_law::{Activation, ContactStress};
@@ -111,7 +110,9 @@ pub struct Problem {
 }
 
 /// Reads and validates a problem file. The file must be UTF-8; its path (as given) is
-/// the origin named in error messages.
+/// the origin named in error messages. Nothing is solved here: a scan's
+/// `contact_model = "bem_corrected"` stays a request (the scene's `real_area_scale`
+/// 1) until `app::load` fulfils it.
 pub fn load(path: &Path) -> Result<Problem, ProblemError> {
     let origin = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|io| ProblemError::Io {
@@ -974,7 +975,6 @@ impl Problem {
             environment,
         };
 
-        let (scene, scan) = r.bem_correction(&raw, scene, scan)?;
         let study = r.study(&raw, &scene)?;
         let uncertainty = raw
             .uncertainty

@@ -18,7 +18,7 @@ use serde::Serialize;
 use toml::Spanned;
 
 use super::raw::{RawQuantity, RawRoughness};
-use super::{Accept, ProblemError, Reader};
+use super::{Accept, Location, ProblemError, Reader};
 use crate::surface::read::{self, parse_height_unit, Format, Overrides};
 use crate::surface::{analyse, Levelling, Roughness, Settings};
 use crate::units::Dimension;
@@ -38,12 +38,52 @@ pub struct ScanSource {
     /// again as it was read).
     #[serde(skip)]
     pub overrides: Overrides,
-    /// How the scene takes its real area.
+    /// How the scene takes its real area: under `bem_corrected` a request the
+    /// application layer fulfils after loading (`app::load` measures the ratio and
+    /// fills [`ScanSource::correction`] and the scene's `real_area_scale`).
     pub contact_model: ContactModel,
-    /// The exact contact on the scan at the operating point, when the contact
-    /// model needed it at loading (`bem_corrected`).
+    /// The measured exact-to-statistical correction under `bem_corrected`, once the
+    /// application layer has measured it; `None` before and for `statistical`.
     #[serde(skip)]
-    pub exact: Option<super::scan_contact::ScanContact>,
+    pub correction: Option<AreaCorrection>,
+    /// Where `contact_model` was written (file and line) and its value as written: what
+    /// [`ScanSource::contact_model_error`] names.
+    #[serde(skip)]
+    contact_model_written: Option<(Location, String)>,
+}
+
+/// What `contact_model = "bem_corrected"` measured on the scan at the file's
+/// operating point (both sides without adhesion); the scene's `real_area_scale` is
+/// `1 / ratio`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AreaCorrection {
+    /// The nominal pressure W / A_n the scan was solved at (Pa).
+    pub pressure: f64,
+    /// The statistical model's real area over the exact one (finite, > 0).
+    pub ratio: f64,
+}
+
+impl ScanSource {
+    /// A refusal of the file's `roughness.contact_model` (at its line, with its value
+    /// as written) for `reason`: how the application layer words a request it cannot
+    /// fulfil.
+    pub fn contact_model_error(&self, reason: impl Into<String>) -> ProblemError {
+        let (at, value) = self.contact_model_written.clone().unwrap_or_else(|| {
+            (
+                Location {
+                    origin: self.path.clone(),
+                    line: None,
+                },
+                format!("{:?}", self.contact_model.as_str()),
+            )
+        });
+        ProblemError::InvalidValue {
+            at,
+            key: "roughness.contact_model".to_string(),
+            value,
+            reason: reason.into(),
+        }
+    }
 }
 
 /// The optional keys that only make sense with `topography`.
@@ -191,9 +231,16 @@ impl Reader<'_> {
             },
         };
         let p = roughness.parameters;
+        let contact_model_written = g.contact_model.as_ref().map(|m| {
+            (
+                self.at(Some(&m.span())),
+                super::written(self.text, &m.span()),
+            )
+        });
         let source = ScanSource {
             contact_model,
-            exact: None,
+            correction: None,
+            contact_model_written,
             topography: written,
             path: path.display().to_string(),
             format: Format::from_path(&path).unwrap_or(Format::Ascii),
@@ -206,47 +253,5 @@ impl Reader<'_> {
             p.summit_density,
             source,
         )))
-    }
-
-    /// Under `contact_model = "bem_corrected"`: the exact contact on the scan at the
-    /// scene's operating point, and the scene's real-area scale set to the
-    /// exact-to-statistical ratio (both without adhesion). A ratio that cannot be
-    /// measured is an error of the file, naming why.
-    pub(super) fn bem_correction(
-        &self,
-        raw: &super::raw::RawProblem,
-        mut scene: crate::model::Scene,
-        scan: Option<ScanSource>,
-    ) -> Result<(crate::model::Scene, Option<ScanSource>), ProblemError> {
-        let Some(mut scan) = scan else {
-            return Ok((scene, None));
-        };
-        if scan.contact_model != ContactModel::BemCorrected {
-            return Ok((scene, Some(scan)));
-        }
-        let span = raw
-            .roughness
-            .as_ref()
-            .and_then(|r| r.get_ref().contact_model.as_ref())
-            .map(|m| m.span())
-            .unwrap_or(0..0);
-        let modulus = crate::model::wear::equivalent_modulus(&scene);
-        let exact = super::scan_contact::scan_contact(&scan, &scene, modulus).map_err(|why| {
-            self.invalid(
-                "roughness.contact_model",
-                &span,
-                format!("\"bem_corrected\" needs the exact contact on the scan at the operating point, which cannot be had: {why}"),
-            )
-        })?;
-        let Some(ratio) = exact.area_ratio().filter(|r| r.is_finite() && *r > 0.0) else {
-            return Err(self.invalid(
-                "roughness.contact_model",
-                &span,
-                "\"bem_corrected\": the exact contact on the scan has no real area to compare with at the operating point",
-            ));
-        };
-        scene.real_area_scale = 1.0 / ratio;
-        scan.exact = Some(exact);
-        Ok((scene, Some(scan)))
     }
 }

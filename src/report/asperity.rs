@@ -233,18 +233,32 @@ pub fn plot_svg(doc: &AsperityDocument) -> String {
         );
     }
     if let Some(c) = &doc.curve {
+        // A Lennard-Jones curve without jumps is single-valued: no branch to name
+        // (its rows' `contact` says only that the contact radius is above zero,
+        // which it is on the whole curve at small μ, far out of contact too), one
+        // curve in one colour. JKR's and DMT's branches are their own.
+        let single_valued =
+            c.law == CurveLaw::LennardJones && c.jump_in.is_none() && c.jump_out.is_none();
         let mut named = [false; 3];
         for (branch, pts) in stretches(&c.path) {
             let pts: Vec<(f64, f64)> = pts.into_iter().filter(|p| within(p.0)).collect();
             if pts.is_empty() {
                 continue;
             }
-            let k = branch as usize;
+            let k = if single_valued { 0 } else { branch as usize };
             let name = if named[k] {
                 String::new()
+            } else if single_valued {
+                named[k] = true;
+                "single-valued curve (no jumps)".to_string()
             } else {
                 named[k] = true;
                 format!("{} branch", branch.as_str())
+            };
+            let branch = if single_valued {
+                Branch::Approach
+            } else {
+                branch
             };
             plot = plot.with_series(Series::new(name, pts).with_marker(Marker::None).with_color(
                 match branch {

@@ -793,7 +793,9 @@ pub fn html(doc: &ContactDocument) -> String {
     } else {
         String::new()
     };
-    let mut images = vec![format!(
+    // The map on its own row; then one row per pressure, the contact without
+    // adhesion and with it side by side (the same pressure, the same scale).
+    let mut rows = vec![format!(
         "<figure style=\"width:{side}px;margin:0\">{}<figcaption>levelled map, black low to white high, {} to {}{averaged}</figcaption></figure>",
         image_tag(&map_image(doc), "height map", side),
         length(doc.heights.iter().copied().fold(f64::INFINITY, f64::min)),
@@ -807,18 +809,19 @@ pub fn html(doc: &ContactDocument) -> String {
         let cap = doc.options.hardness.unwrap_or(f64::INFINITY);
         let touching: Vec<f64> = s.pressures.iter().map(|&p| f64::from(p > 0.0)).collect();
         let saturated: Vec<f64> = s.pressures.iter().map(|&p| f64::from(p >= cap)).collect();
-        images.push(format!(
-            "<figure style=\"width:{side}px;margin:0\">{}<figcaption>at {}: {} in contact (blue{}), {} patches</figcaption></figure>",
+        let mut pair = vec![format!(
+            "<figure style=\"width:{side}px;margin:0\">{}<figcaption>{}at {}: {} in contact (blue{}), {} patches</figcaption></figure>",
             image_tag(&contact_image(doc, &touching, &saturated), "contact", side),
+            if pt.adhesive.is_some() { "without adhesion " } else { "" },
             pressure(s.pressure),
             percent(s.real_area_fraction),
             if s.plastic_area_fraction > 0.0 { "; red at H" } else { "" },
             s.contact_patches
-        ));
+        )];
         if let Some(a) = pt.adhesive.as_ref().filter(|a| !a.gaps.is_empty()) {
             let touching: Vec<f64> = a.gaps.iter().map(|&g| f64::from(g <= 0.0)).collect();
             let none = vec![0.0; touching.len()];
-            images.push(format!(
+            pair.push(format!(
                 "<figure style=\"width:{side}px;margin:0\">{}<figcaption>with adhesion at {}: {} in contact, {} patches</figcaption></figure>",
                 image_tag(&contact_image(doc, &touching, &none), "adhesive contact", side),
                 pressure(a.pressure),
@@ -826,11 +829,24 @@ pub fn html(doc: &ContactDocument) -> String {
                 a.contact_patches
             ));
         }
+        rows.push(pair.join("\n"));
     }
-    p.raw(&format!(
-        "<div style=\"display:flex;flex-wrap:wrap;gap:1em\">\n{}\n</div>",
-        images.join("\n")
-    ));
+    if doc.adhesion.is_some() {
+        p.raw(
+            &rows
+                .iter()
+                .map(|r| {
+                    format!("<div style=\"display:flex;flex-wrap:wrap;gap:1em;margin-bottom:1em\">\n{r}\n</div>")
+                })
+                .collect::<Vec<_>>()
+                .join("\n"),
+        );
+    } else {
+        p.raw(&format!(
+            "<div style=\"display:flex;flex-wrap:wrap;gap:1em\">\n{}\n</div>",
+            rows.join("\n")
+        ));
+    }
     p.finish()
 }
 

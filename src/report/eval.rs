@@ -526,8 +526,47 @@ pub fn html(r: &EvalReport, curve: Option<&crate::model::LoadCurve>) -> String {
             .collect::<Vec<_>>(),
         "warn",
     );
-    p.heading("Scene");
     let q = |x: f64, u: &str| si(x, u, 4);
+    // The answer first, the inputs after: what a designer opens the page for.
+    p.heading("The answer");
+    let verdict = |v: crate::model::StictionVerdict| match v {
+        crate::model::StictionVerdict::Sticks => "sticks",
+        crate::model::StictionVerdict::Releases => "releases",
+    };
+    let mut answer = vec![
+        vec!["wear rate V/L".into(), q(ev.wear_rate, "m³/m")],
+        vec![
+            "pull-off force".into(),
+            ev.pull_off_force.map_or("—".into(), |x| q(x, "N")),
+        ],
+        vec![
+            "stiction".into(),
+            match &ev.stiction {
+                Some(st) => format!(
+                    "{}: pull-off {} against restoring force {}, margin {} ({} law)",
+                    verdict(st.verdict),
+                    q(st.pull_off_force, "N"),
+                    q(st.restoring_force, "N"),
+                    sig_exp(st.margin, 3),
+                    ev.adhesion_model.label()
+                ),
+                None => "not judged: the problem gives no restoring force".into(),
+            },
+        ],
+    ];
+    if let Some((law, st)) = other_stiction(ev) {
+        answer.push(vec![
+            format!("stiction under the {} law instead", law.label()),
+            format!(
+                "{}: pull-off {}, margin {}",
+                verdict(st.verdict),
+                q(st.pull_off_force, "N"),
+                sig_exp(st.margin, 3)
+            ),
+        ]);
+    }
+    p.table(&["result", "value"], &answer, &[1]);
+    p.heading("Scene");
     let rows = vec![
         vec![
             "Young's modulus E1 (body a)".into(),

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Map, Value};
 
-use super::svg::{Axis, LinePlot, Marker, Series};
+use super::svg::{Axis, LinePlot, Marker, Scale, Series};
 use super::{number, si, sig, sig_exp};
 use crate::app::pareto::{ParetoDocument, ParetoOptions, ParetoPlan};
 use crate::optimize::pareto::{unit_of, Front, FrontPoint, FrontStatus, PULL_OFF_FLOOR};
@@ -577,7 +577,9 @@ fn turn_sentence(front: &Front, t: &FrontPoint) -> String {
 // ---------------------------------------------------------------- SVG
 
 /// The plot: the whole curve, the front, dominated points, the knee and the
-/// baseline; log axes where the data span a decade or more.
+/// baseline, the knee ringed and labelled; an axis is log where the front
+/// spans a decade or more along it, linear otherwise, its range fitted to all that
+/// is drawn (`tests/all/svg_bounds.rs` holds the spread).
 pub fn svg(name: &str, front: &Front) -> String {
     let m = front.measure;
     // Underflowed pull-off forces (at most the floor) are drawn at the floor.
@@ -630,13 +632,20 @@ pub fn svg(name: &str, front: &Front) -> String {
         .map(|c| c.2)
         .chain(baseline.iter().map(|b| b.1))
         .collect();
+    // A log axis only where the front itself spans a decade or more (the front is
+    // what the plot is for: a log axis over the dominated points' decades would
+    // squeeze it into a corner); the range then fits everything drawn.
     let spans_decades = |v: &[f64]| {
-        let pos: Vec<f64> = v.iter().copied().filter(|x| *x > 0.0).collect();
-        let lo = pos.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = pos.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        // Every front plot uses log axes for positive quantities, so that plots of
-        // different studies compare at a glance.
-        pos.len() == v.len() && hi >= lo
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        lo > 0.0 && hi >= 10.0 * lo && v.iter().all(|x| *x > 0.0)
+    };
+    let front_xs: Vec<f64> = on_front.iter().chain(&knee).map(|p| p.0).collect();
+    let front_ys: Vec<f64> = on_front.iter().chain(&knee).map(|p| p.1).collect();
+    let (log_x, log_y) = if front_xs.is_empty() {
+        (spans_decades(&xs), spans_decades(&ys))
+    } else {
+        (spans_decades(&front_xs), spans_decades(&front_ys))
     };
     let axis = |label: String, unit: &str, log: bool| {
         let a = if log {
@@ -684,10 +693,32 @@ pub fn svg(name: &str, front: &Front) -> String {
         scaled(knee),
         scaled(baseline),
     );
+    // A linear axis spans what is drawn and 4 % of that on each side (not the next
+    // round tick, which may double it), and stays at or above zero for a quantity
+    // that is.
+    let fitted = |a: Axis, v: &[f64], factor: f64| {
+        let v: Vec<f64> = v
+            .iter()
+            .map(|x| x / factor)
+            .filter(|x| x.is_finite())
+            .collect();
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        if a.scale != Scale::Linear || hi <= lo {
+            return a;
+        }
+        let pad = 0.04 * (hi - lo);
+        let low = if lo >= 0.0 {
+            (lo - pad).max(0.0)
+        } else {
+            lo - pad
+        };
+        a.with_range(low, hi + pad)
+    };
     let mut plot = LinePlot::new(
         title,
-        axis(xlabel, &xu, spans_decades(&xs)),
-        axis(ylabel, &yu, spans_decades(&ys)),
+        fitted(axis(xlabel, &xu, log_x), &xs, xf),
+        fitted(axis(ylabel, &yu, log_y), &ys, yf),
     );
     plot = plot.with_series(
         Series::new(
@@ -726,13 +757,25 @@ pub fn svg(name: &str, front: &Front) -> String {
                 .with_color("#CC79A7"),
         );
     }
-    if !knee.is_empty() {
-        plot = plot.with_series(
-            Series::new("knee", knee)
-                .without_line()
-                .with_marker(Marker::Diamond)
-                .with_color("#009E73"),
-        );
+    if let Some(&(kx, ky)) = knee.first() {
+        // Ringed and labelled with its values: a marker alone hides under the
+        // front's dots.
+        plot = plot
+            .with_series(
+                Series::new("knee", knee)
+                    .without_line()
+                    .with_marker(Marker::Diamond)
+                    .with_color("#009E73"),
+            )
+            .with_label(
+                (kx, ky),
+                format!(
+                    "knee: {}, {}",
+                    format!("{} {xu}", sig(kx, 4)).trim_end(),
+                    format!("{} {yu}", sig(ky, 4)).trim_end()
+                ),
+                "#007A5A",
+            );
     }
     if !baseline.is_empty() {
         // An infeasible baseline breaks a constraint: it is no rival of the front,
@@ -871,7 +914,13 @@ pub fn html(
         header.push("wear rate");
     }
     header.push("meets the constraints");
-    header.extend(front.names.iter().map(|n| n.as_str()));
+    // Spaces, not underscores, so that a header wraps and the table fits the page.
+    let design_headers: Vec<String> = front
+        .names
+        .iter()
+        .map(|n| n.as_str().replace('_', " "))
+        .collect();
+    header.extend(design_headers.iter().map(String::as_str));
 
     p.heading("End points, knee and baseline");
     let mut rows: Vec<Vec<String>> = Vec::new();
@@ -944,8 +993,12 @@ pub fn html(
     }
     header.push("status".into());
     header.push("front".into());
-    header.extend(front.names.iter().map(|n| n.to_string()));
-    header.extend(constraints.iter().map(|c| c.quantity.to_string()));
+    header.extend(design_headers.iter().cloned());
+    header.extend(
+        constraints
+            .iter()
+            .map(|c| format!("{} (constraint)", c.quantity.to_string().replace('_', " "))),
+    );
     let status_col = if show_wear { 4 } else { 3 };
     let rows: Vec<Vec<String>> =
         front

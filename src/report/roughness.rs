@@ -460,12 +460,11 @@ pub(crate) fn bem_corrected_words(scan: &crate::problem::ScanSource) -> Option<S
     if scan.contact_model != crate::problem::ContactModel::BemCorrected {
         return None;
     }
-    let exact = scan.exact.as_ref()?;
-    let ratio = exact.area_ratio()?;
+    let measured = scan.correction?;
     Some(format!(
         "contact model: bem_corrected — the statistical real area, and so the wear and friction, × {} (the exact-to-statistical ratio of real areas on the scan at the operating point {}, both without adhesion; held fixed as a study moves the design)",
-        sig(1.0 / ratio, 4),
-        si(exact.pressure, "Pa", 3)
+        sig(1.0 / measured.ratio, 4),
+        si(measured.pressure, "Pa", 3)
     ))
 }
 

@@ -183,6 +183,18 @@ pub const PALETTE: [&str; 7] = [
     "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000",
 ];
 
+/// Words beside one point of a plot: the point is ringed and the text set on a
+/// white halo beside it, on the side with room, never outside the plot's frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    /// The point, in the axes' units.
+    pub at: (f64, f64),
+    /// The words.
+    pub text: String,
+    /// The ring's and the text's colour.
+    pub color: String,
+}
+
 /// A plot: title, two axes, series. Render with [`LinePlot::to_svg`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct LinePlot {
@@ -194,6 +206,9 @@ pub struct LinePlot {
     pub y: Axis,
     /// The series, in legend order.
     pub series: Vec<Series>,
+    /// Words written beside points of the plot (a knee, a jump), drawn over the
+    /// series and kept inside the frame.
+    pub labels: Vec<Label>,
     /// Total width in px.
     pub width: f64,
     /// Total height in px.
@@ -476,6 +491,7 @@ impl LinePlot {
             x,
             y,
             series: Vec::new(),
+            labels: Vec::new(),
             width: 760.0,
             height: 480.0,
         }
@@ -484,6 +500,21 @@ impl LinePlot {
     /// Adds a series.
     pub fn with_series(mut self, series: Series) -> Self {
         self.series.push(series);
+        self
+    }
+
+    /// Adds a label beside the point `at` (in the axes' units).
+    pub fn with_label(
+        mut self,
+        at: (f64, f64),
+        text: impl Into<String>,
+        color: impl Into<String>,
+    ) -> Self {
+        self.labels.push(Label {
+            at,
+            text: text.into(),
+            color: color.into(),
+        });
         self
     }
 
@@ -573,12 +604,22 @@ impl LinePlot {
                 );
             }
         }
+        // Centred under the plot; a title too long for the width is set smaller.
+        let x_title = self.x.title();
+        let centre = (left + right) / 2.0;
+        let room = 2.0 * (centre.min(w - centre) - 4.0);
+        let wide = TEXT_EM * 14.0 * x_title.chars().count() as f64;
+        let x_size = if wide <= room {
+            "14".to_string()
+        } else {
+            format!("{:.1}", 14.0 * room / wide)
+        };
         let _ = writeln!(
             o,
-            "<text class=\"x-label\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"14\">{}</text>\n</g>",
-            (left + right) / 2.0,
+            "<text class=\"x-label\" x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"middle\" font-size=\"{x_size}\">{}</text>\n</g>",
+            centre,
             h - 16.0,
-            escape(&self.x.title())
+            escape(&x_title)
         );
         let _ = writeln!(o, "<g class=\"y-axis\">");
         for t in &yticks {
@@ -696,6 +737,40 @@ impl LinePlot {
         }
         if !self.series.is_empty() {
             let _ = writeln!(o, "<g class=\"legend\">\n{legend}</g>");
+        }
+        // Labels: a ring round the point, the text beside it on a white halo, to
+        // the right where it fits, else to the left; above the point unless too
+        // near the top.
+        for l in &self.labels {
+            let (x, y) = l.at;
+            if !(self.x.drawable(x) && self.y.drawable(y)) {
+                continue;
+            }
+            let (cx, cy) = (px(self.x.coord(x)), py(self.y.coord(y)));
+            if !(left..=right).contains(&cx) || !(top..=bottom).contains(&cy) {
+                continue;
+            }
+            let color = escape(&l.color);
+            let size = 12.0;
+            let width = TEXT_EM * size * l.text.chars().count() as f64;
+            let (tx, anchor) = if cx + 10.0 + width <= right - 4.0 {
+                (cx + 10.0, "start")
+            } else if cx - 10.0 - width >= left + 4.0 {
+                (cx - 10.0, "end")
+            } else {
+                // Too long for either side: start at the frame's left edge.
+                (left + 4.0, "start")
+            };
+            let ty = if cy - 10.0 - size >= top + 2.0 {
+                cy - 10.0
+            } else {
+                cy + 10.0 + size
+            };
+            let _ = writeln!(
+                o,
+                "<g class=\"label\">\n<circle cx=\"{cx:.2}\" cy=\"{cy:.2}\" r=\"7\" fill=\"none\" stroke=\"{color}\" stroke-width=\"2\"/>\n<text x=\"{tx:.2}\" y=\"{ty:.2}\" text-anchor=\"{anchor}\" font-size=\"{size}\" fill=\"{color}\" stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">{}</text>\n</g>",
+                escape(&l.text)
+            );
         }
         let _ = writeln!(o, "</svg>");
         o

@@ -746,9 +746,16 @@ pub fn map_svg(
     let count = |want: bool| points.iter().filter(|p| p.2 == want).count();
     let mut x_label = "pull-off force (N)".to_string();
     if clamped {
+        // How many: half a sweep's designs may sit there, one on another.
+        let below = points
+            .iter()
+            .filter_map(|p| p.1)
+            .filter(|l| l.is_finite() && *l < floor)
+            .count();
         let _ = write!(
             x_label,
-            "; below 1e{} N drawn at the left edge",
+            "; {below} of {} below 1e{} N at the left edge",
+            points.len(),
             floor.round()
         );
     }

@@ -204,9 +204,9 @@ fn pareto_page() {
             "front",
             "hardness",
             "sigma",
-            "asperity_radius",
-            "real_area_fraction",
-            "pull_off_force"
+            "asperity radius",
+            "real area fraction (constraint)",
+            "pull off force (constraint)"
         ]
     );
     let points = table_rows(&html, "point");

@@ -255,3 +255,164 @@ fn shipped_plots_fit() {
         assert_eq!(n, plots, "{args:?}");
     }
 }
+
+/// The SVG elements of class `class` (their opening tags), in order.
+fn tags_of<'a>(svg: &'a str, open: &str) -> Vec<&'a str> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find(open) {
+        let end = rest[i..].find('>').unwrap() + i;
+        out.push(&rest[i..end]);
+        rest = &rest[end..];
+    }
+    out
+}
+
+/// The plot frame (x, y, width, height) of a line plot.
+fn frame(svg: &str) -> (f64, f64, f64, f64) {
+    let a = attrs(tags_of(svg, "<rect class=\"frame\"")[0]);
+    (
+        num(&a, "x"),
+        num(&a, "y"),
+        num(&a, "width"),
+        num(&a, "height"),
+    )
+}
+
+/// The centres of the circle markers of the series named `name`.
+fn circles_of(svg: &str, name: &str) -> Vec<(f64, f64)> {
+    let start = svg
+        .find(&format!("<g class=\"markers\" data-name=\"{name}\">"))
+        .unwrap_or_else(|| panic!("no markers of {name:?}"));
+    let group = &svg[start..start + svg[start..].find("</g>").unwrap()];
+    tags_of(group, "<circle ")
+        .into_iter()
+        .map(|t| {
+            let a = attrs(t);
+            (num(&a, "cx"), num(&a, "cy"))
+        })
+        .collect()
+}
+
+/// A label beside a point in a corner of the plot stays inside the view box and
+/// the frame, whichever corner.
+#[test]
+fn labels_stay_inside_the_frame() {
+    for at in [(0.0, 0.0), (10.0, 10.0), (0.0, 10.0), (10.0, 0.0)] {
+        let svg = LinePlot::new("t", Axis::linear("x"), Axis::linear("y"))
+            .with_series(Series::new("s", vec![(0.0, 0.0), (10.0, 10.0)]))
+            .with_label(at, "knee: 9.114 µN, 47.02 µm³/m (a long label)", "#007A5A")
+            .to_svg();
+        check(&svg);
+        let (x, y, w, h) = frame(&svg);
+        let label = &svg[svg.find("<g class=\"label\">").unwrap()..];
+        let a = attrs(tags_of(label, "<text ")[0]);
+        let (tx, ty) = (num(&a, "x"), num(&a, "y"));
+        assert!(
+            tx >= x && tx <= x + w && ty >= y && ty <= y + h,
+            "{at:?}: {tx} {ty}"
+        );
+    }
+}
+
+/// The latch study's front (issue 56 item 4): its points spread over at least half
+/// of each axis (they sat in the rightmost 5 % of a four-decade axis), the knee is
+/// ringed and labelled, every text inside the view box; the page's tables use
+/// words that wrap (no underscores in their headers).
+#[test]
+fn the_latch_front_fills_its_axes() {
+    let out = Command::cargo_bin("wearopt")
+        .unwrap()
+        .args(["pareto", "problems/latch-pareto.toml", "--format", "html"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let html = String::from_utf8(out.stdout).unwrap();
+    let svg = &html[html.find("<svg ").unwrap()..html.find("</svg>").unwrap() + 6];
+    check(svg);
+    let (_, _, w, h) = frame(svg);
+    let front = circles_of(svg, "Pareto front");
+    assert!(front.len() >= 10, "{}", front.len());
+    let spread = |v: Vec<f64>| {
+        v.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+            - v.iter().copied().fold(f64::INFINITY, f64::min)
+    };
+    let across = spread(front.iter().map(|p| p.0).collect()) / w;
+    let up = spread(front.iter().map(|p| p.1).collect()) / h;
+    assert!(
+        across >= 0.5 && up >= 0.5,
+        "the front spans {across:.2} × {up:.2} of the axes"
+    );
+    assert!(
+        svg.contains("<g class=\"label\">") && svg.contains(">knee: "),
+        "{svg}"
+    );
+    for th in html.split("<th>").skip(1) {
+        let head = &th[..th.find("</th>").unwrap()];
+        assert!(!head.contains('_'), "{head}");
+    }
+}
+
+/// The sweep map (issue 56 item 4): every text inside the view box, and the axis
+/// says how many designs it draws at its left edge.
+#[test]
+fn the_sweep_map_fits_and_counts_its_edge() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    let map = dir.join("bounds-sweep-map.svg");
+    let rows = dir.join("bounds-sweep-rows.csv");
+    let _ = std::fs::remove_file(&rows);
+    Command::cargo_bin("wearopt")
+        .unwrap()
+        .args([
+            "sweep",
+            "problems/micro-gear-study.toml",
+            "--samples",
+            "64",
+            "--plot",
+        ])
+        .arg(&map)
+        .arg("--out")
+        .arg(&rows)
+        .assert()
+        .success();
+    let svg = std::fs::read_to_string(&map).unwrap();
+    check(&svg);
+    let label = &svg[svg.find("class=\"x-label\"").unwrap()..];
+    let label = &label[label.find('>').unwrap() + 1..label.find("</text>").unwrap()];
+    assert!(
+        !label.contains("left edge") || label.contains(" of 64 below"),
+        "{label}"
+    );
+}
+
+/// A Lennard-Jones curve without jumps (μ = 0.05, issue 56 item 9) is one
+/// single-valued curve on the plot, not a "contact branch" far out of contact.
+/// Shown on the DMT curve relabelled as a jump-free Lennard-Jones one (what the
+/// plot reads is the law and the jumps; the slow solve is not needed).
+#[test]
+fn a_curve_without_jumps_is_not_called_a_contact_branch() {
+    use wearopt::app::asperity::{asperity, AsperityOptions};
+    use wearopt::model::asperity_curve::CurveLaw;
+    let mut doc = asperity(&AsperityOptions {
+        tabor: 0.05,
+        from: -2.0,
+        to: 1.0,
+        points: 31,
+        law: CurveLaw::Dmt,
+    })
+    .unwrap();
+    let dmt = wearopt::report::asperity::plot_svg(&doc);
+    assert!(dmt.contains("data-name=\"contact branch\""), "{dmt}");
+    let curve = doc.curve.as_mut().unwrap();
+    assert!(curve.jump_in.is_none() && curve.jump_out.is_none());
+    curve.law = CurveLaw::LennardJones;
+    doc.options.law = CurveLaw::LennardJones;
+    let svg = wearopt::report::asperity::plot_svg(&doc);
+    check(&svg);
+    assert!(!svg.contains("branch\""), "{svg}");
+    assert_eq!(
+        svg.matches("data-name=\"single-valued curve (no jumps)\"")
+            .count(),
+        2
+    );
+}

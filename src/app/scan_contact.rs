@@ -1,7 +1,8 @@
 //! The exact contact on a scene's own scan at its operating point, and the
 //! statistical model on the same terms: what `wearopt eval` reports for a
 //! scan-based scene and what `[roughness] contact_model = "bem_corrected"` scales
-//! the statistical real area by.
+//! the statistical real area by. The problem file keeps the request; [`fulfil`]
+//! (run by [`super::load`] and [`super::parse`]) solves the scan and sets the scale.
 
 use std::path::Path;
 
@@ -10,7 +11,7 @@ use crate::model::{evaluate, AdhesionModel, EvaluationOptions, Scene, Status, We
 use crate::surface::analysed_map;
 use crate::surface::read;
 
-use super::ScanSource;
+use crate::problem::{AreaCorrection, ContactModel, Problem, ProblemError, ScanSource};
 
 /// The statistical model on the same map at the same mean pressure: McCool's σ,
 /// R and N of the levelled map, no adhesion, H as given.
@@ -168,4 +169,38 @@ pub fn scan_contact(scan: &ScanSource, scene: &Scene, modulus: f64) -> Result<Sc
         solution,
         statistical,
     })
+}
+
+/// Fulfils what a loaded problem asks of the contact solver: under
+/// `contact_model = "bem_corrected"`, the exact contact on the scan at the scene's
+/// operating point ([`scan_contact`]), and the scene's real-area scale set to the
+/// exact-to-statistical ratio of real areas (both without adhesion; held fixed as a
+/// study moves the design). Other problems pass unchanged. A ratio that cannot be
+/// measured is an error of the file's `roughness.contact_model`, naming why
+/// (`tests/all/contact.rs` holds both).
+pub fn fulfil(mut problem: Problem) -> Result<Problem, ProblemError> {
+    let Some(scan) = problem
+        .scan
+        .as_mut()
+        .filter(|s| s.contact_model == ContactModel::BemCorrected)
+    else {
+        return Ok(problem);
+    };
+    let modulus = crate::model::wear::equivalent_modulus(&problem.scene);
+    let exact = scan_contact(scan, &problem.scene, modulus).map_err(|why| {
+        scan.contact_model_error(format!(
+            "\"bem_corrected\" needs the exact contact on the scan at the operating point, which cannot be had: {why}"
+        ))
+    })?;
+    let Some(ratio) = exact.area_ratio().filter(|r| r.is_finite() && *r > 0.0) else {
+        return Err(scan.contact_model_error(
+            "\"bem_corrected\": the exact contact on the scan has no real area to compare with at the operating point",
+        ));
+    };
+    problem.scene.real_area_scale = 1.0 / ratio;
+    scan.correction = Some(AreaCorrection {
+        pressure: exact.pressure,
+        ratio,
+    });
+    Ok(problem)
 }
