@@ -95,6 +95,35 @@ def test_optimize_equals_cli_json(path):
     assert without_timing(got) == without_timing(expected)
 
 
+def test_optimize_outside_its_laws_regime_says_so_like_the_cli():
+    # The hub's study under the paper's JKR law ends at φ0 = 0.0161, outside JKR's
+    # regime (φ0 ≥ 3): `law_regime` names the law that holds and the re-run, and
+    # Python's dict equals the command line's JSON (tests/all/law_regime.rs holds
+    # the numbers).
+    jkr = "tests/data/micro-gear-study-jkr.toml"
+    expected = json.loads(cli("optimize", jkr, "--format", "json").stdout)
+    got = wearopt.optimize(jkr)
+    assert without_timing(got) == without_timing(expected)
+    assert got["status"] == "optimal"
+    assert got["law_regime"]["law"] == "jkr"
+    assert got["law_regime"]["law_that_holds"] == "lennard_jones"
+    assert got["law_regime"]["tabor_parameter"] < 0.3
+    assert 'adhesion_model = "lennard_jones"' in got["law_regime"]["rerun"]
+    # The shipped study holds its law at its optimum.
+    assert "law_regime" not in wearopt.optimize("problems/micro-gear-study.toml")
+
+
+def test_dir_is_the_public_api():
+    # No helper import (json, numpy as np, os, typing's Any, Dict, …) leaks into
+    # dir(wearopt): every name without a leading underscore is public.
+    public = set(wearopt.__all__) | {"Problem"}
+    leaked = [n for n in dir(wearopt) if not n.startswith("_") and n not in public]
+    assert leaked == []
+    assert set(wearopt.__all__) <= set(dir(wearopt))
+    for name in ("Any", "Dict", "json", "np", "os", "numbers", "annotations"):
+        assert not hasattr(wearopt, name), name
+
+
 FRONTS = [p for p in PROBLEMS if has_section(p, "pareto")]
 
 

@@ -67,6 +67,50 @@ fn baseline_violations(o: &Optimum) -> Vec<BaselineViolation> {
     out
 }
 
+/// The study's asperity law used, at the optimum, outside the Tabor parameters
+/// φ0 where it is exact (docs/model.md §2 and §11: JKR for φ0 ≥ 3, DMT for φ0 ≤ 0.3;
+/// the Lennard-Jones law holds at every φ0). The optimum is still the optimum of the
+/// model the file states (the status stays, and so does exit code 0), but its
+/// adhesion numbers (the pull-off above all) may be far from the truth: the reports
+/// say so on the status line, with the edit that re-runs the study under the law
+/// that holds. Held by `tests/all/law_regime.rs`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LawOutsideRegime {
+    /// The study's law.
+    pub law: model::AdhesionModel,
+    /// φ0 at the optimum.
+    pub tabor_parameter: f64,
+    /// The φ0 over which `law` is exact (closed ends; the upper may be ∞).
+    pub valid_tabor: (f64, f64),
+    /// The law that holds at every φ0 (the Lennard-Jones sphere).
+    pub law_that_holds: model::AdhesionModel,
+    /// The problem file (as given), for the command that re-runs it.
+    pub origin: String,
+}
+
+/// The optimum's law outside its regime, if it is: read from the evaluation's
+/// own regime warning (the one "Warnings at the optimum" words), so the two never
+/// disagree.
+pub fn law_outside_regime(o: &Optimum, origin: &str) -> Option<LawOutsideRegime> {
+    use crate::model::Warning;
+    let tabor_parameter = o.evaluation.warnings.iter().find_map(|w| match w {
+        Warning::OutsideJkrRegime { tabor_parameter }
+        | Warning::OutsideDmtRegime { tabor_parameter } => Some(*tabor_parameter),
+        _ => None,
+    })?;
+    let law = o.scene.adhesion_model;
+    let law_that_holds = model::AdhesionModel::ALL
+        .into_iter()
+        .find(|m| m.law().general())?;
+    Some(LawOutsideRegime {
+        law,
+        tabor_parameter,
+        valid_tabor: law.valid_tabor(),
+        law_that_holds,
+        origin: origin.to_string(),
+    })
+}
+
 /// The options of `wearopt optimize`.
 #[derive(Default)]
 pub struct OptimizeOptions<'a> {
@@ -94,6 +138,8 @@ pub enum OptimizeDocument {
         /// A robust study's optimum (a statistic objective or chance
         /// constraints), beside the nominal `optimum`.
         robust: Option<Box<RobustOutcome>>,
+        /// The law used outside its regime at the optimum, if it is.
+        law_regime: Option<LawOutsideRegime>,
     },
     /// One study per material, ranked.
     Ranking {
@@ -160,6 +206,7 @@ pub fn optimize(
         });
         return Ok(OptimizeDocument::Optimum {
             name: problem.name.clone(),
+            law_regime: law_outside_regime(&optimum, origin),
             baseline_violations: baseline_violations(&optimum),
             optimum: Box::new(optimum),
             load_curve,

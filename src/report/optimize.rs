@@ -5,7 +5,9 @@ use serde_json::{json, Map, Value};
 
 use super::format::FormatError;
 use super::{si, sig, sig_exp};
-use crate::app::optimize::{BaselineViolation, OptimizeDocument, OptimizeOptions};
+use crate::app::optimize::{
+    BaselineViolation, LawOutsideRegime, OptimizeDocument, OptimizeOptions,
+};
 use crate::optimize::{ConstraintQuantity, Objective, SceneParameter, Side};
 use crate::optimize::{OptimizationStatus, Optimum};
 use crate::units::format_quantity;
@@ -36,11 +38,12 @@ pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, F
                 optimum,
                 baseline_violations,
                 robust,
+                law_regime,
                 ..
             },
             super::Format::Text,
         ) => {
-            let nominal = text(name, optimum, baseline_violations);
+            let nominal = text(name, optimum, baseline_violations, law_regime.as_ref());
             Ok(match robust {
                 Some(r) => super::robust::text(name, r, optimum) + &nominal,
                 None => nominal,
@@ -56,6 +59,7 @@ pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, F
                 baseline_violations,
                 load_curve,
                 robust,
+                law_regime,
             },
             super::Format::Html,
         ) => Ok(html(
@@ -64,6 +68,7 @@ pub fn render(doc: &OptimizeDocument, format: super::Format) -> Result<String, F
             baseline_violations,
             load_curve.as_ref(),
             robust.as_deref(),
+            law_regime.as_ref(),
         )),
         (OptimizeDocument::Ranking { name, ranking }, super::Format::Text) => {
             Ok(super::materials::text(name, ranking))
@@ -90,9 +95,10 @@ pub fn json_document(doc: &OptimizeDocument) -> Value {
             optimum,
             baseline_violations,
             robust,
+            law_regime,
             ..
         } => {
-            let mut v = json_value(name, optimum, baseline_violations);
+            let mut v = json_value(name, optimum, baseline_violations, law_regime.as_ref());
             if let (Some(r), Value::Object(obj)) = (robust, &mut v) {
                 obj.insert("robust".into(), super::robust::json_value(r, optimum));
             }
@@ -133,13 +139,41 @@ fn design_object(names: &[SceneParameter], values: &[f64]) -> Value {
 }
 
 /// One JSON object, SI units.
-pub fn json(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
-    super::json_text(&json_value(name, o, broken))
+pub fn json(
+    name: &str,
+    o: &Optimum,
+    broken: &[BaselineViolation],
+    law: Option<&LawOutsideRegime>,
+) -> String {
+    super::json_text(&json_value(name, o, broken, law))
 }
 
-/// The object [`json()`] writes, as a value.
-pub fn json_value(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> Value {
+/// The object [`json()`] writes, as a value. With `law` (the study's law outside
+/// its regime at the optimum) it gains `law_regime`: `law`, `tabor_parameter`,
+/// `valid_tabor_min`, `valid_tabor_max` (null: no bound), `law_that_holds`,
+/// `note` and `rerun` (the text report's words); without, the key is absent.
+pub fn json_value(
+    name: &str,
+    o: &Optimum,
+    broken: &[BaselineViolation],
+    law: Option<&LawOutsideRegime>,
+) -> Value {
     let mut v = json_fields(name, o, broken);
+    if let (Some(l), Value::Object(obj)) = (law, &mut v) {
+        let bound = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
+        obj.insert(
+            "law_regime".into(),
+            json!({
+                "law": l.law.as_str(),
+                "tabor_parameter": l.tabor_parameter,
+                "valid_tabor_min": bound(l.valid_tabor.0),
+                "valid_tabor_max": bound(l.valid_tabor.1),
+                "law_that_holds": l.law_that_holds.as_str(),
+                "note": format!("{}; {}", outside_words(l), consequence_words(l)),
+                "rerun": rerun_words(l),
+            }),
+        );
+    }
     if let (Some(h), Value::Object(obj)) = (o.objective_humidity, &mut v) {
         obj.insert("objective_humidity".into(), json!(h));
     }
@@ -184,8 +218,55 @@ fn json_fields(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> Value {
 
 pub use super::trace::trace_csv;
 
-/// A report for people.
-pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
+/// "outside the JKR law's regime at the optimum: φ0 = 0.0161 < 3": what follows
+/// the status word on the status line.
+fn outside_words(l: &LawOutsideRegime) -> String {
+    let (lo, hi) = l.valid_tabor;
+    let side = if l.tabor_parameter < lo {
+        format!("< {lo}")
+    } else {
+        format!("> {hi}")
+    };
+    format!(
+        "outside the {} law's regime at the optimum: φ0 = {} {side}",
+        l.law.label(),
+        sig_exp(l.tabor_parameter, 3)
+    )
+}
+
+/// Where the law is exact and what leaving it costs.
+fn consequence_words(l: &LawOutsideRegime) -> String {
+    let (lo, hi) = l.valid_tabor;
+    let exact = if hi.is_finite() {
+        format!("φ0 ≤ {hi}")
+    } else {
+        format!("φ0 ≥ {lo}")
+    };
+    format!(
+        "the {} law is exact for {exact} only, so this optimum's adhesion (the pull-off above all) may be far from the truth",
+        l.law.label()
+    )
+}
+
+/// The edit and the command that re-run the study under the law that holds.
+fn rerun_words(l: &LawOutsideRegime) -> String {
+    format!(
+        "re-run under the {} law, which holds at every φ0: set [interface] adhesion_model = \"{}\" in {}, then wearopt optimize {}",
+        l.law_that_holds.label(),
+        l.law_that_holds.as_str(),
+        l.origin,
+        l.origin
+    )
+}
+
+/// A report for people. With `law` (the study's law outside its regime at the
+/// optimum) the status line says so and the line under it gives the re-run.
+pub fn text(
+    name: &str,
+    o: &Optimum,
+    broken: &[BaselineViolation],
+    law: Option<&LawOutsideRegime>,
+) -> String {
     let mut out = String::new();
     let mut line = |s: String| {
         out.push_str(&s);
@@ -213,7 +294,13 @@ pub fn text(name: &str, o: &Optimum, broken: &[BaselineViolation]) -> String {
             "stalled: no further progress was possible, but the KKT test was not met"
         }
     };
-    line(format!("Status: {verdict}"));
+    match (law, verdict.split_once(": ")) {
+        (Some(l), Some((word, rest))) => {
+            line(format!("Status: {word} ({}): {rest}", outside_words(l)));
+            line(format!("  {}; {}", consequence_words(l), rerun_words(l)));
+        }
+        _ => line(format!("Status: {verdict}")),
+    }
     line(String::new());
     line(format!(
         "{:<18} {:>16} {:>16}",
@@ -448,20 +535,38 @@ pub fn convergence_svg(name: &str, o: &Optimum) -> String {
     plot.to_svg()
 }
 
-/// A self-contained HTML page: status, design, objective, constraints, warnings, the
-/// convergence of every start and the optimum's load–separation curve.
+/// A self-contained HTML page: status (with the law outside its regime, when `law`
+/// says so), design, objective, constraints, warnings, the convergence of every
+/// start and the optimum's load–separation curve.
 pub fn html(
     name: &str,
     o: &Optimum,
     broken: &[BaselineViolation],
     curve: Option<&crate::model::LoadCurve>,
     robust: Option<&crate::app::robust::RobustOutcome>,
+    law: Option<&LawOutsideRegime>,
 ) -> String {
     let mut p = super::html::Page::new(&format!("wearopt optimize — {name}"));
     if let Some(r) = robust {
         super::robust::html_section(&mut p, r, o);
     }
-    p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status"));
+    match law {
+        Some(l) => {
+            p.paragraph(
+                &format!("Status: {} ({})", o.status.as_str(), outside_words(l)),
+                Some("status"),
+            );
+            // A sentence of its own: capitalised (the words start with "the").
+            let words = format!("{}; {}", consequence_words(l), rerun_words(l));
+            let mut chars = words.chars();
+            let sentence: String = chars
+                .next()
+                .map(|c| c.to_uppercase().chain(chars).collect())
+                .unwrap_or_default();
+            p.paragraph(&sentence, Some("warn"));
+        }
+        None => p.paragraph(&format!("Status: {}", o.status.as_str()), Some("status")),
+    }
     if let Some(n) = super::words::real_area_scale_note(o.scene.real_area_scale) {
         p.paragraph(&n, Some("note"));
     }

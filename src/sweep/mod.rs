@@ -89,7 +89,7 @@ impl Shard {
     ) -> Result<Shard, SweepError> {
         let min = min.unwrap_or(0);
         let step = step.unwrap_or(1).max(1);
-        if id < min || (id - min) % step != 0 {
+        if id < min || !(id - min).is_multiple_of(step) {
             return Err(SweepError::Slurm {
                 id,
                 min,

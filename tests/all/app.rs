@@ -108,11 +108,11 @@ fn load(file: &str) -> app::Problem {
 const PROBLEMS: [&str; 9] = [
     "problems/micro-gear.toml",
     "problems/micro-gear-scan.toml",
-    "problems/micro-gear-study.toml",
+    "tests/data/micro-gear-study-jkr.toml",
     "problems/gold-switch.toml",
     "problems/dlc-contact.toml",
-    "problems/switch-study.toml",
-    "problems/infeasible-study.toml",
+    "tests/data/switch-study-jkr.toml",
+    "tests/data/infeasible-study-jkr.toml",
     "problems/latch-pareto.toml",
     "problems/materials-study.toml",
 ];
@@ -130,9 +130,9 @@ fn eval_documents_equal_the_cli_json() {
 fn optimize_documents_equal_the_cli_json() {
     // Single studies (one infeasible) and a material ranking.
     for file in [
-        "problems/micro-gear-study.toml",
-        "problems/switch-study.toml",
-        "problems/infeasible-study.toml",
+        "tests/data/micro-gear-study-jkr.toml",
+        "tests/data/switch-study-jkr.toml",
+        "tests/data/infeasible-study-jkr.toml",
         "problems/materials-study.toml",
     ] {
         let (cli, code) = cli_json(&["optimize", file, "--format", "json"]);
@@ -194,8 +194,8 @@ fn roughness_documents_equal_the_cli_json() {
 
 #[test]
 fn errors_are_the_cli_messages() {
-    let gear = load("problems/micro-gear-study.toml");
-    let origin = "problems/micro-gear-study.toml";
+    let gear = load("tests/data/micro-gear-study-jkr.toml");
+    let origin = "tests/data/micro-gear-study-jkr.toml";
     let no_pareto = pareto_json(&gear, origin, None).unwrap_err();
     assert!(matches!(no_pareto, AppError::NoPareto { .. }));
     assert_eq!(no_pareto.to_string(), cli_error(&["pareto", origin]));

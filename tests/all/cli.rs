@@ -177,7 +177,7 @@ fn optimize_json_contract_and_exit_codes() {
     let out = common::stdout(
         wearopt().args([
             "optimize",
-            "problems/micro-gear-study.toml",
+            "tests/data/micro-gear-study-jkr.toml",
             "--format",
             "json",
         ]),
@@ -219,7 +219,7 @@ fn optimize_json_contract_and_exit_codes() {
     let out = common::stdout(
         wearopt().args([
             "optimize",
-            "problems/infeasible-study.toml",
+            "tests/data/infeasible-study-jkr.toml",
             "--format",
             "json",
         ]),
@@ -232,7 +232,7 @@ fn optimize_json_contract_and_exit_codes() {
     let out = common::stdout(
         wearopt().args([
             "optimize",
-            "problems/infeasible-study.toml",
+            "tests/data/infeasible-study-jkr.toml",
             "--format",
             "html",
         ]),
@@ -262,7 +262,7 @@ fn optimize_trace_has_one_row_per_iteration() {
     wearopt()
         .args([
             "optimize",
-            "problems/switch-study.toml",
+            "tests/data/switch-study-jkr.toml",
             "--trace",
             trace.to_str().unwrap(),
         ])
@@ -301,7 +301,7 @@ fn every_command_names_the_formats_it_writes() {
             "text, json, html",
         ),
         (
-            &["optimize", "problems/micro-gear-study.toml"],
+            &["optimize", "tests/data/micro-gear-study-jkr.toml"],
             "csv",
             "text, json, html",
         ),
@@ -342,7 +342,12 @@ fn every_command_names_the_formats_it_writes() {
             "csv, json",
         ),
         (
-            &["sweep", "problems/micro-gear-study.toml", "--samples", "4"],
+            &[
+                "sweep",
+                "tests/data/micro-gear-study-jkr.toml",
+                "--samples",
+                "4",
+            ],
             "text",
             "csv, json",
         ),
@@ -518,7 +523,7 @@ fn unwritable_output_paths_exit_2() {
         vec!["eval", "problems/micro-gear.toml", "--out", path],
         vec![
             "optimize",
-            "problems/micro-gear-study.toml",
+            "tests/data/micro-gear-study-jkr.toml",
             "--trace",
             path,
         ],
@@ -536,7 +541,7 @@ fn unwritable_output_paths_exit_2() {
         ],
         vec![
             "sweep",
-            "problems/micro-gear-study.toml",
+            "tests/data/micro-gear-study-jkr.toml",
             "--samples",
             "4",
             "--out",

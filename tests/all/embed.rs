@@ -13,7 +13,7 @@ use wearopt::model::{AsperityLaw, Coefficients, Model, Quadrature, Scene};
 use wearopt::sweep::{Method, Sweep, SweepError};
 
 fn gear() -> wearopt::problem::Problem {
-    wearopt::problem::load(Path::new("problems/micro-gear-study.toml")).expect("shipped")
+    wearopt::problem::load(Path::new("tests/data/micro-gear-study-jkr.toml")).expect("shipped")
 }
 
 type Field = (&'static str, fn(&mut Scene) -> &mut f64);

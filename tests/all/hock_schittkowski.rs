@@ -1230,7 +1230,7 @@ fn heating_row(x: &[f64]) -> Vec<f64> {
     for k in (0..n - 1).rev() {
         t[k] = t[k + 1] + x[k] * x[k];
     }
-    let sign = |k: usize| if k % 2 == 0 { 1.0 } else { -1.0 };
+    let sign = |k: usize| if k.is_multiple_of(2) { 1.0 } else { -1.0 };
     let decay = |a: f64| if a > -100.0 { a.exp() } else { 0.0 };
     let h: f64 = heating_roots()
         .iter()

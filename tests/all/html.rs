@@ -120,7 +120,7 @@ fn eval_page() {
 fn optimize_page() {
     let html = page(&[
         "optimize",
-        "problems/micro-gear-study.toml",
+        "tests/data/micro-gear-study-jkr.toml",
         "--format",
         "html",
     ]);

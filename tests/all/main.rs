@@ -21,6 +21,7 @@ mod figures;
 mod fit_wear;
 mod hock_schittkowski;
 mod html;
+mod law_regime;
 mod lennard_jones_law;
 mod lennard_jones_limit;
 mod lennard_jones_rough;

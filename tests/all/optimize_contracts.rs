@@ -38,7 +38,7 @@ fn run(p: &Problem, starts: usize, seed: u64) -> (f64, OptimizationStatus) {
     (o.objective, o.status)
 }
 
-/// The least wear rate (m³/m) of `problems/micro-gear-study.toml` (five
+/// The least wear rate (m³/m) of `tests/data/micro-gear-study-jkr.toml` (five
 /// variables: E, H, γ, σ, R). Provenance: a 256-start run with seed 7 of
 /// this solver (`many_start_references` below); every seed 1..=6 with 8 starts
 /// lands within 5e-12 of it.
@@ -80,7 +80,7 @@ fn assert_global_for_seeds(rel: &str, optimum: f64, seeds: std::ops::RangeInclus
 #[test]
 fn micro_gear_study_reaches_the_global_optimum_with_any_seed() {
     assert_global_for_seeds(
-        "problems/micro-gear-study.toml",
+        "tests/data/micro-gear-study-jkr.toml",
         MICRO_GEAR_STUDY_OPTIMUM,
         1..=6,
     );
@@ -112,7 +112,7 @@ fn nems_switch_study_reaches_the_global_optimum_with_any_seed() {
 #[ignore = "32 seeds of three studies; run with `cargo test --test all optimize_contracts::more_seeds -- --ignored`"]
 fn more_seeds_reach_the_global_optimum() {
     assert_global_for_seeds(
-        "problems/micro-gear-study.toml",
+        "tests/data/micro-gear-study-jkr.toml",
         MICRO_GEAR_STUDY_OPTIMUM,
         1..=32,
     );
@@ -134,7 +134,7 @@ fn more_seeds_reach_the_global_optimum() {
 fn many_start_references() {
     for (rel, reference, seeds) in [
         (
-            "problems/micro-gear-study.toml",
+            "tests/data/micro-gear-study-jkr.toml",
             MICRO_GEAR_STUDY_OPTIMUM,
             &[7][..],
         ),
@@ -160,7 +160,7 @@ fn many_start_references() {
 /// WIDE_LATCH_OPTIMUM), and the JSON says so in `starts`.
 #[test]
 fn the_vertex_search_is_counted_and_reported() {
-    let gear = path("problems/micro-gear-study.toml");
+    let gear = path("tests/data/micro-gear-study-jkr.toml");
     let v = json_on(1, &["optimize", "--format", "json", gear.to_str().unwrap()]);
     let starts = &v["starts"];
     assert!(starts["edges"].as_u64().unwrap() >= 1, "{starts}");

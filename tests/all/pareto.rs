@@ -549,7 +549,7 @@ fn cli_refuses_a_file_without_pareto_and_bad_points() {
 /// Without any of them the error says how; a bad name exits 2 naming the choices.
 #[test]
 fn the_front_can_be_asked_for_on_the_command_line() {
-    let file = problem_path("micro-gear-study.toml");
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/micro-gear-study-jkr.toml");
     let file = file.to_str().unwrap();
     let json = |args: &[&str]| -> serde_json::Value {
         let out = wearopt()

@@ -170,7 +170,7 @@ fn json_and_a_csv_trace_never_share_stdout() {
     let err = stderr_failing(
         &[
             "optimize",
-            "problems/switch-study.toml",
+            "tests/data/switch-study-jkr.toml",
             "--format",
             "json",
             "--trace",
@@ -352,7 +352,7 @@ fn stiction_text_names_the_law() {
 
 #[test]
 fn friction_and_stiction_need_their_inputs() {
-    let mut text = std::fs::read_to_string("problems/switch-study.toml").unwrap();
+    let mut text = std::fs::read_to_string("tests/data/switch-study-jkr.toml").unwrap();
     text.push_str("\n[[constraint]]\nquantity = \"stiction_margin\"\nmax = 0.5\n");
     let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("needs-restoring.toml");
     std::fs::write(&path, text).unwrap();
@@ -368,7 +368,7 @@ fn friction_and_stiction_need_their_inputs() {
 /// warnings are in the text.
 #[test]
 fn optimize_text_says_an_infeasible_baseline_plainly() {
-    let text = std::fs::read_to_string("problems/micro-gear-study.toml")
+    let text = std::fs::read_to_string("tests/data/micro-gear-study-jkr.toml")
         .unwrap()
         .replacen("max = 1.0", "max = 0.3", 1);
     let path = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("tight-psi.toml");
@@ -388,7 +388,7 @@ fn optimize_text_says_an_infeasible_baseline_plainly() {
     assert_eq!(v["baseline_feasible"], false);
     assert_eq!(v["baseline_violations"][0]["quantity"], "plasticity_index");
     // Units on constraint values: the pull-off limit of the shipped study.
-    let t = stdout_of(&["optimize", "problems/micro-gear-study.toml"]);
+    let t = stdout_of(&["optimize", "tests/data/micro-gear-study-jkr.toml"]);
     assert!(t.contains("1.000 µN"), "{t}");
     assert!(t.contains("(improvement ×"), "{t}");
 }

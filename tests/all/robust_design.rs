@@ -319,7 +319,12 @@ fn sweep_and_pareto_say_they_are_nominal() {
     .unwrap();
     assert!(err.contains("read by `wearopt optimize` only"), "{err}");
     let err = String::from_utf8(common::stderr(
-        wearopt().args(["sweep", "problems/micro-gear-study.toml", "--samples", "2"]),
+        wearopt().args([
+            "sweep",
+            "tests/data/micro-gear-study-jkr.toml",
+            "--samples",
+            "2",
+        ]),
         0,
     ))
     .unwrap();

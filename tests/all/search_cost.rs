@@ -20,6 +20,13 @@ fn shipped(name: &str) -> wearopt::problem::Problem {
     wearopt::problem::load(Path::new(&path)).expect("shipped problem loads")
 }
 
+/// A study as it shipped under the paper's JKR law (`tests/data/{name}-jkr.toml`),
+/// kept for the scenes these costs were measured on.
+fn jkr_copy(name: &str) -> wearopt::problem::Problem {
+    let path = format!("{}/tests/data/{name}-jkr.toml", env!("CARGO_MANIFEST_DIR"));
+    wearopt::problem::load(Path::new(&path)).expect("test copy loads")
+}
+
 fn dmt(scene: &Scene, attraction: AttractionKind) -> Scene {
     Scene {
         adhesion_model: AdhesionModel::Dmt,
@@ -56,7 +63,12 @@ fn scenes() -> Vec<(String, Scene)> {
         "switch-study",
         "micro-gear-study",
     ] {
-        out.push((name.to_string(), shipped(name).scene));
+        let p = if name.ends_with("-study") {
+            jkr_copy(name)
+        } else {
+            shipped(name)
+        };
+        out.push((name.to_string(), p.scene));
     }
     // Weak adhesion (γ/1e4) and strong adhesion on soft asperities (E/20, γ×5).
     let weak = Scene {
@@ -102,7 +114,7 @@ fn scenes() -> Vec<(String, Scene)> {
 /// Deterministic designs spread over the five-variable study's box (a
 /// Kronecker sequence), plus its baseline.
 fn study_designs() -> (DesignSpace, Vec<Vec<f64>>) {
-    let p = shipped("micro-gear-study");
+    let p = jkr_copy("micro-gear-study");
     let space = DesignSpace::new(&p.scene, &p.study.design);
     let n = space.dim();
     let mut designs = vec![space.baseline_unit()];

@@ -231,7 +231,7 @@ fn shipped_plots_fit() {
         (
             vec![
                 "optimize",
-                "problems/micro-gear-study.toml",
+                "tests/data/micro-gear-study-jkr.toml",
                 "--format",
                 "html",
             ],

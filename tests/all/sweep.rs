@@ -12,7 +12,7 @@ use wearopt::model::{evaluate, EvaluationOptions};
 use wearopt::optimize::DesignSpace;
 use wearopt::sweep::{Method, Sweep};
 
-const STUDY: &str = "problems/micro-gear-study.toml";
+const STUDY: &str = "tests/data/micro-gear-study-jkr.toml";
 
 fn wearopt() -> Command {
     let mut c = Command::cargo_bin("wearopt").expect("binary builds");

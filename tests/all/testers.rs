@@ -8,7 +8,7 @@ use std::time::Duration;
 use crate::common;
 
 const MAP: &str = "problems/scans/self-affine.gsf";
-const STUDY: &str = "problems/micro-gear-study.toml";
+const STUDY: &str = "tests/data/micro-gear-study-jkr.toml";
 
 /// The binary, without Slurm's variables (which would pick a shard).
 fn wearopt() -> assert_cmd::Command {

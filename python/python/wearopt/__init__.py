@@ -29,24 +29,24 @@ computations release the GIL, so calls from several threads run in parallel.
 
 from __future__ import annotations
 
-import json
-import numbers
-import os
+import json as _json
+import numbers as _numbers
+import os as _os
 from typing import Any, Dict, Iterable, Optional, Tuple, Union
 
-import numpy as np
+import numpy as _np
 
 from . import _wearopt
 
 
 def _is_int(value: Any) -> bool:
     """An integer, Python's or NumPy's (``np.int64(10)``), not a bool."""
-    return isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_))
+    return isinstance(value, _numbers.Integral) and not isinstance(value, (bool, _np.bool_))
 
 
 def _is_number(value: Any) -> bool:
     """A real number, Python's or NumPy's (``np.float32(1)``), not a bool."""
-    return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+    return isinstance(value, _numbers.Real) and not isinstance(value, (bool, _np.bool_))
 
 __all__ = [
     "evaluate",
@@ -67,21 +67,21 @@ __all__ = [
 ]
 __version__ = "0.1.0"
 
-Problem = Union[str, "os.PathLike[str]", Dict[str, Any]]
+Problem = Union[str, "_os.PathLike[str]", Dict[str, Any]]
 
 
 def _source(problem: Problem) -> Tuple[str, bool]:
     """(text, is_path): a path as given, or a dict as JSON text."""
     if isinstance(problem, dict):
         try:
-            return json.dumps(problem, allow_nan=False), False
+            return _json.dumps(problem, allow_nan=False), False
         except (TypeError, ValueError) as e:
             raise ValueError(
                 f"<problem dict>: not a problem-file dict ({e}); values must be "
                 "strings, finite numbers, booleans, lists or dicts"
             ) from None
-    if isinstance(problem, (str, os.PathLike)):
-        return os.fspath(problem), True
+    if isinstance(problem, (str, _os.PathLike)):
+        return _os.fspath(problem), True
     raise TypeError(
         f"problem must be a path (str or os.PathLike) or a dict, not {type(problem).__name__}"
     )
@@ -95,7 +95,7 @@ def evaluate(problem: Problem) -> Dict[str, Any]:
     >>> sorted(k for k in r if k.endswith("_index"))[:2]
     ['elastic_adhesion_index', 'plastic_adhesion_index']
     """
-    return json.loads(_wearopt.evaluate_json(*_source(problem)))
+    return _json.loads(_wearopt.evaluate_json(*_source(problem)))
 
 
 def optimize(problem: Problem) -> Dict[str, Any]:
@@ -110,7 +110,7 @@ def optimize(problem: Problem) -> Dict[str, Any]:
     >>> ranking[0]["rank"], ranking[0]["material"] in {"polysilicon", "silicon carbide", "diamond-like carbon"}
     (1, True)
     """
-    return json.loads(_wearopt.optimize_json(*_source(problem)))
+    return _json.loads(_wearopt.optimize_json(*_source(problem)))
 
 
 def pareto(
@@ -140,7 +140,7 @@ def pareto(
     for name, value in (("adhesion", adhesion), ("direction", direction)):
         if value is not None and not isinstance(value, str):
             raise TypeError(f"{name} must be a str or None, not {type(value).__name__}")
-    return json.loads(_wearopt.pareto_json(*_source(problem), points, adhesion, direction))
+    return _json.loads(_wearopt.pareto_json(*_source(problem), points, adhesion, direction))
 
 
 def humidity(problem: Problem, from_: Any, to: Any, points: int) -> Dict[str, Any]:
@@ -173,7 +173,7 @@ def humidity(problem: Problem, from_: Any, to: Any, points: int) -> Dict[str, An
     points = int(points)
     if points < 0:
         raise ValueError(f"points={points}: must lie in 2..=100000")
-    return json.loads(_wearopt.humidity_json(*_source(problem), given[0], given[1], points))
+    return _json.loads(_wearopt.humidity_json(*_source(problem), given[0], given[1], points))
 
 
 def uncertainty(
@@ -211,13 +211,13 @@ def uncertainty(
     for name, value in (("samples", samples), ("seed", seed)):
         if value is None:
             continue
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        if isinstance(value, bool) or not isinstance(value, (int, _np.integer)):
             raise TypeError(f"{name} must be an int, not {type(value).__name__}")
         if value < 0:
             raise ValueError(f"{name}={value}: must be >= 0")
     if shard is not None:
         i, n = _shard(shard)
-        return json.loads(
+        return _json.loads(
             _wearopt.uncertainty_part_json(
                 *_source(problem),
                 method,
@@ -227,7 +227,7 @@ def uncertainty(
                 n,
             )
         )
-    doc = json.loads(
+    doc = _json.loads(
         _wearopt.uncertainty_json(
             *_source(problem),
             method,
@@ -245,7 +245,7 @@ def _shard(shard: Any) -> Tuple[int, int]:
     except (TypeError, ValueError):
         raise TypeError(f"shard must be a pair (i, n), not {shard!r}") from None
     for name, v in (("shard index", i), ("shard count", n)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        if isinstance(v, bool) or not isinstance(v, (int, _np.integer)):
             raise TypeError(f"{name} must be an int, not {type(v).__name__}")
         if v < 0:
             raise ValueError(f"{name} {v}: must be >= 0")
@@ -258,7 +258,7 @@ def _arrays(value: Any) -> Any:
         return {k: _arrays(v) for k, v in value.items()}
     if isinstance(value, list):
         if value and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value):
-            return np.asarray(value, dtype=float)
+            return _np.asarray(value, dtype=float)
         return [_arrays(v) for v in value]
     return value
 
@@ -287,7 +287,7 @@ def asperity(
         raise ValueError(f"points={points}: must lie in 2..=10000")
     if not isinstance(adhesion_model, str):
         raise TypeError(f"adhesion_model must be a str, not {type(adhesion_model).__name__}")
-    return json.loads(
+    return _json.loads(
         _wearopt.asperity_json(float(tabor), float(from_), float(to), points, adhesion_model)
     )
 
@@ -338,10 +338,10 @@ def roughness(
     """
     if height_unit is not None and not isinstance(height_unit, str):
         height_unit = repr(float(height_unit))
-    if isinstance(path, (str, os.PathLike)):
-        return json.loads(
+    if isinstance(path, (str, _os.PathLike)):
+        return _json.loads(
             _wearopt.roughness_json(
-                os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit,
+                _os.fspath(path), _length(cutoff), level, _length(pixel_size), height_unit,
                 bool(decimal_comma),
             )
         )
@@ -352,9 +352,9 @@ def roughness(
         raise ValueError(f"heights: a 2-D array (rows along y) is needed, not {heights.ndim}-D")
     if pixel_size is None:
         raise ValueError('pixel_size=None: heights in an array carry no pixel size; give one, e.g. "10 nm"')
-    return json.loads(
+    return _json.loads(
         _wearopt.roughness_array_json(
-            np.ascontiguousarray(heights, dtype=np.float64),
+            _np.ascontiguousarray(heights, dtype=_np.float64),
             _length(pixel_size),
             _length(cutoff),
             level,
@@ -423,9 +423,9 @@ def contact(
         adhesion_range=_length(adhesion_range),
         coarse_grain=bool(coarse_grain),
     )
-    if isinstance(heights, (str, os.PathLike)):
+    if isinstance(heights, (str, _os.PathLike)):
         text, p_fields, g_fields, ap_fields, ag_fields = _wearopt.contact_json(
-            os.fspath(heights), e_star, pressure_list, cap, level,
+            _os.fspath(heights), e_star, pressure_list, cap, level,
             _length(pixel_size), height_unit, float(tolerance), bool(fields),
             decimal_comma=bool(decimal_comma), **adhesion,
         )
@@ -436,11 +436,11 @@ def contact(
         if pixel_size is None:
             raise ValueError('pixel_size=None: heights in an array carry no pixel size; give one, e.g. "10 nm"')
         text, p_fields, g_fields, ap_fields, ag_fields = _wearopt.contact_array(
-            np.ascontiguousarray(z, dtype=np.float64), _length(pixel_size), e_star,
+            _np.ascontiguousarray(z, dtype=_np.float64), _length(pixel_size), e_star,
             pressure_list, cap, level, height_unit, float(tolerance), bool(fields),
             **adhesion,
         )
-    doc = json.loads(text)
+    doc = _json.loads(text)
     for point, p, g in zip(doc["points"], p_fields, g_fields):
         point["pressure_field"] = p
         point["gap_field"] = g
@@ -450,13 +450,13 @@ def contact(
     return doc
 
 
-def _float_array(name: str, value: Any) -> np.ndarray:
-    a = np.asarray(value)
+def _float_array(name: str, value: Any) -> _np.ndarray:
+    a = _np.asarray(value)
     if a.dtype.kind not in "iuf":
         raise TypeError(
             f"{name} must hold real numbers (integer or float dtype), not dtype {a.dtype}"
         )
-    return a.astype(np.float64, copy=False)
+    return a.astype(_np.float64, copy=False)
 
 
 def curve(
@@ -466,8 +466,8 @@ def curve(
     adhesion_model: str = "jkr",
     attraction: Any = None,
     attraction_range: Any = None,
-    hardness_coefficient: Any = np.inf,
-) -> Dict[str, np.ndarray]:
+    hardness_coefficient: Any = _np.inf,
+) -> Dict[str, _np.ndarray]:
     """The non-dimensional model (the columns of ``wearopt curve``) at every
     (θ, λ, h) of the broadcast arrays: ``h``, ``load`` (P̄), ``area`` (Ā),
     ``plastic_area``, ``critical_interference`` (Δc), ``dload_dh`` and
@@ -489,14 +489,14 @@ def curve(
     """
     if attraction_range is not None:
         attraction_range = float(attraction_range)
-    arrays = np.broadcast_arrays(
+    arrays = _np.broadcast_arrays(
         _float_array("theta", theta),
         _float_array("lam", lam),
         _float_array("hardness_coefficient", hardness_coefficient),
         _float_array("h", h),
     )
     shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
+    flat = [_np.ascontiguousarray(a, dtype=_np.float64).reshape(-1) for a in arrays]
     out = _wearopt.curve_arrays(*flat, adhesion_model, attraction, attraction_range)
     return {k: v.reshape(shape) for k, v in out.items()}
 
@@ -560,13 +560,13 @@ def merge(
     if any(isinstance(p, dict) for p in parts) or any(
         _wearopt.is_uncertainty_part(p) for p in parts
     ):
-        texts = [p if isinstance(p, str) else json.dumps(p, allow_nan=False) for p in parts]
-        return _arrays(json.loads(_wearopt.merge_uncertainty_json(texts, samples)))
+        texts = [p if isinstance(p, str) else _json.dumps(p, allow_nan=False) for p in parts]
+        return _arrays(_json.loads(_wearopt.merge_uncertainty_json(texts, samples)))
     return _wearopt.merge_text(parts, samples)
 
 
 def fit_adhesion(
-    data: Union[str, "os.PathLike[str]"],
+    data: Union[str, "_os.PathLike[str]"],
     radius: Any,
     mu: Optional[float] = None,
     fit_mu: bool = False,
@@ -589,9 +589,9 @@ def fit_adhesion(
     """
     if mu is not None:
         mu = float(mu)
-    return json.loads(
+    return _json.loads(
         _wearopt.fit_adhesion_json(
-            os.fspath(data),
+            _os.fspath(data),
             _quantity("radius", radius),
             mu,
             bool(fit_mu),
@@ -623,8 +623,8 @@ def fit_wear(
     """
     temperature = _quantity("temperature", temperature, "kelvin")
     speed = _quantity("speed", speed, "m/s")
-    if isinstance(path_or_rows, (str, os.PathLike)):
-        return json.loads(_wearopt.fit_wear_json(os.fspath(path_or_rows), True, temperature, speed))
+    if isinstance(path_or_rows, (str, _os.PathLike)):
+        return _json.loads(_wearopt.fit_wear_json(_os.fspath(path_or_rows), True, temperature, speed))
     if not hasattr(path_or_rows, "keys"):
         raise TypeError(
             "path_or_rows must be a path or a mapping of column names (stress_Pa, "
@@ -636,11 +636,11 @@ def fit_wear(
         raise ValueError("<rows>: the columns have different lengths: " + ", ".join(
             f"{n} {len(c)}" for n, c in zip(names, columns)))
     text = ",".join(names) + "\n" + "".join(",".join(row) + "\n" for row in zip(*columns))
-    return json.loads(_wearopt.fit_wear_json(text, False, temperature, speed))
+    return _json.loads(_wearopt.fit_wear_json(text, False, temperature, speed))
 
 
 def figures(
-    out: Union[str, "os.PathLike[str]", None] = None,
+    out: Union[str, "_os.PathLike[str]", None] = None,
     points: int = 51,
     load_min: float = 0.05,
     load_max: float = 5.0,
@@ -655,12 +655,12 @@ def figures(
     >>> [c["id"] for c in f["claims"]][0], f["files"]
     ('linear', [])
     """
-    return json.loads(
+    return _json.loads(
         _wearopt.figures_json(
             int(points),
             float(load_min),
             float(load_max),
-            None if out is None else os.fspath(out),
+            None if out is None else _os.fspath(out),
         )
     )
 
@@ -673,6 +673,12 @@ def accuracy(problem: Optional[Problem] = None) -> Dict[str, Any]:
     seconds: every setting is timed.
     """
     if problem is None:
-        return json.loads(_wearopt.accuracy_json())
-    return json.loads(_wearopt.accuracy_json(*_source(problem)))
+        return _json.loads(_wearopt.accuracy_json())
+    return _json.loads(_wearopt.accuracy_json(*_source(problem)))
 
+
+
+# The typing names served the annotations above (strings, under ``from __future__
+# import annotations``) and the ``Problem`` alias; deleted so that ``dir(wearopt)``
+# lists the public API only (python/tests/test_wearopt.py::test_dir_is_the_public_api).
+del annotations, Any, Dict, Iterable, Optional, Tuple, Union
