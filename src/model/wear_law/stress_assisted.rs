@@ -13,11 +13,15 @@
 //! a₀/v, b = ΔV/k_BT. Under `stress = "shear"` σ = τ is the same on every summit and
 //! the integral is F(τ) times the wearing area, a closed form.
 //!
-//! The elastic summits' integral is taken by adaptive Gauss–Kronrod (7–15) in the
-//! model's own variables (v = s − s₀ under JKR, x = Δ^{1/2} under DMT, where the
-//! summit's stress is smooth), over the heights where the integrand is within e^{−46}
-//! of its largest value, the ends of the saturated band (Γa₀/v = 1) being panel
-//! edges. Every integrand is carried as a logarithm and the result as a
+//! The elastic summits' integral is taken by Gauss–Legendre on a fixed layout in the
+//! model's own variable (v = s − s₀ under JKR, x = Δ^{1/2} under DMT, where the summit's
+//! stress is smooth): the integrand's peak, the points where it has fallen by
+//! e^{−10}, e^{−20}, … to e^{−46}, the crossings of the saturation front (ln Γa₀/v = 0
+//! and its neighbours), and panels halved geometrically towards the stress's pole at the
+//! contact's edge (docs/model.md §12). It meets the 40-digit table to 1.6e-13
+//! (`tests/all/stress_assisted_wear.rs`) and the adaptive Gauss–Kronrod rule kept for
+//! the tests to 1.9e-13 (`layout_campaign`). Every integrand is carried as a logarithm
+//! relative to its peak and the result as a
 //! [`Scaled`], so that c = 10⁻³⁰ or h = 60 neither underflows nor loses digits.
 
 use super::{Activation, ContactStress, WearDetails, WearInput, WearLaw, WearModel, WearOutcome};
