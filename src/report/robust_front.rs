@@ -321,7 +321,19 @@ pub fn svg(doc: &EventFrontDocument) -> String {
         .map(|p| (p.level, p.statistic.value))
         .collect();
     let u = unit(doc);
-    let mut y = Axis::log(statistic_name(doc));
+    // Within a decade a linear axis shows the trade-off; a log axis flattens it.
+    let (lo, hi) = doc
+        .points
+        .iter()
+        .filter(|p| p.usable() && p.statistic.value > 0.0)
+        .fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+            (a.min(p.statistic.value), b.max(p.statistic.value))
+        });
+    let mut y = if hi > 0.0 && hi < 10.0 * lo {
+        Axis::linear(statistic_name(doc))
+    } else {
+        Axis::log(statistic_name(doc))
+    };
     if !u.is_empty() {
         y = y.with_unit(u);
     }
@@ -354,10 +366,16 @@ pub fn html(doc: &EventFrontDocument) -> String {
     p.paragraph(&format!("Status: {}", status_sentence(doc)), Some("status"));
     p.paragraph(
         &format!(
-            "Each point is the robust optimum of the study with P({}) ≤ its level (SORA, then the design's probability sampled: importance sampling or Monte Carlo to a coefficient of variation of 0.02), {} taken over {} common random numbers.",
+            "Each point is the robust optimum of the study with P({}) ≤ its level (SORA, then the design's probability sampled: importance sampling or Monte Carlo to a coefficient of variation of 0.02){}.",
             doc.label,
-            statistic_name(doc),
-            doc.samples
+            match doc.statistic {
+                Some(_) => format!(
+                    ", {} taken over {} common random numbers",
+                    statistic_name(doc),
+                    doc.samples
+                ),
+                None => String::new(),
+            }
         ),
         None,
     );
@@ -390,12 +408,15 @@ pub fn html(doc: &EventFrontDocument) -> String {
         "front",
         &svg(doc),
         &format!(
-            "{} against the sampled P({}) (log axis); crosses: the level each point was solved at.",
+            "{} against the sampled P({}) (log axis); crosses: the level each point was solved at, triangles: points whose sampled P exceeds their level.",
             statistic_name(doc),
             doc.label
         ),
     );
-    let stat_header = format!("{} [95 %]", statistic_name(doc));
+    let stat_header = match doc.statistic {
+        Some(_) => format!("{} [95 %]", statistic_name(doc)),
+        None => statistic_name(doc),
+    };
     let p_header = format!("P({}) [95 %]", doc.label);
     let rows: Vec<Vec<String>> = doc
         .points
