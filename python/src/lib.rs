@@ -156,6 +156,24 @@ fn pareto_json(
 ) -> PyResult<String> {
     detached(py, || {
         let (problem, origin) = load(&source, is_path)?;
+        // A front against a probability ([pareto] event): its own document.
+        if problem.robust.front.is_some() {
+            if let Some((name, value)) = adhesion
+                .as_ref()
+                .map(|v| ("adhesion", v))
+                .or(direction.as_ref().map(|v| ("direction", v)))
+            {
+                return Err(words(AppError::Invalid {
+                    options: vec![(OptionName(name), value.clone())],
+                    rule: format!(
+                        "{origin} draws a front against the probability of an event ([pareto] event): its second axis is that probability, the low end preferred; leave {name} out"
+                    ),
+                }));
+            }
+            let doc = app::robust_front::event_front(&problem, &origin, points, &mut |_| {})
+                .map_err(words)?;
+            return Ok(report::robust_front::json_value(&doc).to_string());
+        }
         let options = ParetoOptions {
             points,
             constraint_values: false,

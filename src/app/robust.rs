@@ -246,7 +246,7 @@ pub fn nominal_counterparts(problem: &Problem) -> Vec<Constraint> {
 
 /// An event as a reader reads it: its name, or for a threshold named by
 /// default, `quantity > limit`.
-fn label(e: &Event) -> String {
+pub(crate) fn label(e: &Event) -> String {
     match e {
         Event::Threshold {
             name,
@@ -366,21 +366,19 @@ fn objective_sample(
     }
 }
 
-/// The robust study of `problem`, started from the nominal optimum and the
-/// baseline. `deadline` (the study's `time_limit` from its start) bounds SORA:
-/// past it no solve, cycle or correction starts, and the status is `time_limit`.
-pub fn robust(problem: &Problem, nominal: &Optimum, deadline: Instant) -> Option<RobustOutcome> {
-    let start = Instant::now();
-    let program = RobustProgram::new(problem)?;
-    let u = problem.uncertainty.as_ref()?;
+/// The engine's settings for the robust study of `problem` with `deadline`
+/// (the file's statistic, samples, targets, verify and seed; the SQP of its
+/// `[optimizer]` with the time left, its KKT tolerance at least
+/// [`STATISTIC_TOLERANCE`] under a statistic).
+pub fn settings(problem: &Problem, deadline: Instant) -> RobustSettings {
     let r = &problem.robust;
-    let space = &program.functions.space;
+    let seed = problem.uncertainty.as_ref().map_or(1, |u| u.seed);
     let mut settings = RobustSettings {
         statistic: r.statistic,
         samples: r.samples,
         targets: r.chance.iter().map(|c| c.probability_max).collect(),
         verify: r.verify,
-        seed: u.seed,
+        seed,
         deadline: Some(deadline),
         ..RobustSettings::default()
     };
@@ -392,12 +390,34 @@ pub fn robust(problem: &Problem, nominal: &Optimum, deadline: Instant) -> Option
     if r.statistic.is_some() {
         settings.sqp.tolerance = settings.sqp.tolerance.max(STATISTIC_TOLERANCE);
     }
-    let mut starts = vec![space.unit(&nominal.design)];
+    settings
+}
+
+/// The robust optimum of `program` (the program of `problem`) by the engine's
+/// SORA and verification, started from `nominal` (the nominal optimum's design,
+/// SI) and the baseline: what `optimize` reports, and each point of a front
+/// against a probability.
+pub fn solve(program: &RobustProgram, nominal: &[f64], settings: &RobustSettings) -> RobustResult {
+    let space = &program.functions.space;
+    let mut starts = vec![space.unit(nominal)];
     let baseline = space.baseline_unit();
     if baseline != starts[0] {
         starts.push(baseline);
     }
-    let result = optimize_robust(&program, &starts, &settings);
+    optimize_robust(program, &starts, settings)
+}
+
+/// The robust study of `problem`, started from the nominal optimum and the
+/// baseline. `deadline` (the study's `time_limit` from its start) bounds SORA:
+/// past it no solve, cycle or correction starts, and the status is `time_limit`.
+pub fn robust(problem: &Problem, nominal: &Optimum, deadline: Instant) -> Option<RobustOutcome> {
+    let start = Instant::now();
+    let program = RobustProgram::new(problem)?;
+    let u = problem.uncertainty.as_ref()?;
+    let r = &problem.robust;
+    let space = &program.functions.space;
+    let settings = settings(problem, deadline);
+    let result = solve(&program, &nominal.design, &settings);
     let design = space.values(&result.design);
     let medians = |d: &[f64]| {
         let m = program.inputs(d);

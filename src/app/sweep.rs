@@ -10,7 +10,7 @@ use crate::sweep::SweepError;
 use super::{AppError, OptionName};
 
 pub use crate::optimize::ParetoDirection;
-pub use crate::sweep::{Method, Shard, Sweep, SweepRow};
+pub use crate::sweep::{FeasibleProbability, Method, Shard, Sweep, SweepRow};
 
 /// The options of `wearopt sweep` (which part of it to run is
 /// [`SweepPlan::part`]'s).
@@ -36,6 +36,9 @@ pub struct SweepPlan {
     /// Which end of the pull-off the study prefers (its `[pareto]` direction;
     /// low without one): what the map's Pareto-optimal designs minimise.
     pub direction: ParetoDirection,
+    /// With chance constraints: the problem and the common random numbers its
+    /// `feasible_probability` columns are counted on.
+    chance: Option<(Box<Problem>, Vec<Vec<f64>>)>,
 }
 
 /// The sampling method named `name` ("sobol", "lhs", "grid").
@@ -82,7 +85,28 @@ pub fn plan(
         options.seed,
     )
     .map_err(sweep_error)?;
+    let chance = problem
+        .uncertainty
+        .as_ref()
+        .filter(|_| !problem.robust.chance.is_empty())
+        .map(|u| {
+            let points =
+                crate::uq::robust::common_points(u.inputs.len(), problem.robust.samples, u.seed);
+            (Box::new(problem.clone()), points)
+        });
+    let sweep = match &chance {
+        Some(_) => sweep.with_chance_columns(
+            problem
+                .robust
+                .chance
+                .iter()
+                .map(|c| c.event.name().to_string())
+                .collect(),
+        ),
+        None => sweep,
+    };
     Ok(SweepPlan {
+        chance,
         name: problem.name.clone(),
         range: 0..sweep.samples(),
         sweep,
@@ -105,8 +129,35 @@ impl SweepPlan {
 
     /// Computes the rows of this shard in order, handing them to `sink` in blocks
     /// as they are final (memory does not grow with N).
-    pub fn run<E>(&self, sink: impl FnMut(&[SweepRow]) -> Result<(), E>) -> Result<(), E> {
-        self.sweep.run(self.range.clone(), sink)
+    /// With chance constraints each row's `feasible_probability` is filled:
+    /// per chance constraint, 1 − P(event) counted on the study's common random
+    /// numbers at the design (`[objective] samples` of them, seed
+    /// `[uncertainty] seed`), with its exact 95 % interval
+    /// ([`crate::uq::robust::counted_probabilities`]).
+    pub fn run<E>(&self, mut sink: impl FnMut(&[SweepRow]) -> Result<(), E>) -> Result<(), E> {
+        let Some((problem, points)) = &self.chance else {
+            return self.sweep.run(self.range.clone(), sink);
+        };
+        let program = super::robust::RobustProgram::new(problem)
+            .expect("a problem with chance constraints has uncertainty, an objective and a design");
+        let count = problem.robust.chance.len();
+        self.sweep.run(self.range.clone(), |rows: &[SweepRow]| {
+            let mut rows = rows.to_vec();
+            for r in &mut rows {
+                let d = self.sweep.unit_point(r.index);
+                r.feasible_probability =
+                    crate::uq::robust::counted_probabilities(&program, &d, points, count)
+                        .into_iter()
+                        .map(|c| {
+                            (c.samples > 0).then(|| FeasibleProbability {
+                                value: 1.0 - c.probability,
+                                interval: [1.0 - c.interval[1], 1.0 - c.interval[0]],
+                            })
+                        })
+                        .collect();
+            }
+            sink(&rows)
+        })
     }
 }
 

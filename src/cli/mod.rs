@@ -410,18 +410,35 @@ pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Re
     }
 }
 
-/// Says on stderr that `command` works on the nominal study of a robust file
-/// (its statistic objective and chance constraints are read by `optimize`
-/// only; docs/robust-design.md).
+/// Says on stderr what of a robust file `command` ("front" or "sweep") works
+/// at the nominal inputs (docs/robust-design.md, "Beyond `optimize`"): a front
+/// against an adhesion measure is of the nominal study (a front against a
+/// probability, `[pareto] event`, is robust and says nothing); a sweep's
+/// columns are nominal beside its `feasible_probability` columns, and it takes
+/// no statistic.
 pub(crate) fn say_nominal_only(
     problem: &wearopt::problem::Problem,
     file: &std::path::Path,
     command: &str,
 ) {
-    if problem.robust.is_robust() {
+    if !problem.robust.is_robust() {
+        return;
+    }
+    let file = file.display();
+    if command == "sweep" {
+        if problem.robust.statistic.is_some() {
+            eprintln!(
+                "note: {file}: the statistic objective is read by `wearopt optimize` and by a front against a probability only; this sweep's columns are at the nominal inputs{}",
+                if problem.robust.chance.is_empty() {
+                    ""
+                } else {
+                    ", beside one feasible_probability column per chance constraint"
+                }
+            );
+        }
+    } else {
         eprintln!(
-            "note: {}: the statistic objective and chance constraints are read by `wearopt optimize` only; this {command} is of the nominal study (every input at its nominal value)",
-            file.display()
+            "note: {file}: the statistic objective and chance constraints are read by `wearopt optimize` and by a front against a probability ([pareto] event = \"stiction\") only; this {command} against an adhesion measure is of the nominal study (every input at its nominal value)"
         );
     }
 }

@@ -134,8 +134,11 @@ impl Observer for Stream<'_> {
 /// Runs `wearopt pareto`.
 pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     let problem = wearopt::app::load(&args.file)?;
-    super::say_nominal_only(&problem, &args.file, "front");
     let origin = args.file.display().to_string();
+    if problem.robust.front.is_some() {
+        return event_front(&args, &problem, &origin);
+    }
+    super::say_nominal_only(&problem, &args.file, "front");
     let mut options = out::options(args.format, args.points);
     options.adhesion = args
         .adhesion
@@ -209,6 +212,57 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         super::write_output(path, &out::svg(&doc.plan.name, &doc.front), "the plot")?;
     }
     Ok(match doc.front.status {
+        FrontStatus::Infeasible => ExitCode::from(1),
+        _ => ExitCode::SUCCESS,
+    })
+}
+
+/// `wearopt pareto` on a front against a probability (`[pareto] event`): one
+/// robust optimum per level, a line on stderr per level on a terminal; the
+/// report written whole at the end. Exit code 1 when no level gives a usable
+/// point.
+fn event_front(
+    args: &ParetoArgs,
+    problem: &wearopt::problem::Problem,
+    origin: &str,
+) -> Result<ExitCode> {
+    for (flag, given) in [
+        ("--adhesion", args.adhesion.is_some()),
+        ("--direction", args.direction.is_some()),
+    ] {
+        if given {
+            return Err(super::usage(format!(
+                "{flag}: {origin} draws a front against the probability of an event ([pareto] event), whose second axis is that probability, the low end preferred; remove {flag}"
+            )));
+        }
+    }
+    for (path, what) in [(&args.out, "the report"), (&args.plot, "the plot")] {
+        if let Some(path) = path {
+            super::check_output(path, what, &[&args.file])?;
+        }
+    }
+    let progress = super::progress::wanted();
+    let doc = wearopt::app::robust_front::event_front(problem, origin, args.points, &mut |p| {
+        if progress {
+            eprintln!(
+                "level {} (P <= {:e}): {} in {:.1} s",
+                p.index,
+                p.level,
+                p.status().as_str(),
+                p.time_seconds
+            );
+        }
+    })?;
+    let text = wearopt::report::robust_front::render(&doc, args.format);
+    super::write_output(
+        args.out.as_deref().unwrap_or(std::path::Path::new("-")),
+        &text,
+        "the report",
+    )?;
+    if let Some(path) = &args.plot {
+        super::write_output(path, &wearopt::report::robust_front::svg(&doc), "the plot")?;
+    }
+    Ok(match doc.status {
         FrontStatus::Infeasible => ExitCode::from(1),
         _ => ExitCode::SUCCESS,
     })

@@ -64,7 +64,9 @@ use toml::Spanned;
 pub(crate) use error::suggest;
 pub use error::{Location, ProblemError};
 pub use notes::{BodyKey, CatalogueProperty, InputNote};
-pub use robust::{ChanceConstraint, Robust};
+pub use robust::{
+    ChanceConstraint, EventFront, Robust, DEFAULT_FRONT_POINTS, MAX_FRONT_POINTS, MIN_FRONT_POINTS,
+};
 pub(crate) use study::DesignKeys;
 pub use study::{Dimensioned, Study};
 pub use topography::{AreaCorrection, ContactModel, ScanSource};
@@ -1719,8 +1721,21 @@ impl Reader<'_> {
         }
 
         // [pareto]
-        if let Some(pareto) = &raw.pareto {
+        // A probability front (`event = …`) is read with the robust keys.
+        if let Some(pareto) = raw.pareto.as_ref().filter(|p| p.get_ref().event.is_none()) {
             let p = pareto.get_ref();
+            for (key, value) in [
+                ("pareto.probability_max", &p.probability_max),
+                ("pareto.probability_min", &p.probability_min),
+            ] {
+                if let Some(v) = value {
+                    return Err(self.invalid(
+                        key,
+                        &v.span(),
+                        "bounds the levels of a probability front: give event = \"stiction\" (or another event) beside it, or remove it",
+                    ));
+                }
+            }
             let adhesion_raw = self.required(
                 &p.adhesion,
                 "pareto.adhesion",

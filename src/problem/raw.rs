@@ -322,6 +322,13 @@ pub struct RawPareto {
     pub adhesion: Option<Spanned<String>>,
     pub points: Option<Spanned<RawInteger>>,
     pub direction: Option<Spanned<String>>,
+    /// A probability front's event (as a chance constraint's): the front's
+    /// second axis is P(event).
+    pub event: Option<Spanned<toml::Value>>,
+    /// The loosest level of P(event) a probability front sweeps.
+    pub probability_max: Option<Spanned<RawQuantity>>,
+    /// The tightest level.
+    pub probability_min: Option<Spanned<RawQuantity>>,
 }
 
 /// `[optimizer]`.

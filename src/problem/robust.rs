@@ -9,7 +9,7 @@ use std::ops::Range;
 use serde::Serialize;
 use toml::Spanned;
 
-use super::raw::{RawConstraint, RawEvent, RawProblem, RawQuantity};
+use super::raw::{RawConstraint, RawEvent, RawPareto, RawProblem, RawQuantity};
 use super::{Accept, ProblemError, Reader, Study, Uncertainty};
 use crate::model::{Quantity, Scene};
 use crate::units::Dimension;
@@ -37,6 +37,57 @@ pub struct ChanceConstraint {
     pub probability_max: f64,
 }
 
+/// The fewest points of a probability front.
+pub const MIN_FRONT_POINTS: i64 = 2;
+/// The most (each point is a robust optimum: seconds each).
+pub const MAX_FRONT_POINTS: i64 = 40;
+/// Points of a probability front when `[pareto] points` is not given: the
+/// decades 1e-1, 1e-2, 1e-3, 1e-4 of the default levels.
+pub const DEFAULT_FRONT_POINTS: usize = 4;
+/// The loosest level when `[pareto] probability_max` is not given.
+pub const DEFAULT_FRONT_PROBABILITY_MAX: f64 = 0.1;
+/// The tightest level when `[pareto] probability_min` is not given.
+pub const DEFAULT_FRONT_PROBABILITY_MIN: f64 = 1e-4;
+
+/// `[pareto] event = …`: the front of the objective (or its statistic) against
+/// P(event), one chance-constrained robust optimum per level of
+/// probability_max (docs/robust-design.md, "A front against a probability").
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct EventFront {
+    /// The event whose probability is the front's second axis.
+    pub event: Event,
+    /// The levels: `points` values of probability_max spaced evenly in log10
+    /// from `probability_max` down to `probability_min`.
+    pub points: usize,
+    /// The loosest level, in (0, 0.5).
+    pub probability_max: f64,
+    /// The tightest level, in (0, probability_max).
+    pub probability_min: f64,
+    /// The file's chance constraint on the same event, which each level
+    /// replaces (an index into [`Robust::chance`]); none: the level is added.
+    pub replaces: Option<usize>,
+}
+
+impl EventFront {
+    /// The levels of probability_max, loosest first: evenly spaced in log10
+    /// between the ends (both included).
+    pub fn levels(&self) -> Vec<f64> {
+        let (a, b) = (self.probability_max.log10(), self.probability_min.log10());
+        let n = self.points.max(2);
+        (0..n)
+            .map(|i| {
+                if i == 0 {
+                    self.probability_max
+                } else if i + 1 == n {
+                    self.probability_min
+                } else {
+                    10f64.powf(a + (b - a) * i as f64 / (n - 1) as f64)
+                }
+            })
+            .collect()
+    }
+}
+
 /// What makes a study robust; empty (the default) for a nominal study.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Robust {
@@ -48,6 +99,8 @@ pub struct Robust {
     pub chance: Vec<ChanceConstraint>,
     /// What to do when a sampled probability exceeds its target.
     pub verify: Verify,
+    /// `[pareto] event = …`: a front against a probability, if asked.
+    pub front: Option<EventFront>,
 }
 
 impl Default for Robust {
@@ -57,6 +110,7 @@ impl Default for Robust {
             samples: DEFAULT_STATISTIC_SAMPLES,
             chance: Vec::new(),
             verify: Verify::Report,
+            front: None,
         }
     }
 }
@@ -171,7 +225,11 @@ impl Reader<'_> {
                 };
             }
         }
-        if robust.is_robust() && !study.has_design() {
+        if let Some(pareto) = &raw.pareto {
+            robust.front = self.event_front(pareto, scene, uncertainty, &robust)?;
+        }
+        let robust_or_front = robust.is_robust() || robust.front.is_some();
+        if robust_or_front && !study.has_design() {
             let span = uncertainty_span.unwrap_or(0..0);
             return Err(self.invalid(
                 "design",
@@ -179,7 +237,7 @@ impl Reader<'_> {
                 "a statistic objective or a chance constraint needs something to vary: add a [design] table with at least one variable",
             ));
         }
-        if robust.is_robust() && !study.materials.is_empty() {
+        if robust_or_front && !study.materials.is_empty() {
             let span = raw.design.as_ref().map_or(0..0, |d| d.span());
             return Err(self.invalid(
                 "design.materials",
@@ -187,7 +245,7 @@ impl Reader<'_> {
                 "a ranking of catalogue materials is a nominal study: remove materials, or the statistic and chance constraints",
             ));
         }
-        if robust.is_robust()
+        if robust_or_front
             && scene
                 .environment
                 .is_some_and(|e| e.humidity_range.is_some())
@@ -199,6 +257,14 @@ impl Reader<'_> {
                 "a robust study takes the humidity as an uncertain input, not a range: give one humidity and add [uncertainty.inputs] relative_humidity = { distribution = \"uniform\", min = 0.2, max = 0.8 }",
             ));
         }
+        if robust.front.is_some() && study.objective.is_none() {
+            let span = raw.pareto.as_ref().map_or(0..0, |p| p.span());
+            return Err(self.missing(
+                "objective.minimize",
+                Some(&span),
+                "a front against a probability minimises something at each level: add [objective] minimize = \"wear_rate\"",
+            ));
+        }
         if !robust.chance.is_empty() && study.objective.is_none() {
             let span = raw.constraint[robust.chance[0].index].span();
             return Err(self.missing(
@@ -208,6 +274,89 @@ impl Reader<'_> {
             ));
         }
         Ok(robust)
+    }
+
+    /// `[pareto] event = …` and its levels (None when the section has no event).
+    fn event_front(
+        &self,
+        pareto: &Spanned<RawPareto>,
+        scene: &Scene,
+        uncertainty: Option<&Uncertainty>,
+        robust: &Robust,
+    ) -> Result<Option<EventFront>, ProblemError> {
+        let p = pareto.get_ref();
+        let Some(event) = &p.event else {
+            return Ok(None);
+        };
+        let Some(u) = uncertainty else {
+            return Err(self.invalid(
+                "pareto.event",
+                &event.span(),
+                "a front against the probability of an event samples the uncertain inputs, and the file has none: add [uncertainty.inputs], e.g. sigma = { distribution = \"lognormal\", median = \"3 nm\", factor = 1.5 }",
+            ));
+        };
+        for (key, value) in [
+            ("pareto.adhesion", p.adhesion.as_ref().map(|v| v.span())),
+            ("pareto.direction", p.direction.as_ref().map(|v| v.span())),
+        ] {
+            if let Some(span) = value {
+                return Err(self.invalid(
+                    key,
+                    &span,
+                    "a front against P(event) has the probability as its second axis, the low end preferred: remove this key, or event",
+                ));
+            }
+        }
+        let event = self.chance_event("pareto.event", event, scene, u)?;
+        let points = match &p.points {
+            None => DEFAULT_FRONT_POINTS,
+            Some(v) => self.integer(
+                "pareto.points",
+                v,
+                MIN_FRONT_POINTS,
+                MAX_FRONT_POINTS,
+                "levels of probability on the front, each a robust optimum",
+            )? as usize,
+        };
+        let level = |key: &str, v: &Option<Spanned<RawQuantity>>, default: f64| match v {
+            Some(v) => self.quantity(key, v, probability_accept()),
+            None => Ok(default),
+        };
+        let probability_max = level(
+            "pareto.probability_max",
+            &p.probability_max,
+            DEFAULT_FRONT_PROBABILITY_MAX,
+        )?;
+        let probability_min = level(
+            "pareto.probability_min",
+            &p.probability_min,
+            DEFAULT_FRONT_PROBABILITY_MIN,
+        )?;
+        if probability_min >= probability_max {
+            let (key, span) = match (&p.probability_min, &p.probability_max) {
+                (Some(v), _) => ("pareto.probability_min", v.span()),
+                (None, Some(v)) => ("pareto.probability_max", v.span()),
+                (None, None) => ("pareto.event", pareto.span()),
+            };
+            return Err(self.invalid(
+                key,
+                &span,
+                format!(
+                    "the levels run from probability_max = {probability_max:e} down to probability_min = {probability_min:e}: probability_min must be the smaller"
+                ),
+            ));
+        }
+        let replaces = robust
+            .chance
+            .iter()
+            .position(|c| c.event.name() == event.name());
+        Ok(Some(EventFront {
+            event,
+            points,
+            probability_max,
+            probability_min,
+            replaces,
+        }))
     }
 
     /// A chance constraint's event: a built-in or `[[uncertainty.event]]` name, or

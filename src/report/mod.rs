@@ -26,6 +26,7 @@ pub mod optimize;
 pub mod pareto;
 pub(crate) mod png;
 pub mod robust;
+pub mod robust_front;
 pub mod roughness;
 pub mod svg;
 pub mod sweep;

@@ -54,7 +54,7 @@ fn verdict(r: &RobustOutcome) -> String {
     }
 }
 
-fn estimate_words(e: &Estimate, unit: &str) -> String {
+pub(crate) fn estimate_words(e: &Estimate, unit: &str) -> String {
     if !e.value.is_finite() {
         return "—".into();
     }
@@ -73,7 +73,7 @@ fn estimate_words(e: &Estimate, unit: &str) -> String {
     )
 }
 
-fn probability_words(a: &EventResult) -> String {
+pub(crate) fn probability_words(a: &EventResult) -> String {
     match (a.probability, a.interval, a.upper_bound) {
         (_, _, Some(b)) => format!("< {} (no failure seen)", sig_exp(b, 2)),
         (Some(p), Some(i), _) => format!(
@@ -87,7 +87,7 @@ fn probability_words(a: &EventResult) -> String {
     }
 }
 
-fn method_word(a: &EventResult) -> &'static str {
+pub(crate) fn method_word(a: &EventResult) -> &'static str {
     match a.sampling.as_ref().map(|s| s.method) {
         Some(SamplingMethod::ImportanceSampling) => "importance sampling",
         Some(SamplingMethod::MonteCarlo) => "Monte Carlo",
@@ -261,7 +261,7 @@ pub fn text(name: &str, r: &RobustOutcome, nominal: &Optimum) -> String {
     out
 }
 
-fn estimate_json(e: &Estimate) -> Value {
+pub(crate) fn estimate_json(e: &Estimate) -> Value {
     let f = |x: f64| x.is_finite().then_some(x);
     json!({
         "value": f(e.value),

@@ -127,13 +127,28 @@ pub fn head(format: Encoding, h: &Head) -> String {
                 out.push(',');
                 out.push_str(c);
             }
-            out.push_str(",feasible\n");
+            out.push_str(",feasible");
+            for e in h.sweep.chance_columns() {
+                let _ = write!(
+                    out,
+                    ",feasible_probability_{e},feasible_probability_{e}_low,feasible_probability_{e}_high"
+                );
+            }
+            out.push('\n');
             out
         }
         Encoding::Json => {
             let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
+            let chance = if h.sweep.chance_columns().is_empty() {
+                String::new()
+            } else {
+                format!(
+                    "\n  \"feasible_probability_columns\": {},",
+                    s(json!(h.sweep.chance_columns()))
+                )
+            };
             format!(
-                "{{\n  \"fingerprint\": {},\n  \"shard\": {},\n  \"version\": {},\n  \"build\": {},\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},\n  \"rows\": [",
+                "{{\n  \"fingerprint\": {},\n  \"shard\": {},\n  \"version\": {},\n  \"build\": {},\n  \"name\": {},\n  \"method\": {},\n  \"seed\": {},\n  \"samples\": {},\n  \"design_variables\": {},\n  \"constraint_columns\": {},{chance}\n  \"rows\": [",
                 s(json!(print)),
                 s(json!(shard)),
                 s(json!(env!("CARGO_PKG_VERSION"))),
@@ -194,6 +209,15 @@ pub(crate) fn row_line(format: Encoding, sweep: &Sweep, r: &SweepRow) -> String 
                 out.push_str(&csv_cell(*v));
             }
             let _ = write!(out, ",{}", r.feasible);
+            for v in &r.feasible_probability {
+                let _ = write!(
+                    out,
+                    ",{},{},{}",
+                    csv_cell(v.map(|f| f.value)),
+                    csv_cell(v.map(|f| f.interval[0])),
+                    csv_cell(v.map(|f| f.interval[1]))
+                );
+            }
             out
         }
         Encoding::Json => {
@@ -213,8 +237,27 @@ pub(crate) fn row_line(format: Encoding, sweep: &Sweep, r: &SweepRow) -> String 
             );
             // Written by hand: the key order is part of the format (index first).
             let s = |v: Value| serde_json::to_string(&v).unwrap_or_else(|_| "null".into());
+            let chance = if r.feasible_probability.is_empty() {
+                String::new()
+            } else {
+                let cells: Vec<String> = sweep
+                    .chance_columns()
+                    .iter()
+                    .zip(&r.feasible_probability)
+                    .map(|(e, v)| {
+                        let inner = v.map_or("null".to_string(), |f| {
+                            object(
+                                [("value", json!(f.value)), ("interval", json!(f.interval))]
+                                    .into_iter(),
+                            )
+                        });
+                        format!("{}:{inner}", s(json!(e)))
+                    })
+                    .collect();
+                format!(",\"feasible_probability\":{{{}}}", cells.join(","))
+            };
             format!(
-                "    {{\"index\":{},\"design\":{},\"status\":{},\"wear_rate\":{},\"pull_off_force\":{},\"log10_pull_off_force\":{},\"real_area\":{},\"constraints\":{},\"feasible\":{}}}",
+                "    {{\"index\":{},\"design\":{},\"status\":{},\"wear_rate\":{},\"pull_off_force\":{},\"log10_pull_off_force\":{},\"real_area\":{},\"constraints\":{},\"feasible\":{}{chance}}}",
                 r.index,
                 design,
                 s(json!(r.status.as_str())),

@@ -189,6 +189,20 @@ pub struct SweepRow {
     pub constraints: Vec<Option<f64>>,
     /// Status ok and every constraint met (to the optimiser's feasibility tolerance).
     pub feasible: bool,
+    /// Per [`Sweep::chance_columns`]: P(the event does not occur) at the
+    /// design with its 95 % interval, filled by the caller that samples the
+    /// scatter (`app::sweep`); empty without chance constraints.
+    pub feasible_probability: Vec<Option<FeasibleProbability>>,
+}
+
+/// P(an event does not occur) at a design, counted on a fixed sample of the
+/// uncertain inputs (docs/robust-design.md, "`sweep`: feasible_probability").
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FeasibleProbability {
+    /// 1 − events / samples.
+    pub value: f64,
+    /// Its exact 95 % interval (Clopper–Pearson on the count).
+    pub interval: [f64; 2],
 }
 
 /// A sweep ready to run: the scaled design space, the constraints, the sequence.
@@ -200,6 +214,7 @@ pub struct Sweep {
     seed: u64,
     samples: u64,
     grid_levels: u64,
+    chance_columns: Vec<String>,
 }
 
 impl Sweep {
@@ -280,7 +295,20 @@ impl Sweep {
             seed,
             samples,
             grid_levels,
+            chance_columns: Vec::new(),
         })
+    }
+
+    /// The sweep with one `feasible_probability` column per chance constraint
+    /// (event names, in file order), whose values the caller fills.
+    pub fn with_chance_columns(mut self, events: Vec<String>) -> Sweep {
+        self.chance_columns = events;
+        self
+    }
+
+    /// The chance constraints' events with a `feasible_probability` column.
+    pub fn chance_columns(&self) -> &[String] {
+        &self.chance_columns
     }
 
     /// The number of designs, N.
@@ -353,6 +381,7 @@ impl Sweep {
                 .map(|&q| finite(quantity_value(q, &ev, &scene)))
                 .collect(),
             feasible,
+            feasible_probability: Vec::new(),
         }
     }
 

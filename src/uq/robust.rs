@@ -1236,6 +1236,98 @@ pub fn chance_probabilities<P: UncertainProgram>(
         .collect()
 }
 
+/// The exact (Clopper–Pearson) 95 % interval of a binomial proportion: `k`
+/// events in `n` trials give [p_lo, p_hi] with P(K ≥ k; p_lo) = 0.025 and
+/// P(K ≤ k; p_hi) = 0.025 (p_lo = 0 for k = 0, p_hi = 1 for k = n; for k = 0,
+/// p_hi = 1 − 0.025^(1/n) ≈ 3.69/n). Solved by bisection on the binomial CDF
+/// to 1e-12 relative; `n` = 0 gives [0, 1]. Tested against closed forms in
+/// `tests::clopper_pearson_closed_forms`.
+pub fn clopper_pearson(k: u64, n: u64) -> super::Interval {
+    use super::special::binomial_cdf;
+    if n == 0 {
+        return [0.0, 1.0];
+    }
+    let k = k.min(n);
+    // The p in (0, 1) where the decreasing f(p) = P(K ≤ m; n, p) crosses `level`.
+    let crossing = |m: u64, level: f64| {
+        let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if binomial_cdf(m as i64, n, mid) > level {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if hi - lo <= 1e-12 * hi {
+                break;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    // P(K ≥ k; p_lo) = 0.025 ⇔ P(K ≤ k − 1; p_lo) = 0.975.
+    let lower = if k == 0 { 0.0 } else { crossing(k - 1, 0.975) };
+    let upper = if k == n { 1.0 } else { crossing(k, 0.025) };
+    [lower, upper]
+}
+
+/// A probability counted on a fixed sample: `events` of `samples` realisations
+/// where the event happened (model failures left out of both).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Counted {
+    /// Realisations where the event happened (limit state ≤ 0).
+    pub events: u64,
+    /// Realisations where the model gave a value.
+    pub samples: u64,
+    /// Realisations where the model failed (not counted).
+    pub failed: u64,
+    /// events / samples (NaN with no samples).
+    pub probability: f64,
+    /// Its exact 95 % interval ([`clopper_pearson`]).
+    pub interval: super::Interval,
+}
+
+/// P(g_j ≤ 0) of each of the first `count` limit states at design d, counted on
+/// `points` (u in standard normal space, e.g. [`common_points`]): one model
+/// evaluation per point for all limit states together, in parallel, summed in
+/// order. A cheap estimate (its resolution is 1/N; no event in N gives the
+/// interval [0, 1 − 0.025^(1/N)]), for a sweep's columns; an optimum's are
+/// verified by [`chance_probabilities`].
+pub fn counted_probabilities<P: UncertainProgram>(
+    program: &P,
+    d: &[f64],
+    points: &[Vec<f64>],
+    count: usize,
+) -> Vec<Counted> {
+    let model = program.inputs(d);
+    let states: Vec<Option<Vec<f64>>> = points
+        .par_iter()
+        .map(|u| {
+            program
+                .outputs(d, &model.to_physical(u))
+                .map(|o| o.limit_states)
+                .filter(|g| g.len() >= count && g[..count].iter().all(|v| v.is_finite()))
+        })
+        .collect();
+    let failed = states.iter().filter(|s| s.is_none()).count() as u64;
+    let samples = points.len() as u64 - failed;
+    (0..count)
+        .map(|j| {
+            let events = states.iter().flatten().filter(|g| g[j] <= 0.0).count() as u64;
+            Counted {
+                events,
+                samples,
+                failed,
+                probability: if samples > 0 {
+                    events as f64 / samples as f64
+                } else {
+                    f64::NAN
+                },
+                interval: clopper_pearson(events, samples),
+            }
+        })
+        .collect()
+}
+
 /// Whether a sampled probability violates its target: the lower end of its
 /// 95 % interval exceeds `target` (no interval, as with FORM alone or no failure
 /// seen: not violated).
@@ -1309,6 +1401,29 @@ mod tests {
         // Type 7: h = 0.95·99 = 94.05 → 95 + 0.05.
         assert!((p.value - 95.05).abs() < 1e-12, "{p:?}");
         assert!(estimate(&[1.0], Statistic::Mean).value.is_nan());
+    }
+
+    /// Clopper–Pearson closed forms: k = 0 gives [0, 1 − 0.025^(1/n)], k = n gives
+    /// [0.025^(1/n), 1]; n = 1, k = 0: [0, 0.975]. Symmetry: (k, n) ↔ (n − k, n).
+    #[test]
+    fn clopper_pearson_closed_forms() {
+        for n in [1_u64, 10, 256, 4096] {
+            let a = clopper_pearson(0, n);
+            let hi = 1.0 - 0.025_f64.powf(1.0 / n as f64);
+            assert_eq!(a[0], 0.0);
+            assert!((a[1] - hi).abs() <= 1e-10 * hi, "{n}: {a:?} vs {hi}");
+            let b = clopper_pearson(n, n);
+            assert!((b[0] - 0.025_f64.powf(1.0 / n as f64)).abs() < 1e-10);
+            assert_eq!(b[1], 1.0);
+        }
+        let (x, y) = (clopper_pearson(3, 20), clopper_pearson(17, 20));
+        assert!((x[0] - (1.0 - y[1])).abs() < 1e-10 && (x[1] - (1.0 - y[0])).abs() < 1e-10);
+        // Independently: bisection on the direct binomial sum in Python,
+        // 0.0320709372 and 0.3789268265 (R's binom.test(3, 20) gives the same).
+        assert!(
+            (x[0] - 0.032_070_937_2).abs() < 1e-9 && (x[1] - 0.378_926_826_5).abs() < 1e-9,
+            "{x:?}"
+        );
     }
 
     /// A linear g = 3 − u₀ (β = 3 exactly) seen through x = 2 + 0.5 u: the MPTP on

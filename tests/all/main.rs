@@ -39,6 +39,7 @@ mod reference;
 mod reports;
 mod robust;
 mod robust_design;
+mod robust_pareto;
 mod search_cost;
 mod stability;
 mod stress_assisted_wear;

@@ -1,0 +1,481 @@
+//! The report of a front against a probability (`wearopt pareto` with
+//! `[pareto] event = …`; docs/robust-design.md, "A front against a
+//! probability"): text, JSON, CSV and HTML with the front plotted on a log axis
+//! of the probability. Every point carries its statistic with its interval, its
+//! sampled probability with its interval and its status; a point whose sampled
+//! probability exceeds its level beyond the interval is marked, not hidden.
+
+use std::fmt::Write as _;
+
+use serde_json::{json, Value};
+
+use super::robust::{estimate_json, estimate_words, method_word, probability_words};
+use super::svg::{Axis, LinePlot, Marker, Series};
+use super::{number, sig_exp};
+use crate::app::robust_front::{EventFrontDocument, LevelPoint};
+use crate::units::format_quantity;
+
+/// What the first axis reads as: "p95 of wear_rate".
+fn statistic_name(doc: &EventFrontDocument) -> String {
+    match doc.statistic {
+        Some(s) => format!("{} of {}", s.as_str(), doc.objective.as_str()),
+        None => format!("{} at the medians", doc.objective.as_str()),
+    }
+}
+
+fn unit(doc: &EventFrontDocument) -> &'static str {
+    super::objective_unit(doc.objective)
+}
+
+fn status_sentence(doc: &EventFrontDocument) -> String {
+    use crate::optimize::pareto::FrontStatus;
+    match doc.status {
+        FrontStatus::Ok => format!(
+            "ok: {} of {} levels give a robust optimum; lower P({}) costs {}",
+            doc.points.iter().filter(|p| p.usable()).count(),
+            doc.points.len(),
+            doc.label,
+            statistic_name(doc)
+        ),
+        FrontStatus::NoTradeOff => format!(
+            "no_trade_off: every level gives the same {}: P({}) does not bind over these levels",
+            statistic_name(doc),
+            doc.label
+        ),
+        FrontStatus::Infeasible => {
+            "infeasible: no level gives a robust optimum (each point's status below)".to_string()
+        }
+    }
+}
+
+/// The statistic with its interval; the value alone without a statistic
+/// (the objective at the medians has no sampling error).
+fn statistic_words(doc: &EventFrontDocument, p: &LevelPoint) -> String {
+    match doc.statistic {
+        Some(_) => estimate_words(&p.statistic, unit(doc)),
+        None => super::si(p.statistic.value, unit(doc), 4),
+    }
+}
+
+fn mark(p: &LevelPoint) -> &'static str {
+    if p.violated {
+        "VIOLATED"
+    } else if !p.usable() {
+        "—"
+    } else if p.on_front {
+        "front"
+    } else {
+        "dominated"
+    }
+}
+
+/// The plain-text report.
+pub fn text(doc: &EventFrontDocument) -> String {
+    let mut out = String::new();
+    let u = unit(doc);
+    let _ = writeln!(out, "{}", doc.name);
+    let _ = writeln!(
+        out,
+        "Front of {} against P({}): one robust optimum per level of probability_max ({} levels, {} down to {}{})",
+        statistic_name(doc),
+        doc.label,
+        doc.levels.len(),
+        sig_exp(doc.levels[0], 2),
+        sig_exp(*doc.levels.last().unwrap_or(&f64::NAN), 2),
+        if doc.statistic.is_some() {
+            format!("; the statistic over {} common random numbers", doc.samples)
+        } else {
+            String::new()
+        }
+    );
+    let _ = writeln!(out, "Status: {}", status_sentence(doc));
+    for h in &doc.held {
+        let _ = writeln!(
+            out,
+            "Held at every point: P({}) <= {}",
+            h.label,
+            sig_exp(h.target, 2)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "Nominal optimum (every input at its median, each event held off there): {} = {}, P({}) = {} by {}",
+        doc.objective.as_str(),
+        super::si(doc.nominal_objective, u, 4),
+        doc.label,
+        probability_words(&doc.nominal_probability),
+        method_word(&doc.nominal_probability)
+    );
+    let _ = writeln!(out);
+    let _ = writeln!(
+        out,
+        "  #  level      {:<34}  {:<46}  {:<26}  front",
+        match doc.statistic {
+            Some(_) => format!("{} [95 %]", statistic_name(doc)),
+            None => statistic_name(doc),
+        },
+        format!("P({}) sampled [95 %]", doc.label),
+        "status"
+    );
+    for p in &doc.points {
+        let _ = writeln!(
+            out,
+            "{:>3}  {:<9}  {:<34}  {:<46}  {:<26}  {}",
+            p.index,
+            sig_exp(p.level, 2),
+            statistic_words(doc, p),
+            format!(
+                "{} ({})",
+                probability_words(&p.probability),
+                method_word(&p.probability)
+            ),
+            p.status().as_str(),
+            mark(p)
+        );
+    }
+    let _ = writeln!(out);
+    let _ = writeln!(out, "Designs:");
+    let mut header = String::from("  #");
+    for n in &doc.names {
+        let _ = write!(header, "  {:>16}", n.as_str());
+    }
+    let _ = writeln!(out, "{header}  {:>16}", "at the medians");
+    for p in &doc.points {
+        let mut row = format!("{:>3}", p.index);
+        for (n, v) in doc.names.iter().zip(&p.design) {
+            let _ = write!(
+                row,
+                "  {:>16}",
+                format_quantity(*v, super::design_dimension(*n))
+            );
+        }
+        let _ = writeln!(out, "{row}  {:>16}", super::si(p.at_medians, u, 4));
+    }
+    if doc.points.iter().any(|p| p.violated) {
+        let _ = writeln!(
+            out,
+            "\nVIOLATED: sampling at the design finds P({}) above its level beyond its 95 % interval (FORM is unconservative there); [uncertainty] verify = \"correct\" moves the target by the sampled excess and solves again.",
+            doc.label
+        );
+    }
+    let _ = writeln!(out, "\nTime: {:.1} s", doc.time_seconds);
+    out
+}
+
+fn point_json(doc: &EventFrontDocument, p: &LevelPoint) -> Value {
+    let design: serde_json::Map<String, Value> = doc
+        .names
+        .iter()
+        .zip(&p.design)
+        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
+        .collect();
+    let r = &p.result;
+    let chance: Vec<Value> = r
+        .chance
+        .iter()
+        .map(|c| {
+            json!({
+                "target": c.target,
+                "probability": c.verification.probability,
+                "probability_interval": c.verification.interval,
+                "violated": c.violated,
+            })
+        })
+        .collect();
+    json!({
+        "index": p.index,
+        "level": p.level,
+        "design": design,
+        "statistic": estimate_json(&p.statistic).get("value").cloned(),
+        "statistic_interval": estimate_json(&p.statistic).get("interval").cloned(),
+        "statistic_verified": r.objective_verified.as_ref().map(estimate_json),
+        "at_medians": p.at_medians.is_finite().then_some(p.at_medians),
+        "probability": p.probability.probability,
+        "probability_interval": p.probability.interval,
+        "probability_upper_bound": p.probability.upper_bound,
+        "method": p.probability.sampling.as_ref().map(|s| s.method),
+        "form_beta": p.probability.form.beta,
+        "status": r.status,
+        "violated": p.violated,
+        "on_front": p.on_front,
+        "chance_constraints": chance,
+        "cycles": r.cycles,
+        "corrections": r.corrections,
+        "evaluations": r.evaluations,
+        "time_seconds": p.time_seconds,
+    })
+}
+
+/// The JSON document (keys in docs/robust-design.md, "A front against a
+/// probability").
+pub fn json_value(doc: &EventFrontDocument) -> Value {
+    let design: serde_json::Map<String, Value> = doc
+        .names
+        .iter()
+        .zip(&doc.nominal_design)
+        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
+        .collect();
+    json!({
+        "name": doc.name,
+        "status": doc.status.as_str(),
+        "front_measure": "probability",
+        "event": doc.event,
+        "event_label": doc.label,
+        "objective": doc.objective.as_str(),
+        "statistic": doc.statistic,
+        "samples": doc.samples,
+        "design_variables": doc.names.iter().map(|n| n.as_str()).collect::<Vec<_>>(),
+        "uncertain_inputs": doc.inputs.iter().map(|n| n.as_str()).collect::<Vec<_>>(),
+        "held_chance_constraints": doc.held.iter().map(|h| json!({"event": h.event, "target": h.target})).collect::<Vec<_>>(),
+        "levels": doc.levels,
+        "points": doc.points.iter().map(|p| point_json(doc, p)).collect::<Vec<_>>(),
+        "nominal_optimum": {
+            "design": design,
+            "objective": doc.nominal_objective,
+            "probability": doc.nominal_probability.probability,
+            "probability_interval": doc.nominal_probability.interval,
+            "probability_upper_bound": doc.nominal_probability.upper_bound,
+        },
+        "time_seconds": doc.time_seconds,
+    })
+}
+
+/// The JSON text (pretty, ending in a newline).
+pub fn json(doc: &EventFrontDocument) -> String {
+    let mut s = serde_json::to_string_pretty(&json_value(doc)).unwrap_or_default();
+    s.push('\n');
+    s
+}
+
+/// The CSV header.
+pub fn csv_header(doc: &EventFrontDocument) -> String {
+    let mut out = String::from("index,level");
+    for n in &doc.names {
+        out.push(',');
+        out.push_str(n.as_str());
+    }
+    out.push_str(",statistic,statistic_low,statistic_high,at_medians,probability,probability_low,probability_high,status,on_front\n");
+    out
+}
+
+/// One CSV row.
+pub fn csv_row(doc: &EventFrontDocument, p: &LevelPoint) -> String {
+    let cell = |v: Option<f64>| v.filter(|x| x.is_finite()).map(number).unwrap_or_default();
+    let mut out = format!("{},{}", p.index, number(p.level));
+    for v in &p.design {
+        out.push(',');
+        out.push_str(&number(*v));
+    }
+    let i = p.probability.interval;
+    let _ = writeln!(
+        out,
+        ",{},{},{},{},{},{},{},{},{}",
+        cell(Some(p.statistic.value)),
+        cell(Some(p.statistic.interval[0])),
+        cell(Some(p.statistic.interval[1])),
+        cell(Some(p.at_medians)),
+        cell(p.probability.probability),
+        cell(i.map(|i| i[0])),
+        cell(i.map(|i| i[1]).or(p.probability.upper_bound)),
+        p.status().as_str(),
+        p.on_front
+    );
+    let _ = doc;
+    out
+}
+
+/// The CSV: a header and one row per level.
+pub fn csv(doc: &EventFrontDocument) -> String {
+    let mut out = csv_header(doc);
+    for p in &doc.points {
+        out.push_str(&csv_row(doc, p));
+    }
+    out
+}
+
+/// The front as SVG: the statistic against P(event) on a log axis, usable
+/// points joined, violated points and the nominal optimum marked apart.
+pub fn svg(doc: &EventFrontDocument) -> String {
+    let pt = |p: &LevelPoint| {
+        p.probability
+            .probability
+            .filter(|q| *q > 0.0)
+            .map(|q| (q, p.statistic.value))
+    };
+    let front: Vec<(f64, f64)> = doc
+        .points
+        .iter()
+        .filter(|p| p.usable() && !p.violated)
+        .filter_map(pt)
+        .collect();
+    let violated: Vec<(f64, f64)> = doc
+        .points
+        .iter()
+        .filter(|p| p.violated)
+        .filter_map(pt)
+        .collect();
+    let levels: Vec<(f64, f64)> = doc
+        .points
+        .iter()
+        .filter(|p| p.usable())
+        .map(|p| (p.level, p.statistic.value))
+        .collect();
+    let u = unit(doc);
+    // Within a decade a linear axis shows the trade-off; a log axis flattens it.
+    let (lo, hi) = doc
+        .points
+        .iter()
+        .filter(|p| p.usable() && p.statistic.value > 0.0)
+        .fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+            (a.min(p.statistic.value), b.max(p.statistic.value))
+        });
+    let mut y = if hi > 0.0 && hi < 10.0 * lo {
+        Axis::linear(statistic_name(doc))
+    } else {
+        Axis::log(statistic_name(doc))
+    };
+    if !u.is_empty() {
+        y = y.with_unit(u);
+    }
+    let mut plot = LinePlot::new(
+        format!("{} against P({})", statistic_name(doc), doc.label),
+        Axis::log(format!("P({}) sampled at the design", doc.label)),
+        y,
+    )
+    .with_series(Series::new("robust optimum (verified)", front).with_marker(Marker::Circle))
+    .with_series(
+        Series::new("its level probability_max", levels)
+            .with_marker(Marker::Cross)
+            .without_line(),
+    );
+    if !violated.is_empty() {
+        plot = plot.with_series(
+            Series::new("level violated by sampling", violated)
+                .with_marker(Marker::Triangle)
+                .without_line(),
+        );
+    }
+    plot.to_svg()
+}
+
+/// The HTML page: status, the front plot, the points with their intervals and
+/// statuses, and their designs.
+pub fn html(doc: &EventFrontDocument) -> String {
+    let u = unit(doc);
+    let mut p = super::html::Page::new(&format!("wearopt pareto — {}", doc.name));
+    p.paragraph(&format!("Status: {}", status_sentence(doc)), Some("status"));
+    p.paragraph(
+        &format!(
+            "Each point is the robust optimum of the study with P({}) ≤ its level (SORA, then the design's probability sampled: importance sampling or Monte Carlo to a coefficient of variation of 0.02){}.",
+            doc.label,
+            match doc.statistic {
+                Some(_) => format!(
+                    ", {} taken over {} common random numbers",
+                    statistic_name(doc),
+                    doc.samples
+                ),
+                None => String::new(),
+            }
+        ),
+        None,
+    );
+    if !doc.held.is_empty() {
+        p.list(
+            &doc.held
+                .iter()
+                .map(|h| {
+                    format!(
+                        "held at every point: P({}) ≤ {}",
+                        h.label,
+                        sig_exp(h.target, 2)
+                    )
+                })
+                .collect::<Vec<_>>(),
+            "note",
+        );
+    }
+    p.paragraph(
+        &format!(
+            "The nominal optimum (every input at its median, each event held off there): {} = {}, P({}) = {}.",
+            doc.objective.as_str(),
+            super::si(doc.nominal_objective, u, 4),
+            doc.label,
+            probability_words(&doc.nominal_probability)
+        ),
+        None,
+    );
+    p.figure(
+        "front",
+        &svg(doc),
+        &format!(
+            "{} against the sampled P({}) (log axis); crosses: the level each point was solved at, triangles: points whose sampled P exceeds their level.",
+            statistic_name(doc),
+            doc.label
+        ),
+    );
+    let stat_header = match doc.statistic {
+        Some(_) => format!("{} [95 %]", statistic_name(doc)),
+        None => statistic_name(doc),
+    };
+    let p_header = format!("P({}) [95 %]", doc.label);
+    let rows: Vec<Vec<String>> = doc
+        .points
+        .iter()
+        .map(|q| {
+            vec![
+                q.index.to_string(),
+                sig_exp(q.level, 2),
+                statistic_words(doc, q),
+                probability_words(&q.probability),
+                method_word(&q.probability).to_string(),
+                q.status().as_str().to_string(),
+                mark(q).to_string(),
+            ]
+        })
+        .collect();
+    p.table(
+        &[
+            "#",
+            "level",
+            &stat_header,
+            &p_header,
+            "method",
+            "status",
+            "front",
+        ],
+        &rows,
+        &[4, 5, 6],
+    );
+    let mut header: Vec<&str> = vec!["#"];
+    header.extend(doc.names.iter().map(|n| n.as_str()));
+    let medians = format!("{} at the medians", doc.objective.as_str());
+    header.push(&medians);
+    let rows: Vec<Vec<String>> = doc
+        .points
+        .iter()
+        .map(|q| {
+            let mut r = vec![q.index.to_string()];
+            r.extend(
+                doc.names
+                    .iter()
+                    .zip(&q.design)
+                    .map(|(n, v)| format_quantity(*v, super::design_dimension(*n))),
+            );
+            r.push(super::si(q.at_medians, u, 4));
+            r
+        })
+        .collect();
+    p.heading("Designs");
+    p.table(&header, &rows, &[]);
+    p.finish()
+}
+
+/// The document in `format`.
+pub fn render(doc: &EventFrontDocument, format: super::Format) -> String {
+    match format {
+        super::Format::Json => json(doc),
+        super::Format::Csv => csv(doc),
+        super::Format::Html => html(doc),
+        _ => text(doc),
+    }
+}
