@@ -205,7 +205,7 @@ pub fn text(doc: &AsperityDocument) -> String {
             "P (N)", "δ (m)", "a (m)"
         ));
     }
-    t.push_str("\n");
+    t.push('\n');
     for p in &c.points {
         t.push_str(&format!(
             "  {:>12}  {:>14}  {:>12}  {:<width$}",
@@ -219,7 +219,7 @@ pub fn text(doc: &AsperityDocument) -> String {
                 t.push_str(&format!("  {:>13}", sig(x, 6)));
             }
         }
-        t.push_str("\n");
+        t.push('\n');
     }
     t
 }
