@@ -23,6 +23,16 @@ pub const COLUMNS: [&str; 4] = ["interference", "load", "contact_radius", "branc
 /// the load (N), the interference and the contact radius (m).
 pub const SI_COLUMNS: [&str; 3] = ["load_n", "interference_m", "contact_radius_m"];
 
+/// An SI value for people: six significant figures in scientific notation
+/// (newtons and metres span many decades), zero as 0.
+fn sci(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else {
+        format!("{x:.5e}")
+    }
+}
+
 /// A row's load (N), interference (m) and contact radius (m).
 fn si(sphere: &SiSphere, p: &CurvePoint) -> [f64; 3] {
     [
@@ -75,8 +85,8 @@ fn mark_words(doc: &AsperityDocument, m: &CurveMark) -> String {
         None => maugis,
         Some(s) => format!(
             "{maugis} (P = {} N at δ = {} m)",
-            sig(m.load * s.load_scale(), 6),
-            sig(m.interference * s.interference_scale(), 6)
+            sci(m.load * s.load_scale()),
+            sci(m.interference * s.interference_scale())
         ),
     }
 }
@@ -85,14 +95,14 @@ fn mark_words(doc: &AsperityDocument, m: &CurveMark) -> String {
 fn sphere_words(s: &SiSphere) -> String {
     format!(
         "sphere: R = {} m, γ = {} J/m², E* = {} Pa, Z0 = {} m, so μ = {}; P = P̂ × {} N, δ = δ̂ × {} m, a = â × {} m",
-        sig(s.radius, 6),
+        sci(s.radius),
         sig(s.work_of_adhesion, 6),
-        sig(s.modulus, 6),
-        sig(s.interatomic_distance, 6),
+        sci(s.modulus),
+        sci(s.interatomic_distance),
         sig(s.tabor(), 6),
-        sig(s.load_scale(), 6),
-        sig(s.interference_scale(), 6),
-        sig(s.radius_scale(), 6)
+        sci(s.load_scale()),
+        sci(s.interference_scale()),
+        sci(s.radius_scale())
     )
 }
 
@@ -216,7 +226,7 @@ pub fn text(doc: &AsperityDocument) -> String {
         ));
         if let Some(s) = &o.sphere {
             for x in si(s, p) {
-                t.push_str(&format!("  {:>13}", sig(x, 6)));
+                t.push_str(&format!("  {:>13}", sci(x)));
             }
         }
         t.push('\n');
@@ -446,7 +456,7 @@ pub fn html(doc: &AsperityDocument) -> String {
                 p.branch.as_str().to_string(),
             ];
             if let Some(s) = &o.sphere {
-                row.extend(si(s, p).map(|x| sig(x, 6)));
+                row.extend(si(s, p).map(sci));
             }
             row
         })
