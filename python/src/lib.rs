@@ -313,25 +313,49 @@ fn merge_uncertainty_json(
     })
 }
 
-/// `wearopt asperity --tabor MU --from D0 --to D1 --points N --adhesion-model LAW --format json`.
+/// `wearopt asperity --tabor MU --from D0 --to D1 --points N --adhesion-model LAW --format json`
+/// (or the sphere in SI instead of μ: `--radius … --work-of-adhesion … --modulus …
+/// --interatomic-distance …`; `--fast`).
 #[pyfunction]
-#[pyo3(signature = (tabor, from_, to, points, adhesion_model))]
+#[pyo3(signature = (tabor, from_, to, points, adhesion_model, radius, work_of_adhesion, modulus, interatomic_distance, fast))]
+#[allow(clippy::too_many_arguments)]
 fn asperity_json(
     py: Python<'_>,
-    tabor: f64,
+    tabor: Option<f64>,
     from_: f64,
     to: f64,
     points: usize,
     adhesion_model: String,
+    radius: Option<String>,
+    work_of_adhesion: Option<String>,
+    modulus: Option<String>,
+    interatomic_distance: Option<String>,
+    fast: bool,
 ) -> PyResult<String> {
     detached(py, || {
         let law = app::asperity::law(&adhesion_model).map_err(words)?;
+        let (tabor, sphere) = app::asperity::tabor_or_sphere(
+            tabor,
+            [
+                radius.as_deref(),
+                work_of_adhesion.as_deref(),
+                modulus.as_deref(),
+                interatomic_distance.as_deref(),
+            ],
+        )
+        .map_err(words)?;
         let doc = app::asperity::asperity(&app::asperity::AsperityOptions {
             tabor,
             from: from_,
             to,
             points,
             law,
+            rows: if fast {
+                app::asperity::RowAccuracy::Fast
+            } else {
+                app::asperity::RowAccuracy::Converged
+            },
+            sphere,
         })
         .map_err(words)?;
         Ok(report::asperity::json(&doc))

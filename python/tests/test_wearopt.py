@@ -634,6 +634,37 @@ def test_asperity_equals_cli_json_and_words_errors_as_keywords():
         wearopt.asperity(1.0, -1.0, 0.0, 1)
 
 
+SPHERE = dict(radius="1 um", work_of_adhesion="0.5 J/m^2", modulus="100 GPa", interatomic_distance="0.3 nm")
+
+
+def test_asperity_sphere_in_si_and_fast_equal_the_cli():
+    """The SI keywords and `fast` are the flags: the same JSON, μ from the
+    sphere, newtons and metres beside the Maugis units."""
+    flags = ["--radius", "1 um", "--work-of-adhesion", "0.5 J/m^2", "--modulus", "100 GPa",
+             "--interatomic-distance", "0.3 nm"]
+    expected = json.loads(
+        cli("asperity", *flags, "--from", "-1", "--to", "0", "--points", "3", "--fast", "--format", "json").stdout
+    )
+    got = wearopt.asperity(None, -1.0, 0.0, 3, fast=True, **SPHERE)
+    assert got == expected
+    assert got["rows_accuracy"] == "fast"
+    mu = (1e-6 * 0.25 / (1e22 * 27e-30)) ** (1 / 3)
+    assert abs(got["tabor"] - mu) < 1e-12 * mu
+    for p in got["points"]:
+        assert abs(p["load_n"] - p["load"] * 3.141592653589793 * 0.5e-6) <= 1e-12 * abs(p["load_n"])
+    # A number is read in SI where plausible; a forgotten unit is refused.
+    same = wearopt.asperity(None, -1.0, 0.0, 3, fast=True, **dict(SPHERE, radius=1e-6))
+    assert same == got
+    with pytest.raises(ValueError, match=r"^radius=\"1.0\": .*did you mean"):
+        wearopt.asperity(None, -1.0, 0.0, 3, **dict(SPHERE, radius=1))
+    with pytest.raises(ValueError, match=r"^tabor=1, radius=.*not both"):
+        wearopt.asperity(1.0, -1.0, 0.0, 3, **SPHERE)
+    with pytest.raises(TypeError, match="fast must be a bool"):
+        wearopt.asperity(1.0, -1.0, 0.0, 3, fast="yes")
+    converged = wearopt.asperity(None, -1.0, 0.0, 3, adhesion_model="jkr", **SPHERE)
+    assert converged["rows_accuracy"] is None  # a closed form has no mesh
+
+
 # ---- wearopt.contact: the FFT boundary-element solver on a scan ----------------
 
 

@@ -7,9 +7,55 @@ use crate::model::asperity_curve::{self, AsperityCurve, LimitNote};
 use super::{AppError, OptionName};
 
 pub use crate::model::asperity_curve::{
-    Branch, CurveLaw, CurveMark, CurvePoint, Limit, CURVE_ERROR, INDEPENDENTLY_CHECKED,
-    LIMIT_PULL_OFF_ERROR, SOLVED_TABOR,
+    Branch, CurveLaw, CurveMark, CurvePoint, Limit, RowAccuracy, CURVE_ERROR,
+    INDEPENDENTLY_CHECKED, LIMIT_PULL_OFF_ERROR, MARKS_ERROR, ROWS_ERROR, SOLVED_TABOR,
 };
+
+/// A sphere in SI units (`--radius`, `--work-of-adhesion`, `--modulus`,
+/// `--interatomic-distance`): its Tabor parameter, and the scales that turn
+/// the curve's Maugis units into newtons and metres (docs/model.md §11).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SiSphere {
+    /// The radius R (m).
+    pub radius: f64,
+    /// The work of adhesion γ (J/m²).
+    pub work_of_adhesion: f64,
+    /// The composite modulus E* (Pa), K = 4E*/3.
+    pub modulus: f64,
+    /// The equilibrium spacing Z0 of the Lennard-Jones law (m).
+    pub interatomic_distance: f64,
+}
+
+impl SiSphere {
+    /// μ = (Rγ²/(E*²Z0³))^{1/3}.
+    pub fn tabor(&self) -> f64 {
+        let (r, w, e, z) = (
+            self.radius,
+            self.work_of_adhesion,
+            self.modulus,
+            self.interatomic_distance,
+        );
+        (r * w * w / (e * e * z * z * z)).cbrt()
+    }
+
+    /// The load of P̂ = 1: πγR (N).
+    pub fn load_scale(&self) -> f64 {
+        std::f64::consts::PI * self.work_of_adhesion * self.radius
+    }
+
+    /// The interference of δ̂ = 1: (π²γ²R/K²)^{1/3} (m).
+    pub fn interference_scale(&self) -> f64 {
+        let k = 4.0 * self.modulus / 3.0;
+        let pw = std::f64::consts::PI * self.work_of_adhesion;
+        (pw * pw * self.radius / (k * k)).cbrt()
+    }
+
+    /// The contact radius of â = 1: (πγR²/K)^{1/3} (m).
+    pub fn radius_scale(&self) -> f64 {
+        let k = 4.0 * self.modulus / 3.0;
+        (std::f64::consts::PI * self.work_of_adhesion * self.radius * self.radius / k).cbrt()
+    }
+}
 
 /// The most interferences one run evaluates.
 pub const MAX_POINTS: usize = 10_000;
@@ -39,6 +85,11 @@ pub struct AsperityOptions {
     pub points: usize,
     /// The law.
     pub law: CurveLaw,
+    /// How a solved curve's rows are computed (converged unless `--fast`).
+    pub rows: RowAccuracy,
+    /// The sphere in SI, when given instead of μ: `tabor` is then its
+    /// [`SiSphere::tabor`], and the reports add newtons and metres.
+    pub sphere: Option<SiSphere>,
 }
 
 impl AsperityOptions {
@@ -58,7 +109,13 @@ impl AsperityOptions {
                 });
             }
         }
-        if self.from >= self.to {
+        if self.from == self.to {
+            return Err(AppError::EmptyRange {
+                value: self.from,
+                points: self.points,
+            });
+        }
+        if self.from > self.to {
             return Err(AppError::Order {
                 low: (OptionName("from"), self.from.to_string()),
                 high: (OptionName("to"), self.to.to_string()),
@@ -143,6 +200,15 @@ pub struct AsperityDocument {
 
 /// Runs `wearopt asperity`.
 pub fn asperity(options: &AsperityOptions) -> Result<AsperityDocument, AppError> {
+    asperity_with(options, &super::Quiet)
+}
+
+/// [`asperity`], telling `progress` of the converged points (rows and marks)
+/// of a solved curve as they finish (the trace before them is not counted).
+pub fn asperity_with(
+    options: &AsperityOptions,
+    progress: &dyn super::Progress,
+) -> Result<AsperityDocument, AppError> {
     options.validate()?;
     let o = *options;
     let comparison = [CurveLaw::Jkr, CurveLaw::Dmt]
@@ -155,7 +221,19 @@ pub fn asperity(options: &AsperityOptions) -> Result<AsperityDocument, AppError>
         })
         .collect();
     Ok(
-        match asperity_curve::asperity_curve(o.law, o.tabor, o.from, o.to, o.points) {
+        match asperity_curve::asperity_curve_with(
+            o.law,
+            o.tabor,
+            (o.from, o.to, o.points),
+            o.rows,
+            &|done, total| {
+                if done == 0 {
+                    progress.begin(total);
+                } else {
+                    progress.advance();
+                }
+            },
+        ) {
             Ok((curve, limit)) => AsperityDocument {
                 options: o,
                 curve: Some(curve),
@@ -174,6 +252,69 @@ pub fn asperity(options: &AsperityOptions) -> Result<AsperityDocument, AppError>
             },
         },
     )
+}
+
+/// The sphere's Tabor parameter and the sphere: from `tabor`, or from the
+/// four SI quantities (radius, work of adhesion, composite modulus,
+/// interatomic distance; each a number with its unit or a plausible bare SI
+/// number, [`super::quantity::positive_quantity`]), never both, and all four
+/// or none.
+pub fn tabor_or_sphere(
+    tabor: Option<f64>,
+    [radius, work, modulus, distance]: [Option<&str>; 4],
+) -> Result<(f64, Option<SiSphere>), AppError> {
+    use super::quantity::{positive_quantity, OptionQuantity as Q};
+    let names = [
+        "radius",
+        "work_of_adhesion",
+        "modulus",
+        "interatomic_distance",
+    ];
+    let given: Vec<(&str, &str)> = names
+        .iter()
+        .zip([radius, work, modulus, distance])
+        .filter_map(|(n, t)| t.map(|t| (*n, t)))
+        .collect();
+    match (tabor, given.len()) {
+        (Some(mu), 0) => Ok((mu, None)),
+        (Some(mu), _) => Err(AppError::Invalid {
+            options: std::iter::once((OptionName("tabor"), mu.to_string()))
+                .chain(given.iter().map(|(n, t)| (OptionName(n), format!("{t:?}"))))
+                .collect(),
+            rule: "give the Tabor parameter or the sphere in SI (radius, work of adhesion, modulus, interatomic distance), not both".into(),
+        }),
+        (None, 4) => {
+            let q = |k: usize, what: Q| {
+                positive_quantity(OptionName(names[k]), given[k].1, what)
+            };
+            let sphere = SiSphere {
+                radius: q(0, Q::SphereRadius)?,
+                work_of_adhesion: q(1, Q::WorkOfAdhesion)?,
+                modulus: q(2, Q::Modulus)?,
+                interatomic_distance: q(3, Q::InteratomicDistance)?,
+            };
+            Ok((sphere.tabor(), Some(sphere)))
+        }
+        (None, 0) => Err(AppError::Invalid {
+            options: vec![(OptionName("tabor"), "(none)".into())],
+            rule: "give the Tabor parameter μ, or the sphere in SI: radius, work of adhesion, modulus and interatomic distance".into(),
+        }),
+        (None, _) => Err(AppError::Invalid {
+            options: given
+                .iter()
+                .map(|(n, t)| (OptionName(n), format!("{t:?}")))
+                .collect(),
+            rule: format!(
+                "a sphere in SI needs all four of radius, work of adhesion, modulus and interatomic distance: missing {}",
+                names
+                    .iter()
+                    .filter(|n| !given.iter().any(|(g, _)| g == *n))
+                    .map(|n| n.replace('_', " "))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        }),
+    }
 }
 
 /// The law named `name` (`lennard_jones`, `jkr`, `dmt`), or the error naming the

@@ -31,6 +31,8 @@ pub enum OptionQuantity {
     ScanLength,
     /// The radius of a sphere (the scene's range of R).
     SphereRadius,
+    /// The equilibrium spacing Z0 of a Lennard-Jones law (the scene's range).
+    InteratomicDistance,
 }
 
 impl OptionQuantity {
@@ -44,7 +46,8 @@ impl OptionQuantity {
             OptionQuantity::WorkOfAdhesion => Dimension::SurfaceEnergy,
             OptionQuantity::AttractionRange
             | OptionQuantity::ScanLength
-            | OptionQuantity::SphereRadius => Dimension::Length,
+            | OptionQuantity::SphereRadius
+            | OptionQuantity::InteratomicDistance => Dimension::Length,
         }
     }
 
@@ -61,6 +64,7 @@ impl OptionQuantity {
             OptionQuantity::Hardness => scene(SceneParameter::Hardness),
             OptionQuantity::WorkOfAdhesion => scene(SceneParameter::WorkOfAdhesion),
             OptionQuantity::SphereRadius => scene(SceneParameter::AsperityRadius),
+            OptionQuantity::InteratomicDistance => scene(SceneParameter::InteratomicDistance),
             OptionQuantity::MeanPressure | OptionQuantity::Stress => (1e3, 2e11),
             OptionQuantity::AttractionRange => (1e-11, 1e-6),
             OptionQuantity::ScanLength => (1e-11, 1e-2),

@@ -90,10 +90,12 @@ wearopt humidity problems/micro-gear-humid.toml --from 0 --to 0.95 --points 20 -
     Humidity(HumidityArgs),
     /// One asperity's load against its interference in Maugis units (the Lennard-Jones sphere, JKR or DMT): branches, jumps into and out of contact, pull-off.
     #[command(
-        after_help = "Columns: interference, load, contact_radius, branch (approach, unstable or contact; an S-shaped curve has several rows at one interference).\n\
-Units: load P/(πγR), interference δ (K²/(π²γ²R))^(1/3), contact radius a (K/(πγR²))^(1/3); μ = (Rγ²/(E²Z0³))^(1/3).\n\
+        after_help = "Columns: interference, load, contact_radius, branch (approach, unstable or contact; an S-shaped curve has several rows at one interference); with a sphere in SI also load_n, interference_m, contact_radius_m.\n\
+Units: every format (text, CSV, JSON, HTML) is in Maugis units: load P/(πγR), interference δ (K²/(π²γ²R))^(1/3), contact radius a (K/(πγR²))^(1/3), K = 4E*/3; μ = (Rγ²/(E*²Z0³))^(1/3). --from and --to are Maugis interferences in every case; a sphere given in SI (--radius, --work-of-adhesion, --modulus, --interatomic-distance) sets μ and adds newtons and metres beside them.\n\
+Accuracy: the Lennard-Jones rows are converged (three nested meshes, extrapolated) unless --fast.\n\
 Example:\n  wearopt asperity --tabor 1 --from -1.5 --to 1 --points 11\n  \
-wearopt asperity --tabor 3 --from -1.2 --to 1 --points 45 --format csv --plot asperity.svg"
+wearopt asperity --tabor 3 --from -1.2 --to 1 --points 45 --format csv --plot asperity.svg\n  \
+wearopt asperity --radius 1um --work-of-adhesion 0.5J/m^2 --modulus 100GPa --interatomic-distance 0.3nm --from -2 --to 1 --points 31"
     )]
     Asperity(AsperityArgs),
     /// The scene under the scatter of its [uncertainty] inputs: Sobol′ indices, Morris screening, percentiles and life, or the probability of each event (stiction, wear-out, a threshold) by FORM, SORM and importance sampling.
@@ -177,9 +179,21 @@ wearopt curve --theta inf --lambda inf --from 0 --to 3 --points 4 --format json 
 /// Arguments of `wearopt asperity`.
 #[derive(Debug, clap::Args)]
 pub struct AsperityArgs {
-    /// The Tabor parameter μ = (Rγ²/(E²Z0³))^(1/3), > 0.
+    /// The Tabor parameter μ = (Rγ²/(E*²Z0³))^(1/3), > 0 (or give the sphere in SI below).
     #[arg(long, allow_hyphen_values = true)]
-    pub tabor: f64,
+    pub tabor: Option<f64>,
+    /// The sphere's radius R, e.g. "1 µm" (with the three below, instead of --tabor).
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius: Option<String>,
+    /// The work of adhesion γ of the pair, e.g. "0.5 J/m^2".
+    #[arg(long, allow_hyphen_values = true)]
+    pub work_of_adhesion: Option<String>,
+    /// The composite modulus E* of the pair, 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2, e.g. "100 GPa".
+    #[arg(long, allow_hyphen_values = true)]
+    pub modulus: Option<String>,
+    /// The interatomic distance Z0 of the Lennard-Jones law (its equilibrium spacing), e.g. "0.3 nm".
+    #[arg(long, allow_hyphen_values = true)]
+    pub interatomic_distance: Option<String>,
     /// The first interference δ̂ (Maugis units; negative: apart).
     #[arg(long, allow_hyphen_values = true)]
     pub from: f64,
@@ -198,6 +212,9 @@ pub struct AsperityArgs {
     /// Also write the plot of load against interference (SVG).
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
+    /// The Lennard-Jones rows on the trace's mesh (within 1e-3 out of contact, 5e-2 in it) instead of converged: several times faster; the marks stay converged.
+    #[arg(long)]
+    pub fast: bool,
 }
 
 fn asperity_law_parser() -> impl TypedValueParser<Value = app::asperity::CurveLaw> {
@@ -520,29 +537,45 @@ fn curve(args: CurveArgs) -> Result<ExitCode> {
 }
 
 fn asperity(args: AsperityArgs) -> Result<ExitCode> {
+    let (tabor, sphere) = app::asperity::tabor_or_sphere(
+        args.tabor,
+        [
+            args.radius.as_deref(),
+            args.work_of_adhesion.as_deref(),
+            args.modulus.as_deref(),
+            args.interatomic_distance.as_deref(),
+        ],
+    )?;
     let options = app::asperity::AsperityOptions {
-        tabor: args.tabor,
+        tabor,
         from: args.from,
         to: args.to,
         points: args.points,
         law: args.adhesion_model,
+        rows: if args.fast {
+            app::asperity::RowAccuracy::Fast
+        } else {
+            app::asperity::RowAccuracy::Converged
+        },
+        sphere,
     };
     options.validate()?;
     if let Some(path) = &args.plot {
         check_output(path, "the plot", &[])?;
     }
-    // A traced curve takes seconds to a minute: a spinner says it is working.
-    let spinner = options
-        .traced()
-        .then(|| progress::bar(None, "tracing the Lennard-Jones sphere"))
-        .flatten();
-    if let Some(s) = &spinner {
-        s.enable_steady_tick(std::time::Duration::from_millis(200));
+    // A traced curve takes seconds to a minute: a spinner while it is traced,
+    // then a bar over its converged rows and marks.
+    let bar = progress::Bar(
+        options
+            .traced()
+            .then(|| progress::bar(None, "tracing the Lennard-Jones sphere"))
+            .flatten(),
+    );
+    if let Some(b) = &bar.0 {
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
     }
-    let doc = app::asperity::asperity(&options);
-    if let Some(s) = &spinner {
-        s.finish_and_clear();
-    }
+    let doc = app::asperity::asperity_with(&options, &Converging(&bar));
+    drop(bar);
     let doc = doc?;
     if let Some(path) = &args.plot {
         write_output(path, &report::asperity::plot_svg(&doc), "the plot")?;
@@ -553,6 +586,33 @@ fn asperity(args: AsperityArgs) -> Result<ExitCode> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// The asperity's bar: the trace's spinner becomes a bar over the converged
+/// points once their number is known.
+struct Converging<'a>(&'a progress::Bar);
+
+impl app::Progress for Converging<'_> {
+    fn begin(&self, total: usize) {
+        if let Some(b) = &self.0 .0 {
+            if total > 0 {
+                b.set_style(
+                    indicatif::ProgressStyle::with_template(
+                        "{msg:>12} [{bar:30}] {pos}/{len} {elapsed}",
+                    )
+                    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+                    .progress_chars("=> "),
+                );
+                b.set_message("converging rows and marks");
+                b.set_position(0);
+            }
+        }
+        app::Progress::begin(self.0, total);
+    }
+
+    fn advance(&self) {
+        app::Progress::advance(self.0);
+    }
 }
 
 fn humidity(args: HumidityArgs) -> Result<ExitCode> {

@@ -392,13 +392,33 @@ pub fn bradley_dmt_curve(tabor: f64, from: f64, to: f64, points: usize) -> Asper
 
 /// The curve of `law` at Tabor parameter μ (> 0, finite) over `from..=to`
 /// (`points` evenly spaced), and, for the Lennard-Jones law outside
-/// [`SOLVED_TABOR`], which limit stands in for the solver.
+/// [`SOLVED_TABOR`], which limit stands in for the solver. A solved curve's
+/// rows are on the trace's mesh ([`RowAccuracy::Fast`]).
 pub fn asperity_curve(
     law: CurveLaw,
     tabor: f64,
     from: f64,
     to: f64,
     points: usize,
+) -> Result<(AsperityCurve, Option<LimitNote>), CurveError> {
+    asperity_curve_with(
+        law,
+        tabor,
+        (from, to, points),
+        RowAccuracy::Fast,
+        &|_, _| {},
+    )
+}
+
+/// [`asperity_curve`] with a solved curve's rows computed as `rows` says,
+/// and `progress(done, total)` called as its converged points finish
+/// ([`lennard_jones_curve_with`]; closed forms call it never).
+pub fn asperity_curve_with(
+    law: CurveLaw,
+    tabor: f64,
+    (from, to, points): (f64, f64, usize),
+    rows: RowAccuracy,
+    progress: &dyn Fn(usize, usize),
 ) -> Result<(AsperityCurve, Option<LimitNote>), CurveError> {
     Ok(match law {
         CurveLaw::Jkr => (
@@ -430,7 +450,7 @@ pub fn asperity_curve(
             }),
         ),
         CurveLaw::LennardJones => (
-            lennard_jones_curve(tabor, from, to, points, CONVERGED_MARKS)?,
+            lennard_jones_curve_with(tabor, (from, to, points), CONVERGED_MARKS, rows, progress)?,
             None,
         ),
     })
@@ -559,6 +579,16 @@ fn far_from(sphere: &Sphere, start: &mut f64) -> Result<SphereState, CurveError>
     }
 }
 
+/// How a trace is stepped: the interference it starts at or below, its step
+/// in δ̂ out of the stretching mesh, and the largest contact radius a
+/// stretching mesh is made for ([`Sphere::stretch`]).
+#[derive(Debug, Clone, Copy)]
+struct TracePlan {
+    from: f64,
+    tau_d: f64,
+    largest: f64,
+}
+
 /// [`trace`] until `done` holds of the last point (`to` only sets the step).
 fn trace_until(
     sphere: &Sphere,
@@ -566,7 +596,24 @@ fn trace_until(
     to: f64,
     done: impl Fn(&SpherePoint) -> bool,
 ) -> Result<Vec<Window>, CurveError> {
+    let span = (to - from).abs().max(1e-3);
+    let plan = TracePlan {
+        from,
+        tau_d: (span / 50.0).min(0.1).max(0.02 * sphere.z0),
+        largest: 1.0 + 1.3 * (to.max(0.0) + 1.0).sqrt(),
+    };
+    trace_planned(sphere, plan, |q, _| done(q))
+}
+
+/// The trace of `plan` until `done` holds of the last point (and the number
+/// of windows, that point's included).
+fn trace_planned(
+    sphere: &Sphere,
+    plan: TracePlan,
+    mut done: impl FnMut(&SpherePoint, usize) -> bool,
+) -> Result<Vec<Window>, CurveError> {
     let z0 = sphere.z0;
+    let from = plan.from;
     let mut start = (1.0 - from / z0 + 0.5).max(2.0);
     // Newton from the rigid sphere converges only where the attraction
     // deforms it little: at large μ not at a few Z0 (μ = 78 and 100 at 3.5
@@ -576,8 +623,7 @@ fn trace_until(
         start *= 1.5;
         first = far_from(sphere, &mut start)?;
     }
-    let span = (to - from).abs().max(1e-3);
-    let (tau_d, tau_p, tau_a): (f64, f64, f64) = ((span / 50.0).min(0.1).max(0.02 * z0), 0.1, 0.1);
+    let (tau_d, tau_p, tau_a): (f64, f64, f64) = (plan.tau_d, 0.1, 0.1);
     let mut windows: Vec<Window> = Vec::new();
     let mut last = first;
     let mut length = 0.05 * start;
@@ -620,7 +666,7 @@ fn trace_until(
             length *= 0.5;
             continue;
         }
-        let done = done(q);
+        let done = done(q, windows.len() + 1);
         windows.push(Window {
             start: from_state,
             length,
@@ -637,8 +683,7 @@ fn trace_until(
             && !last.stretches()
             && last.point.contact_radius >= 10.0 * last.edge_reach()
         {
-            let largest = 1.0 + 1.3 * (to.max(0.0) + 1.0).sqrt();
-            if let Some(stretched) = sphere.stretch(&last, largest) {
+            if let Some(stretched) = sphere.stretch(&last, plan.largest) {
                 last = stretched;
             }
         }
@@ -709,8 +754,61 @@ fn finish(sphere: &Sphere, state: &SphereState, hold: Hold) -> Result<SpherePoin
     }
 }
 
+/// How the rows of a solved Lennard-Jones curve are computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RowAccuracy {
+    /// Each row solved again on three nested meshes and extrapolated, as the
+    /// marks are ([`Sphere::extrapolated`], docs/model.md §11 *Accuracy*);
+    /// [`ROWS_ERROR`] states what is left.
+    Converged,
+    /// The trace's own mesh (`wearopt asperity --fast`), within
+    /// [`CURVE_ERROR`]'s second and third figures.
+    Fast,
+}
+
+impl RowAccuracy {
+    /// The word in reports (`rows_accuracy`).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            RowAccuracy::Converged => "converged",
+            RowAccuracy::Fast => "fast",
+        }
+    }
+}
+
+/// What converged rows are good to: relative to the load (or absolute where
+/// |P̂| < 1e-3, near P̂ = 0), measured against the independent solution of
+/// `scripts/reference_lennard_jones.py` (`tests/all/asperity.rs`,
+/// `converged_rows_match_the_independent_points`).
+pub const ROWS_ERROR: (f64, f64) = (1e-5, 1e-8);
+
+/// What the marks are good to, absolute in Maugis units, against the
+/// independent solution at μ = 0.05 … 10 (`tests/all/asperity.rs`,
+/// `matches_the_independent_solution`; measured 2.2e-7, 1.9e-8 and 1.04e-5):
+/// the pull-off's load, the jump in (load and interference), the jump out's
+/// load (its interference within 3e-8). [`CURVE_ERROR`]'s first figure is
+/// the largest.
+pub const MARKS_ERROR: (f64, f64, f64) = (3e-7, 2e-8, 2e-5);
+
+/// The interference (Maugis units) at or below which every solved
+/// Lennard-Jones curve's trace starts (or −2ẑ0 where that is further out),
+/// whatever rows are asked for: the jumps lie above −1 at every μ, and one
+/// trace from one start gives the same marks for every range (rows asked
+/// for below it come from a second trace that ends there).
+pub const TRACE_FROM: f64 = -2.0;
+
+/// The interference the trace passes on the contact branch, its load rising
+/// and its apex in repulsion, before the marks are read from it: past the
+/// pull-off and the jump out at every μ (both below −0.2), whatever `to`.
+pub const MARKS_TO: f64 = 0.5;
+
+/// The trace's step in δ̂ out of a stretching mesh (or 0.02 ẑ0 where larger).
+const TRACE_STEP: f64 = 0.05;
+
 /// The Lennard-Jones curve at Tabor parameter μ over interferences
-/// `from..=to` (`points` evenly spaced, one row per branch that reaches each).
+/// `from..=to` (`points` evenly spaced, one row per branch that reaches each),
+/// its rows on the trace's mesh ([`RowAccuracy::Fast`]).
 pub fn lennard_jones_curve(
     tabor: f64,
     from: f64,
@@ -718,21 +816,180 @@ pub fn lennard_jones_curve(
     points: usize,
     settings: SphereSettings,
 ) -> Result<AsperityCurve, CurveError> {
+    lennard_jones_curve_with(
+        tabor,
+        (from, to, points),
+        settings,
+        RowAccuracy::Fast,
+        &|_, _| {},
+    )
+}
+
+/// One row before its load is read: the state the trace found at it.
+struct RowState {
+    interference: f64,
+    branch: Branch,
+    state: SphereState,
+}
+
+/// The states of `windows` at interference `target`: each crossing once (a
+/// window owns its end, the first its start too), with its window and
+/// arclength.
+fn crossings(
+    sphere: &Sphere,
+    windows: &[Window],
+    target: f64,
+) -> Result<Vec<(usize, f64, SphereState)>, CurveError> {
+    let mut out = Vec::new();
+    for (k, w) in windows.iter().enumerate() {
+        let (da, db) = (
+            w.start.point.interference - target,
+            w.end.point.interference - target,
+        );
+        let crosses = (da > 0.0) != (db > 0.0) || db == 0.0 || (k == 0 && da == 0.0);
+        if !crosses || (da == 0.0 && k > 0) {
+            continue;
+        }
+        let (state, at) = if db == 0.0 {
+            (w.end.clone(), w.length)
+        } else if da == 0.0 {
+            (w.start.clone(), 0.0)
+        } else {
+            root(sphere, w, |s| s.point.interference - target)?
+        };
+        out.push((k, at, state));
+    }
+    Ok(out)
+}
+
+/// The converged point at interference `target` near the trace's `state`:
+/// extrapolated holding δ̂ ([`Sphere::extrapolated_at`]); where that solve
+/// fails or lands on another branch (δ̂ turns within the discretisation's
+/// error of the row), holding what a turn is found in and moved to `target`
+/// along the path's slope dP̂/dδ̂.
+fn converged_row(
+    sphere: &Sphere,
+    state: &SphereState,
+    target: f64,
+) -> Result<SpherePoint, CurveError> {
+    let near = |p: &SpherePoint| {
+        (p.load - state.point.load).abs() <= 1e-2 * (1.0 + state.point.load.abs())
+            && (p.contact_radius - state.point.contact_radius).abs()
+                <= 1e-2 * (1.0 + state.point.contact_radius)
+    };
+    if let Ok((p, _)) = sphere.extrapolated_point(state, target, Hold::Interference) {
+        if near(&p) {
+            return Ok(p);
+        }
+    }
+
+    let (p, _) = sphere.extrapolated(state, state.turn_hold())?;
+    let slope = p.load_slope / p.interference_slope;
+    let shift = target - p.interference;
+    if !(slope * shift).is_finite() || !near(&p) {
+        return Err(CurveError::NotConverged(state.point.apex_gap));
+    }
+    Ok(SpherePoint {
+        interference: target,
+        load: p.load + slope * shift,
+        ..p
+    })
+}
+
+/// [`lennard_jones_curve`] with the rows computed as `rows_accuracy` says,
+/// calling `progress(done, total)` as converged points (rows and marks)
+/// finish. The trace starts at [`TRACE_FROM`] and passes [`MARKS_TO`]
+/// whatever the range, and the marks are read from that part of it alone:
+/// they are the same for every `from`, `to` and `points`.
+pub fn lennard_jones_curve_with(
+    tabor: f64,
+    (from, to, points): (f64, f64, usize),
+    settings: SphereSettings,
+    rows_accuracy: RowAccuracy,
+    progress: &dyn Fn(usize, usize),
+) -> Result<AsperityCurve, CurveError> {
+    curve_at(
+        tabor,
+        &targets(from, to, points),
+        settings,
+        rows_accuracy,
+        progress,
+    )
+}
+
+/// [`lennard_jones_curve_with`] with its rows at the interferences `at`
+/// (any order, not empty) instead of an even grid: what an independent
+/// solution's points are checked at.
+pub fn lennard_jones_rows_at(
+    tabor: f64,
+    at: &[f64],
+    settings: SphereSettings,
+    rows_accuracy: RowAccuracy,
+) -> Result<AsperityCurve, CurveError> {
+    curve_at(tabor, at, settings, rows_accuracy, &|_, _| {})
+}
+
+fn curve_at(
+    tabor: f64,
+    at: &[f64],
+    settings: SphereSettings,
+    rows_accuracy: RowAccuracy,
+    progress: &dyn Fn(usize, usize),
+) -> Result<AsperityCurve, CurveError> {
+    let from = at.iter().copied().fold(f64::INFINITY, f64::min);
+    let to = at.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let sphere = Sphere::new(tabor, settings);
-    let windows = trace(&sphere, from, to)?;
+    let z0 = sphere.z0;
+    let plan = TracePlan {
+        from: TRACE_FROM.min(-2.0 * z0),
+        tau_d: TRACE_STEP.max(0.02 * z0),
+        largest: 1.0 + 1.3 * (MARKS_TO + 1.0).sqrt(),
+    };
+    // Past `end` on the contact branch: the apex in repulsion (its gap below
+    // Z0) — above μ ≈ 4 the approach branch turns four times, and between its
+    // turns δ̂ and P̂ both rise again before any contact.
+    let past = |q: &SpherePoint, end: f64| {
+        q.interference >= end
+            && q.interference_slope > 0.0
+            && q.load_slope > 0.0
+            && q.apex_gap < SPLIT_GAP
+    };
+    let mut marks_end = 0;
+    let windows = trace_planned(&sphere, plan, |q, n| {
+        if marks_end == 0 && past(q, MARKS_TO) {
+            marks_end = n;
+        }
+        marks_end > 0 && past(q, to)
+    })?;
+    let marked = &windows[..marks_end];
+    let start = windows[0].start.point.interference;
+    // Rows asked for further out: a second trace, from below `from` to the
+    // first's start (single-valued there, on the approach branch).
+    let outer = if from < start {
+        trace_until(&sphere, from, start, |q| q.interference >= start)?
+    } else {
+        Vec::new()
+    };
     // Turning points of δ̂ along the path (the jumps), refined.
     let slope = |s: &SphereState| s.point.interference_slope;
     let mut turns = Vec::new();
-    for (k, w) in windows.iter().enumerate() {
+    for (k, w) in marked.iter().enumerate() {
         if (slope(&w.start) > 0.0) != (slope(&w.end) > 0.0) {
             let (state, at) = root(&sphere, w, slope)?;
             turns.push((k, at, state));
         }
     }
-    let pull_off = deepest_minimum(&sphere, &windows)?;
+    let pull_off = deepest_minimum(&sphere, marked)?;
     let s_shaped = turns.len() >= 2;
     // Branches: the segments of monotone δ̂ between the turning points (a
     // point at arclength `at` in window k has passed the turns before it).
+    let unturned = |p: &SpherePoint| {
+        if s_shaped || p.contact_radius <= 0.0 {
+            Branch::Approach
+        } else {
+            Branch::Contact
+        }
+    };
     let branch_after = |k: usize, at: f64, p: &SpherePoint| {
         let passed = turns
             .iter()
@@ -744,70 +1001,102 @@ pub fn lennard_jones_curve(
                 n if n >= turns.len() => Branch::Contact,
                 _ => Branch::Unstable,
             }
-        } else if p.contact_radius > 0.0 {
-            Branch::Contact
         } else {
-            Branch::Approach
+            unturned(p)
         }
     };
-    let mut rows = Vec::new();
-    for target in targets(from, to, points) {
-        for (k, w) in windows.iter().enumerate() {
-            let (da, db) = (
-                w.start.point.interference - target,
-                w.end.point.interference - target,
-            );
-            // Each crossing once: a window owns its end, the first its start too.
-            let crosses = (da > 0.0) != (db > 0.0) || db == 0.0 || (k == 0 && da == 0.0);
-            if !crosses || (da == 0.0 && k > 0) {
-                continue;
+    let mut found = Vec::new();
+    for &target in at {
+        if target < start {
+            for (_, _, state) in crossings(&sphere, &outer, target)? {
+                found.push(RowState {
+                    interference: target,
+                    branch: unturned(&state.point),
+                    state,
+                });
             }
-            let (state, at) = if db == 0.0 {
-                (w.end.clone(), w.length)
-            } else if da == 0.0 {
-                (w.start.clone(), 0.0)
-            } else {
-                root(&sphere, w, |s| s.point.interference - target)?
-            };
-            let p = state.point;
-            let branch = branch_after(k, at, &p);
-            rows.push(CurvePoint {
-                interference: target,
-                load: p.load,
-                contact_radius: p.contact_radius,
-                branch,
-            });
+        } else {
+            for (k, at, state) in crossings(&sphere, &windows, target)? {
+                found.push(RowState {
+                    interference: target,
+                    branch: branch_after(k, at, &state.point),
+                    state,
+                });
+            }
         }
     }
-    rows.sort_by(|a, b| {
+    found.sort_by(|a, b| {
         a.interference
             .total_cmp(&b.interference)
             .then(a.branch.cmp(&b.branch))
     });
     // A target between one step's end and the next's regraded start is found
     // in both: the branch holds one point per interference.
-    rows.dedup_by(|a, b| a.interference == b.interference && a.branch == b.branch);
+    found.dedup_by(|a, b| a.interference == b.interference && a.branch == b.branch);
+    let marks_total = if sphere.settings.extrapolate {
+        1 + 2 * usize::from(s_shaped)
+    } else {
+        0
+    };
+    let converging = rows_accuracy == RowAccuracy::Converged;
+    let total = marks_total + if converging { found.len() } else { 0 };
+    let done = std::cell::Cell::new(0);
+    let tick = || {
+        done.set(done.get() + 1);
+        progress(done.get(), total);
+    };
+    progress(0, total);
+    let mut rows = Vec::with_capacity(found.len());
+    for r in &found {
+        let p = if converging {
+            let p = converged_row(&sphere, &r.state, r.interference)?;
+            tick();
+            p
+        } else {
+            r.state.point
+        };
+        rows.push(CurvePoint {
+            interference: r.interference,
+            load: p.load,
+            contact_radius: p.contact_radius,
+            branch: r.branch,
+        });
+    }
     // The steps' ends and the turns between them (each turn ends the branch
     // before it: a plot's branches then meet at the jumps, where the
     // unstable branch drawn from the last step's end before the turn had
-    // reached up the approach branch by as much as a step).
-    let path = windows
+    // reached up the approach branch by as much as a step); the outer
+    // trace's first.
+    let outer_path = outer
         .iter()
-        .enumerate()
-        .flat_map(|(k, w)| {
-            turns
-                .iter()
-                .filter(move |t| t.0 == k)
-                .map(|t| (t.1, t.2.point))
-                .chain(std::iter::once((w.length, w.end.point)))
-                .map(move |(at, p)| (k, at, p))
-        })
-        .map(|(k, at, p)| CurvePoint {
+        .map(|w| w.end.point)
+        .filter(|p| p.interference < start)
+        .map(|p| CurvePoint {
             interference: p.interference,
             load: p.load,
             contact_radius: p.contact_radius,
-            branch: branch_after(k, at, &p),
-        })
+            branch: unturned(&p),
+        });
+    let path = outer_path
+        .chain(
+            windows
+                .iter()
+                .enumerate()
+                .flat_map(|(k, w)| {
+                    turns
+                        .iter()
+                        .filter(move |t| t.0 == k)
+                        .map(|t| (t.1, t.2.point))
+                        .chain(std::iter::once((w.length, w.end.point)))
+                        .map(move |(at, p)| (k, at, p))
+                })
+                .map(|(k, at, p)| CurvePoint {
+                    interference: p.interference,
+                    load: p.load,
+                    contact_radius: p.contact_radius,
+                    branch: branch_after(k, at, &p),
+                }),
+        )
         .collect();
     // The marks extrapolated to the converged solution where the settings
     // ask, each at the converged extremum (the trace's place for it is off
@@ -818,7 +1107,9 @@ pub fn lennard_jones_curve(
                 quantity: fn(&SpherePoint) -> f64|
      -> Result<CurveMark, CurveError> {
         let p = if sphere.settings.extrapolate {
-            sphere.extrapolated_extremum(state, hold, quantity)?.0
+            let p = sphere.extrapolated_extremum(state, hold, quantity)?.0;
+            tick();
+            p
         } else {
             state.point
         };

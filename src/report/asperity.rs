@@ -9,8 +9,8 @@ use super::svg::{Axis, LinePlot, Marker, Series};
 use super::Format;
 use super::{number, sig};
 use crate::app::asperity::{
-    AsperityDocument, Branch, CurveLaw, CurveMark, CurvePoint, Limit, CURVE_ERROR,
-    INDEPENDENTLY_CHECKED,
+    AsperityDocument, Branch, CurveLaw, CurveMark, CurvePoint, Limit, RowAccuracy, SiSphere,
+    CURVE_ERROR, INDEPENDENTLY_CHECKED, MARKS_ERROR, ROWS_ERROR,
 };
 
 /// The formats `wearopt asperity` writes (the first is the default).
@@ -18,6 +18,29 @@ pub const FORMATS: &[Format] = &[Format::Text, Format::Csv, Format::Json, Format
 
 /// The CSV columns, in order.
 pub const COLUMNS: [&str; 4] = ["interference", "load", "contact_radius", "branch"];
+
+/// The CSV columns added after [`COLUMNS`] when the sphere is given in SI:
+/// the load (N), the interference and the contact radius (m).
+pub const SI_COLUMNS: [&str; 3] = ["load_n", "interference_m", "contact_radius_m"];
+
+/// An SI value for people: six significant figures in scientific notation
+/// (newtons and metres span many decades), zero as 0.
+fn sci(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else {
+        format!("{x:.5e}")
+    }
+}
+
+/// A row's load (N), interference (m) and contact radius (m).
+fn si(sphere: &SiSphere, p: &CurvePoint) -> [f64; 3] {
+    [
+        p.load * sphere.load_scale(),
+        p.interference * sphere.interference_scale(),
+        p.contact_radius * sphere.radius_scale(),
+    ]
+}
 
 /// A law's name for people.
 fn law_words(law: CurveLaw) -> &'static str {
@@ -30,22 +53,57 @@ fn law_words(law: CurveLaw) -> &'static str {
 
 /// CSV with a header row; no rows when the curve was not traced.
 pub fn csv(doc: &AsperityDocument) -> String {
+    let sphere = doc.options.sphere;
     let mut out = COLUMNS.join(",");
+    if sphere.is_some() {
+        out.push(',');
+        out.push_str(&SI_COLUMNS.join(","));
+    }
     out.push('\n');
     for p in doc.curve.iter().flat_map(|c| &c.points) {
         out.push_str(&format!(
-            "{},{},{},{}\n",
+            "{},{},{},{}",
             number(p.interference),
             number(p.load),
             number(p.contact_radius),
             p.branch.as_str()
         ));
+        if let Some(s) = &sphere {
+            for x in si(s, p) {
+                out.push(',');
+                out.push_str(&number(x));
+            }
+        }
+        out.push('\n');
     }
     out
 }
 
-fn mark_words(m: &CurveMark) -> String {
-    format!("P̂ = {} at δ̂ = {}", sig(m.load, 6), sig(m.interference, 6))
+fn mark_words(doc: &AsperityDocument, m: &CurveMark) -> String {
+    let maugis = format!("P̂ = {} at δ̂ = {}", sig(m.load, 6), sig(m.interference, 6));
+    match &doc.options.sphere {
+        None => maugis,
+        Some(s) => format!(
+            "{maugis} (P = {} N at δ = {} m)",
+            sci(m.load * s.load_scale()),
+            sci(m.interference * s.interference_scale())
+        ),
+    }
+}
+
+/// The sphere given in SI and its scales, in words.
+fn sphere_words(s: &SiSphere) -> String {
+    format!(
+        "sphere: R = {} m, γ = {} J/m², E* = {} Pa, Z0 = {} m, so μ = {}; P = P̂ × {} N, δ = δ̂ × {} m, a = â × {} m",
+        sci(s.radius),
+        sig(s.work_of_adhesion, 6),
+        sci(s.modulus),
+        sci(s.interatomic_distance),
+        sig(s.tabor(), 6),
+        sci(s.load_scale()),
+        sci(s.interference_scale()),
+        sci(s.radius_scale())
+    )
 }
 
 /// The limit used, in words.
@@ -61,17 +119,28 @@ fn accuracy_words(doc: &AsperityDocument) -> Option<String> {
     if !solved(doc) {
         return None;
     }
-    let (marks, out, within) = CURVE_ERROR;
+    let (_, out, within) = CURVE_ERROR;
     let (lo, hi) = INDEPENDENTLY_CHECKED;
+    let (pull_off, jump_in, jump_out) = MARKS_ERROR;
+    let marks = format!("the pull-off within {pull_off:.0e}, the jump in within {jump_in:.0e} and the jump out within {jump_out:.0e}");
     let checked = if (lo..=hi).contains(&doc.options.tabor) {
-        format!("within {marks:.0e} of an independent solution")
+        format!("{marks} of an independent solution")
     } else {
         format!(
-            "within {marks:.0e} of an independent solution where one was computed, μ = {lo} … {hi}; not at this μ"
+            "{marks} of an independent solution where one was computed, μ = {lo} … {hi}; not at this μ"
         )
     };
+    let rows = match doc.options.rows {
+        RowAccuracy::Converged => format!(
+            "the rows are converged too (each solved again so), within {:.0e} of the load relative ({:.0e} absolute where |P̂| < 1e-3)",
+            ROWS_ERROR.0, ROWS_ERROR.1
+        ),
+        RowAccuracy::Fast => format!(
+            "the rows (--fast) are the trace's mesh, within {out:.0e} out of contact and {within:.0e} in it"
+        ),
+    };
     Some(format!(
-        "the pull-off and the jumps are converged (solved again on three nested meshes and extrapolated: {checked}); the rows are the solver's default mesh, within {out:.0e} out of contact and {within:.0e} in it"
+        "the pull-off and the jumps are converged (solved again on three nested meshes and extrapolated: {checked}); {rows}"
     ))
 }
 
@@ -106,6 +175,9 @@ pub fn text(doc: &AsperityDocument) -> String {
     if let Some(l) = limit_words(doc) {
         t.push_str(&format!("  note: {l}\n"));
     }
+    if let Some(s) = &o.sphere {
+        t.push_str(&format!("  {}\n", sphere_words(s)));
+    }
     if let Some(a) = accuracy_words(doc) {
         t.push_str(&format!("  accuracy: {a}\n"));
     }
@@ -119,28 +191,45 @@ pub fn text(doc: &AsperityDocument) -> String {
     };
     t.push_str(&format!(
         "  pull-off (load control): {}\n",
-        mark_words(&c.pull_off)
+        mark_words(doc, &c.pull_off)
     ));
     match (&c.jump_in, &c.jump_out) {
         (Some(i), Some(j)) => {
-            t.push_str(&format!("  jump into contact at {}\n", mark_words(i)));
-            t.push_str(&format!("  jump out of contact at {}\n", mark_words(j)));
+            t.push_str(&format!("  jump into contact at {}\n", mark_words(doc, i)));
+            t.push_str(&format!(
+                "  jump out of contact at {}\n",
+                mark_words(doc, j)
+            ));
         }
         _ => t.push_str("  the curve is single-valued: no jumps\n"),
     }
     t.push('\n');
+    let width = if o.sphere.is_some() { 8 } else { 0 };
     t.push_str(&format!(
-        "  {:>12}  {:>14}  {:>12}  {}\n",
+        "  {:>12}  {:>14}  {:>12}  {:<width$}",
         "δ̂", "P̂", "â", "branch"
     ));
+    if o.sphere.is_some() {
+        t.push_str(&format!(
+            "  {:>13}  {:>13}  {:>13}",
+            "P (N)", "δ (m)", "a (m)"
+        ));
+    }
+    t.push('\n');
     for p in &c.points {
         t.push_str(&format!(
-            "  {:>12}  {:>14}  {:>12}  {}\n",
+            "  {:>12}  {:>14}  {:>12}  {:<width$}",
             sig(p.interference, 6),
             sig(p.load, 8),
             sig(p.contact_radius, 6),
             p.branch.as_str()
         ));
+        if let Some(s) = &o.sphere {
+            for x in si(s, p) {
+                t.push_str(&format!("  {:>13}", sci(x)));
+            }
+        }
+        t.push('\n');
     }
     t
 }
@@ -164,17 +253,47 @@ pub fn json(doc: &AsperityDocument) -> String {
             "switch_tabor": l.switch_tabor,
             "pull_off_error": l.pull_off_error,
         })),
-        "points": c.map(|c| &c.points),
+        "rows_accuracy": solved(doc).then(|| doc.options.rows.as_str()),
+        "sphere": doc.options.sphere.map(|s| json!({
+            "radius": s.radius,
+            "work_of_adhesion": s.work_of_adhesion,
+            "modulus": s.modulus,
+            "interatomic_distance": s.interatomic_distance,
+            "load_scale": s.load_scale(),
+            "interference_scale": s.interference_scale(),
+            "contact_radius_scale": s.radius_scale(),
+        })),
+        "points": c.map(|c| match &doc.options.sphere {
+            None => json!(c.points),
+            Some(s) => c.points.iter().map(|p| {
+                let [load, interference, radius] = si(s, p);
+                json!({
+                    "interference": p.interference,
+                    "load": p.load,
+                    "contact_radius": p.contact_radius,
+                    "branch": p.branch.as_str(),
+                    "load_n": load,
+                    "interference_m": interference,
+                    "contact_radius_m": radius,
+                })
+            }).collect(),
+        }),
         "pull_off": c.map(|c| json!({"load": c.pull_off.load, "interference": c.pull_off.interference})),
         "jump_in": mark_json(&c.and_then(|c| c.jump_in)),
         "jump_out": mark_json(&c.and_then(|c| c.jump_out)),
         "accuracy": solved(doc).then(|| {
             let (marks, out, within) = CURVE_ERROR;
             let (lo, hi) = INDEPENDENTLY_CHECKED;
+            let fast = doc.options.rows == RowAccuracy::Fast;
             json!({
                 "marks": marks,
-                "points_out_of_contact": out,
-                "points_in_contact": within,
+                "pull_off": MARKS_ERROR.0,
+                "jump_in": MARKS_ERROR.1,
+                "jump_out": MARKS_ERROR.2,
+                "points_out_of_contact": fast.then_some(out),
+                "points_in_contact": fast.then_some(within),
+                "rows_relative": (!fast).then_some(ROWS_ERROR.0),
+                "rows_absolute": (!fast).then_some(ROWS_ERROR.1),
                 "independent_solution": {
                     "tabor_from": lo,
                     "tabor_to": hi,
@@ -305,6 +424,9 @@ pub fn html(doc: &AsperityDocument) -> String {
     if let Some(l) = limit_words(doc) {
         p.paragraph(&format!("{l}."), Some("status"));
     }
+    if let Some(s) = &o.sphere {
+        p.paragraph(&format!("The {}.", sphere_words(s)), None);
+    }
     if let Some(a) = accuracy_words(doc) {
         p.paragraph(&format!("Accuracy: {a}."), None);
     }
@@ -318,12 +440,12 @@ pub fn html(doc: &AsperityDocument) -> String {
             Some("status"),
         ),
         Some(c) => {
-            let mut s = format!("Pull-off (load control): {}.", mark_words(&c.pull_off));
+            let mut s = format!("Pull-off (load control): {}.", mark_words(doc, &c.pull_off));
             if let (Some(i), Some(j)) = (&c.jump_in, &c.jump_out) {
                 s.push_str(&format!(
                     " Jump into contact at {}; jump out at {}.",
-                    mark_words(i),
-                    mark_words(j)
+                    mark_words(doc, i),
+                    mark_words(doc, j)
                 ));
             } else {
                 s.push_str(" The curve is single-valued: no jumps.");
@@ -341,15 +463,23 @@ pub fn html(doc: &AsperityDocument) -> String {
         .iter()
         .flat_map(|c| &c.points)
         .map(|p| {
-            vec![
+            let mut row = vec![
                 sig(p.interference, 6),
                 sig(p.load, 8),
                 sig(p.contact_radius, 6),
                 p.branch.as_str().to_string(),
-            ]
+            ];
+            if let Some(s) = &o.sphere {
+                row.extend(si(s, p).map(sci));
+            }
+            row
         })
         .collect();
-    p.table(&["δ̂", "P̂", "â", "branch"], &rows, &[3]);
+    let mut header = vec!["δ̂", "P̂", "â", "branch"];
+    if o.sphere.is_some() {
+        header.extend(["P (N)", "δ (m)", "a (m)"]);
+    }
+    p.table(&header, &rows, &[3]);
     p.finish()
 }
 

@@ -264,7 +264,17 @@ def _arrays(value: Any) -> Any:
 
 
 def asperity(
-    tabor: float, from_: float, to: float, points: int, adhesion_model: str = "lennard_jones"
+    tabor: Optional[float],
+    from_: float,
+    to: float,
+    points: int,
+    adhesion_model: str = "lennard_jones",
+    *,
+    radius: Any = None,
+    work_of_adhesion: Any = None,
+    modulus: Any = None,
+    interatomic_distance: Any = None,
+    fast: bool = False,
 ) -> Dict[str, Any]:
     """One asperity's load against its interference in Maugis units: the
     self-consistent Lennard-Jones sphere at Tabor parameter ``tabor`` (or
@@ -273,11 +283,21 @@ def asperity(
     the jumps (the JSON of ``wearopt asperity --tabor MU --from D0 --to D1
     --points N --format json``).
 
-    >>> c = wearopt.asperity(3.0, -1.0, 0.0, 3)
+    Instead of ``tabor`` (then ``None``), the sphere in SI: ``radius``,
+    ``work_of_adhesion``, ``modulus`` (the composite E*) and
+    ``interatomic_distance``, each a string with its unit or a number in SI
+    (read only where plausible); μ follows, and each point gains ``load_n``,
+    ``interference_m`` and ``contact_radius_m``. The Lennard-Jones rows are
+    converged (``rows_accuracy``: ``"converged"``); ``fast=True`` gives the
+    trace's mesh instead (``"fast"``), several times quicker.
+
+    >>> c = wearopt.asperity(3.0, -1.0, 0.0, 3, fast=True)
     >>> round(c["pull_off"]["load"], 2), c["jump_in"] is not None
     (-1.55, True)
     """
-    for name, value in (("tabor", tabor), ("from_", from_), ("to", to)):
+    if tabor is not None and not _is_number(tabor):
+        raise TypeError(f"tabor must be a number or None, not {type(tabor).__name__}")
+    for name, value in (("from_", from_), ("to", to)):
         if not _is_number(value):
             raise TypeError(f"{name} must be a number, not {type(value).__name__}")
     if not _is_int(points):
@@ -287,8 +307,21 @@ def asperity(
         raise ValueError(f"points={points}: must lie in 2..=10000")
     if not isinstance(adhesion_model, str):
         raise TypeError(f"adhesion_model must be a str, not {type(adhesion_model).__name__}")
+    if not isinstance(fast, bool):
+        raise TypeError(f"fast must be a bool, not {type(fast).__name__}")
     return _json.loads(
-        _wearopt.asperity_json(float(tabor), float(from_), float(to), points, adhesion_model)
+        _wearopt.asperity_json(
+            None if tabor is None else float(tabor),
+            float(from_),
+            float(to),
+            points,
+            adhesion_model,
+            _quantity("radius", radius, "metres"),
+            _quantity("work_of_adhesion", work_of_adhesion, "J/m²"),
+            _quantity("modulus", modulus, "pascals"),
+            _quantity("interatomic_distance", interatomic_distance, "metres"),
+            fast,
+        )
     )
 
 

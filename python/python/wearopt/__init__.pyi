@@ -25,9 +25,20 @@ def optimize(problem: Problem) -> Dict[str, Any]:
     """
 
 def asperity(
-    tabor: float, from_: float, to: float, points: int, adhesion_model: str = "lennard_jones"
+    tabor: Optional[float],
+    from_: float,
+    to: float,
+    points: int,
+    adhesion_model: str = "lennard_jones",
+    *,
+    radius: Union[float, str, None] = None,
+    work_of_adhesion: Union[float, str, None] = None,
+    modulus: Union[float, str, None] = None,
+    interatomic_distance: Union[float, str, None] = None,
+    fast: bool = False,
 ) -> Dict[str, Any]:
-    """The JSON of `wearopt asperity --tabor MU --from D0 --to D1 --points N --format json` as a dict."""
+    """The JSON of `wearopt asperity --tabor MU --from D0 --to D1 --points N --format json` as a dict
+    (or the sphere in SI instead of μ; `fast`: `--fast`)."""
     ...
 
 def uncertainty(
