@@ -330,7 +330,7 @@ fn asperity_json(
     work_of_adhesion: Option<String>,
     modulus: Option<String>,
     interatomic_distance: Option<String>,
-    fast: bool,
+    fast: Option<bool>,
 ) -> PyResult<String> {
     detached(py, || {
         let law = app::asperity::law(&adhesion_model).map_err(words)?;
@@ -350,11 +350,7 @@ fn asperity_json(
             to,
             points,
             law,
-            rows: if fast {
-                app::asperity::RowAccuracy::Fast
-            } else {
-                app::asperity::RowAccuracy::Converged
-            },
+            rows: app::asperity::rows_for(tabor, fast),
             sphere,
         })
         .map_err(words)?;

@@ -85,11 +85,37 @@ pub struct AsperityOptions {
     pub points: usize,
     /// The law.
     pub law: CurveLaw,
-    /// How a solved curve's rows are computed (converged unless `--fast`).
+    /// How a solved curve's rows are computed ([`rows_for`]).
     pub rows: RowAccuracy,
     /// The sphere in SI, when given instead of μ: `tabor` is then its
     /// [`SiSphere::tabor`], and the reports add newtons and metres.
     pub sphere: Option<SiSphere>,
+}
+
+/// Up to this Tabor parameter a solved curve's rows are converged by default;
+/// above it converging them costs minutes on two cores (μ = 3: about 17 CPU-s
+/// for 100 rows, μ = 30: over 150), so the default is the trace's mesh, said in
+/// the report, and `--converged` asks for them.
+pub const CONVERGED_ROWS_UP_TO: f64 = 5.0;
+
+/// The rows a curve gets when neither `--fast` nor `--converged` is given:
+/// converged up to μ = [`CONVERGED_ROWS_UP_TO`], the trace's mesh above.
+pub fn default_rows(tabor: f64) -> RowAccuracy {
+    if tabor <= CONVERGED_ROWS_UP_TO {
+        RowAccuracy::Converged
+    } else {
+        RowAccuracy::Fast
+    }
+}
+
+/// The rows asked for: `Some(true)` the trace's mesh (`--fast`), `Some(false)`
+/// converged (`--converged`), `None` [`default_rows`].
+pub fn rows_for(tabor: f64, fast: Option<bool>) -> RowAccuracy {
+    match fast {
+        Some(true) => RowAccuracy::Fast,
+        Some(false) => RowAccuracy::Converged,
+        None => default_rows(tabor),
+    }
 }
 
 impl AsperityOptions {

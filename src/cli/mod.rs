@@ -92,7 +92,7 @@ wearopt humidity problems/micro-gear-humid.toml --from 0 --to 0.95 --points 20 -
     #[command(
         after_help = "Columns: interference, load, contact_radius, branch (approach, unstable or contact; an S-shaped curve has several rows at one interference); with a sphere in SI also load_n, interference_m, contact_radius_m.\n\
 Units: every format (text, CSV, JSON, HTML) is in Maugis units: load P/(πγR), interference δ (K²/(π²γ²R))^(1/3), contact radius a (K/(πγR²))^(1/3), K = 4E*/3; μ = (Rγ²/(E*²Z0³))^(1/3). --from and --to are Maugis interferences in every case; a sphere given in SI (--radius, --work-of-adhesion, --modulus, --interatomic-distance) sets μ and adds newtons and metres beside them.\n\
-Accuracy: the Lennard-Jones rows are converged (three nested meshes, extrapolated) unless --fast.\n\
+Accuracy: the Lennard-Jones rows are converged (three nested meshes, extrapolated) up to μ = 5 unless --fast, and on the trace's mesh above unless --converged.\n\
 Example:\n  wearopt asperity --tabor 1 --from -1.5 --to 1 --points 11\n  \
 wearopt asperity --tabor 3 --from -1.2 --to 1 --points 45 --format csv --plot asperity.svg\n  \
 wearopt asperity --radius 1um --work-of-adhesion 0.5J/m^2 --modulus 100GPa --interatomic-distance 0.3nm --from -2 --to 1 --points 31"
@@ -212,9 +212,12 @@ pub struct AsperityArgs {
     /// Also write the plot of load against interference (SVG).
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
-    /// The Lennard-Jones rows on the trace's mesh (within 1e-3 out of contact, 5e-2 in it) instead of converged: several times faster; the marks stay converged.
-    #[arg(long)]
+    /// The Lennard-Jones rows on the trace's mesh (within 1e-3 out of contact, 5e-2 in it) instead of converged: several times faster; the marks stay converged. The default above μ = 5.
+    #[arg(long, conflicts_with = "converged")]
     pub fast: bool,
+    /// Converge the Lennard-Jones rows also above μ = 5, where it takes minutes (the default up to μ = 5).
+    #[arg(long)]
+    pub converged: bool,
 }
 
 fn asperity_law_parser() -> impl TypedValueParser<Value = app::asperity::CurveLaw> {
@@ -552,11 +555,7 @@ fn asperity(args: AsperityArgs) -> Result<ExitCode> {
         to: args.to,
         points: args.points,
         law: args.adhesion_model,
-        rows: if args.fast {
-            app::asperity::RowAccuracy::Fast
-        } else {
-            app::asperity::RowAccuracy::Converged
-        },
+        rows: app::asperity::rows_for(tabor, (args.fast || args.converged).then_some(args.fast)),
         sphere,
     };
     options.validate()?;

@@ -136,7 +136,12 @@ fn accuracy_words(doc: &AsperityDocument) -> Option<String> {
             ROWS_ERROR.0, ROWS_ERROR.1
         ),
         RowAccuracy::Fast => format!(
-            "the rows (--fast) are the trace's mesh, within {out:.0e} out of contact and {within:.0e} in it"
+            "the rows are the trace's mesh, within {out:.0e} out of contact and {within:.0e} in it ({})",
+            if doc.options.tabor > crate::app::asperity::CONVERGED_ROWS_UP_TO {
+                "the default above μ = 5, where converging them takes minutes: --converged does"
+            } else {
+                "--fast"
+            }
         ),
     };
     Some(format!(

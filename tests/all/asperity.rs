@@ -531,6 +531,44 @@ fn cli_text_states_the_accuracy() {
     );
 }
 
+/// Rows are converged by default up to μ = 5 and on the trace's mesh above (where
+/// converging 100 rows took over 150 CPU-s at μ = 30), said in the text; `--fast`
+/// and `--converged` choose at any μ, and together are refused (exit 2).
+#[test]
+fn rows_are_converged_by_default_where_it_is_affordable() {
+    use wearopt::app::asperity::{rows_for, CONVERGED_ROWS_UP_TO};
+    use wearopt::model::asperity_curve::RowAccuracy;
+    assert_eq!(CONVERGED_ROWS_UP_TO, 5.0);
+    assert_eq!(rows_for(5.0, None), RowAccuracy::Converged);
+    assert_eq!(rows_for(5.01, None), RowAccuracy::Fast);
+    assert_eq!(rows_for(30.0, Some(false)), RowAccuracy::Converged);
+    assert_eq!(rows_for(0.5, Some(true)), RowAccuracy::Fast);
+    let base = ["asperity", "--from", "-1", "--to", "0", "--points", "2"];
+    let above = String::from_utf8(stdout(
+        wearopt().args([&base[..], &["--tabor", "6"]].concat()),
+        0,
+    ))
+    .unwrap();
+    assert!(
+        above.contains("the rows are the trace's mesh")
+            && above.contains("the default above μ = 5")
+            && above.contains("--converged"),
+        "{above}"
+    );
+    let err = String::from_utf8(
+        wearopt()
+            .args([&base[..], &["--tabor", "6", "--fast", "--converged"]].concat())
+            .output()
+            .unwrap()
+            .stderr,
+    )
+    .unwrap();
+    assert!(
+        err.contains("--converged") && err.contains("--fast"),
+        "{err}"
+    );
+}
+
 /// The marks come from one trace that starts at `TRACE_FROM` and passes
 /// `MARKS_TO` whatever range is asked: identical for every `from`, `to` and
 /// `points`. Before, at μ = 2 `--from -0.2` gave a "single-valued" curve

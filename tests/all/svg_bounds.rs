@@ -399,6 +399,8 @@ fn a_curve_without_jumps_is_not_called_a_contact_branch() {
         to: 1.0,
         points: 31,
         law: CurveLaw::Dmt,
+        rows: wearopt::model::asperity_curve::RowAccuracy::Converged,
+        sphere: None,
     })
     .unwrap();
     let dmt = wearopt::report::asperity::plot_svg(&doc);

@@ -274,7 +274,7 @@ def asperity(
     work_of_adhesion: Any = None,
     modulus: Any = None,
     interatomic_distance: Any = None,
-    fast: bool = False,
+    fast: Optional[bool] = None,
 ) -> Dict[str, Any]:
     """One asperity's load against its interference in Maugis units: the
     self-consistent Lennard-Jones sphere at Tabor parameter ``tabor`` (or
@@ -288,8 +288,9 @@ def asperity(
     ``interatomic_distance``, each a string with its unit or a number in SI
     (read only where plausible); μ follows, and each point gains ``load_n``,
     ``interference_m`` and ``contact_radius_m``. The Lennard-Jones rows are
-    converged (``rows_accuracy``: ``"converged"``); ``fast=True`` gives the
-    trace's mesh instead (``"fast"``), several times quicker.
+    converged up to μ = 5 (``rows_accuracy``: ``"converged"``) and on the
+    trace's mesh above (``"fast"``: converging them there takes minutes);
+    ``fast=True`` or ``fast=False`` asks for one or the other at any μ.
 
     >>> c = wearopt.asperity(3.0, -1.0, 0.0, 3, fast=True)
     >>> round(c["pull_off"]["load"], 2), c["jump_in"] is not None
@@ -307,8 +308,8 @@ def asperity(
         raise ValueError(f"points={points}: must lie in 2..=10000")
     if not isinstance(adhesion_model, str):
         raise TypeError(f"adhesion_model must be a str, not {type(adhesion_model).__name__}")
-    if not isinstance(fast, bool):
-        raise TypeError(f"fast must be a bool, not {type(fast).__name__}")
+    if fast is not None and not isinstance(fast, bool):
+        raise TypeError(f"fast must be a bool or None, not {type(fast).__name__}")
     return _json.loads(
         _wearopt.asperity_json(
             None if tabor is None else float(tabor),

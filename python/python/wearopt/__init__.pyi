@@ -35,7 +35,7 @@ def asperity(
     work_of_adhesion: Union[float, str, None] = None,
     modulus: Union[float, str, None] = None,
     interatomic_distance: Union[float, str, None] = None,
-    fast: bool = False,
+    fast: Optional[bool] = None,
 ) -> Dict[str, Any]:
     """The JSON of `wearopt asperity --tabor MU --from D0 --to D1 --points N --format json` as a dict
     (or the sphere in SI instead of μ; `fast`: `--fast`)."""
