@@ -22,7 +22,8 @@ use crate::optimize::{Objective, Optimum, Study};
 use crate::problem::{ChanceConstraint, EventFront, Problem};
 use crate::uq::reliability::EventResult;
 use crate::uq::robust::{
-    chance_probabilities, verification_settings, RobustResult, RobustStatus, Statistic,
+    chance_probabilities, verification_settings, ChanceReport, RobustResult, RobustStatus,
+    Statistic,
 };
 use crate::uq::Estimate;
 
@@ -59,6 +60,38 @@ pub struct LevelPoint {
     pub result: RobustResult,
     /// Wall time of this level (s).
     pub time_seconds: f64,
+}
+
+impl EventFrontDocument {
+    /// Each chance constraint of `point` as a reader reads it (`plasticity_index
+    /// > 1`), in the order of its `result.chance`.
+    pub fn chance_labels(&self) -> Vec<&str> {
+        let mut held = self.held.iter();
+        (0..self.held.len() + 1)
+            .map(|j| {
+                if j == self.front_index {
+                    self.label.as_str()
+                } else {
+                    held.next().map_or("", |h| h.label.as_str())
+                }
+            })
+            .collect()
+    }
+
+    /// Why `point` is not a usable optimum, where sampling at its design finds a
+    /// chance constraint above its target beyond its interval: each such
+    /// constraint, e.g. `P(plasticity_index > 1) = 0.0116 [0.0112, 0.0120] > 0.0010`.
+    pub fn violations<'a>(&'a self, point: &'a LevelPoint) -> Vec<(&'a str, &'a ChanceReport)> {
+        let labels = self.chance_labels();
+        point
+            .result
+            .chance
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| c.violated)
+            .map(|(j, c)| (labels.get(j).copied().unwrap_or(""), c))
+            .collect()
+    }
 }
 
 impl LevelPoint {
@@ -109,6 +142,9 @@ pub struct EventFrontDocument {
     pub inputs: Vec<SceneParameter>,
     /// The other chance constraints, held at every point.
     pub held: Vec<HeldConstraint>,
+    /// Where the front's event stands among each point's chance constraints
+    /// (`result.chance`); the others are `held`, in order.
+    pub front_index: usize,
     /// The levels, loosest first.
     pub levels: Vec<f64>,
     /// One per level, in the order of `levels`.
@@ -303,6 +339,7 @@ pub fn event_front(
             .map(|u| u.inputs.iter().map(|i| i.parameter).collect())
             .unwrap_or_default(),
         held,
+        front_index,
         levels,
         points: out,
         status,

@@ -151,6 +151,20 @@ pub fn text(doc: &EventFrontDocument) -> String {
         }
         let _ = writeln!(out, "{row}  {:>16}", super::si(p.at_medians, u, 4));
     }
+    // Why a level has no usable optimum: each chance constraint sampling finds
+    // above its target at the level's design.
+    for p in &doc.points {
+        let why = violation_words(doc, p);
+        if !why.is_empty() {
+            let _ = writeln!(
+                out,
+                "\n#{} {}: at its design {}",
+                p.index,
+                p.status().as_str(),
+                why
+            );
+        }
+    }
     if doc.points.iter().any(|p| p.violated) {
         let _ = writeln!(
             out,
@@ -162,6 +176,23 @@ pub fn text(doc: &EventFrontDocument) -> String {
     out
 }
 
+/// The chance constraints sampling finds above their targets at `p`'s design,
+/// e.g. `P(plasticity_index > 1) = 0.0116 [0.0112, 0.0120] > 0.0010`; empty
+/// where none is.
+fn violation_words(doc: &EventFrontDocument, p: &LevelPoint) -> String {
+    doc.violations(p)
+        .iter()
+        .map(|(label, c)| {
+            format!(
+                "P({label}) = {} > {}",
+                probability_words(&c.verification),
+                sig_exp(c.target, 2)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
 fn point_json(doc: &EventFrontDocument, p: &LevelPoint) -> Value {
     let design: serde_json::Map<String, Value> = doc
         .names
@@ -170,11 +201,14 @@ fn point_json(doc: &EventFrontDocument, p: &LevelPoint) -> Value {
         .map(|(n, v)| (n.as_str().to_string(), json!(v)))
         .collect();
     let r = &p.result;
+    let labels = doc.chance_labels();
     let chance: Vec<Value> = r
         .chance
         .iter()
-        .map(|c| {
+        .enumerate()
+        .map(|(j, c)| {
             json!({
+                "label": labels.get(j).copied().unwrap_or(""),
                 "target": c.target,
                 "probability": c.verification.probability,
                 "probability_interval": c.verification.interval,
@@ -428,7 +462,10 @@ pub fn html(doc: &EventFrontDocument) -> String {
                 statistic_words(doc, q),
                 probability_words(&q.probability),
                 method_word(&q.probability).to_string(),
-                q.status().as_str().to_string(),
+                match violation_words(doc, q) {
+                    why if why.is_empty() => q.status().as_str().to_string(),
+                    why => format!("{}: {why}", q.status().as_str()),
+                },
                 mark(q).to_string(),
             ]
         })

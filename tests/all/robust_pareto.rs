@@ -101,6 +101,11 @@ fn a_front_point_is_optimize_at_its_level() {
     for p in points {
         assert_eq!(p["status"], "optimal", "{p}");
         assert_eq!(p["on_front"], true, "{p}");
+        // Each chance constraint says which it is: here the front's own event.
+        assert_eq!(
+            p["chance_constraints"][0]["label"], "plasticity_index > 1",
+            "{p}"
+        );
         let level = num(&p["level"]);
         let i = &p["probability_interval"];
         assert!(num(&i[0]) <= level && level <= num(&i[1]), "{p}");
