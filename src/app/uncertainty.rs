@@ -485,9 +485,12 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
     let nominal = &s.problem.scene;
     let u = s.u;
     let pull_off = u.outputs.iter().any(|q| q.needs_pull_off());
-    let run = |x: &[f64]| -> Point {
+    // The outputs at x, the searches started from `hints`; and x's own answers
+    // as hints for the next point.
+    let run = |x: &[f64], hints: SearchHints| -> (Point, SearchHints) {
         let sc = scene_at(nominal, &u.inputs, x);
-        outputs_of(&evaluate(&sc, pull_off), &sc, &u.outputs)
+        let ev = evaluate_hinted(&sc, pull_off, hints);
+        (outputs_of(&ev, &sc, &u.outputs), hints_from(&ev))
     };
     match s.method {
         Method::Sobol => {
@@ -506,12 +509,11 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
                         .iter()
                         .enumerate()
                         .map(|(j, x)| {
-                            let sc = scene_at(nominal, &u.inputs, x);
-                            let ev = evaluate_hinted(&sc, pull_off, hints);
+                            let (point, next) = run(x, hints);
                             if j == 0 {
-                                hints = hints_from(&ev);
+                                hints = next;
                             }
-                            outputs_of(&ev, &sc, &u.outputs)
+                            point
                         })
                         .collect();
                     progress.advance();
@@ -536,11 +538,10 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
                     points
                         .iter()
                         .map(|x| {
-                            let sc = scene_at(nominal, &u.inputs, x);
-                            let ev = evaluate_hinted(&sc, pull_off, hints);
-                            hints = hints_from(&ev);
+                            let (point, next) = run(x, hints);
+                            hints = next;
                             progress.advance();
-                            outputs_of(&ev, &sc, &u.outputs)
+                            point
                         })
                         .collect()
                 })
@@ -552,7 +553,10 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
             range
                 .into_par_iter()
                 .map(|k| {
-                    let r = run(&sampling::point(&s.model, k, s.seed));
+                    let (r, _) = run(
+                        &sampling::point(&s.model, k, s.seed),
+                        SearchHints::default(),
+                    );
                     progress.advance();
                     r
                 })
