@@ -147,12 +147,48 @@ fn a_bare_number_out_of_its_plausible_range_is_refused_with_a_guess() {
 #[test]
 fn a_contact_row_that_is_not_a_solution_exits_1() {
     // A unit written out is taken as meant: 150 Pa runs to the iteration limit.
+    // On a 32 × 32 map (heights from a fixed generator, as a text grid): the
+    // shipped 256² scan takes the same 5000 iterations some 60 times longer.
+    let dir = scratch("not-a-solution");
+    std::fs::create_dir_all(&dir).unwrap();
+    let map = dir.join("map.txt");
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut grid = String::new();
+    for _ in 0..32 {
+        let row: Vec<String> = (0..32)
+            .map(|_| {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                format!("{:.6}", (state >> 11) as f64 / (1u64 << 53) as f64)
+            })
+            .collect();
+        grid.push_str(&row.join("\t"));
+        grid.push('\n');
+    }
+    std::fs::write(&map, grid).unwrap();
     let out = common::stdout(
-        wearopt().args(["contact", MAP, "--modulus", "150 Pa", "--pressure", "50MPa"]),
+        wearopt().args([
+            "contact",
+            map.to_str().unwrap(),
+            "--pixel-size",
+            "20nm",
+            "--height-unit",
+            "nm",
+            "--modulus",
+            "150 Pa",
+            "--pressure",
+            "50MPa",
+        ]),
         1,
     );
     let text = String::from_utf8(out).unwrap();
     assert!(text.contains("not a solution"), "{text}");
+    assert!(
+        text.contains("stopped at its iteration limit (5000 iterations)"),
+        "{text}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 const HUMID: &str = "problems/micro-gear-humid.toml";
