@@ -756,7 +756,17 @@ fn four_branch_system() {
         &ReliabilitySettings::default(),
     );
     report("four-branch", &r, exact);
-    assert!(r.form.design_points.len() >= 2);
+    // Four design points, each branch's nearest point to the origin: ±(3/√2)(1, 1)
+    // on the two curved branches (β = 3), and ±(7/4)(1, −1) on the lines
+    // |x_0 − x_1| = 7/√2, at the distance (7/√2)/√2 = 3.5.
+    let mut betas: Vec<f64> = r.form.design_points.iter().map(|p| p.beta).collect();
+    betas.sort_by(f64::total_cmp);
+    eprintln!("four-branch design points: β = {betas:?}");
+    assert_eq!(betas.len(), 4, "{betas:?}");
+    for (b, want) in betas.iter().zip([3.0, 3.0, 3.5, 3.5]) {
+        assert!((b - want).abs() < 1e-4, "{betas:?}");
+    }
+    assert_eq!(r.form.status, FormStatus::MultipleDesignPoints);
     assert_sampled(&r, exact);
 }
 
