@@ -24,7 +24,7 @@ fn form_sorm(c: &mut Criterion) {
         ..Default::default()
     };
     let g = |x: &[f64]| Some(3.5 - x[4] + x[..4].iter().map(|v| v * v).sum::<f64>());
-    c.bench_function("FORM (11 starts) + SORM, 5-D paraboloid", |b| {
+    c.bench_function("FORM (21 starts) + SORM, 5-D paraboloid", |b| {
         b.iter(|| black_box(reliability::analyze(&model, g, &settings)))
     });
 }
