@@ -1,7 +1,7 @@
 //! The uncertainty engines on cheap closed-form models, so that the numbers are
 //! the engines' own cost: FORM + SORM (no sampling) on the 5-D paraboloid
 //! g = 3.5 − u5 + Σ_{i≤4} u_i², and the analysis of Sobol′ indices (centring,
-//! estimates, 1000 bootstrap resamples) at N = 2^14, d = 5 on precomputed values;
+//! estimates, intervals over 32 replicates) at N = 2^14, d = 5 on precomputed values;
 //! and the reliability-based design of Youn & Choi (2004) by SORA with its
 //! verification by importance sampling (`uq::robust`, s = 0.3, β_t = 3, one start).
 //! Run with `cargo bench --bench uq`.
@@ -24,7 +24,7 @@ fn form_sorm(c: &mut Criterion) {
         ..Default::default()
     };
     let g = |x: &[f64]| Some(3.5 - x[4] + x[..4].iter().map(|v| v * v).sum::<f64>());
-    c.bench_function("FORM (11 starts) + SORM, 5-D paraboloid", |b| {
+    c.bench_function("FORM (21 starts) + SORM, 5-D paraboloid", |b| {
         b.iter(|| black_box(reliability::analyze(&model, g, &settings)))
     });
 }
@@ -36,7 +36,7 @@ fn sobol_analyze(c: &mut Criterion) {
     let f = |x: &[f64]| x[0] + 2.0 * x[1] * x[2] + x[3].sin() + 0.1 * x[4];
     let values: Vec<Vec<Option<f64>>> = (0..1u64 << 14)
         .map(|k| {
-            sobol::points(&model, k, 1)
+            sobol::points(&model, k, 1 << 14, 1)
                 .iter()
                 .map(|x| Some(f(x)))
                 .collect()
@@ -44,13 +44,13 @@ fn sobol_analyze(c: &mut Criterion) {
         .collect();
     let mut group = c.benchmark_group("sobol");
     group.sample_size(10);
-    group.bench_function("analyze, N = 2^14, d = 5, 1000 resamples", |b| {
-        b.iter(|| black_box(sobol::analyze(d, &values, 1)))
+    group.bench_function("analyze, N = 2^14, d = 5, 32 replicates", |b| {
+        b.iter(|| black_box(sobol::analyze(d, &values)))
     });
     group.bench_function("points, N = 2^14, d = 5", |b| {
         b.iter(|| {
             for k in 0..1u64 << 14 {
-                black_box(sobol::points(&model, k, 1));
+                black_box(sobol::points(&model, k, 1 << 14, 1));
             }
         })
     });

@@ -503,7 +503,7 @@ fn evaluate_units(s: &Setup, range: Range<u64>, progress: &dyn Progress) -> Vec<
             let per_k: Vec<Vec<Point>> = range
                 .into_par_iter()
                 .map(|k| {
-                    let points = sobol::points(&s.model, k, s.seed);
+                    let points = sobol::points(&s.model, k, s.samples, s.seed);
                     let mut hints = SearchHints::default();
                     let r = points
                         .iter()
@@ -582,7 +582,7 @@ fn analyse(s: &Setup, points: Vec<Point>, progress: &dyn Progress) -> Uncertaint
                         .chunks(d + 2)
                         .map(|pts| pts.iter().map(|p| p[o].ok()).collect())
                         .collect();
-                    sobol::analyze(d, &values, seed)
+                    sobol::analyze(d, &values)
                 })
                 .collect();
             (Analysis::Sobol(results), samples as usize * (d + 2))

@@ -26,7 +26,7 @@ pub(crate) struct UncertaintyArgs {
     /// power of two and costs N (d + 2) evaluations).
     #[arg(long)]
     samples: Option<u64>,
-    /// The seed of the scrambled sequences and the bootstrap (overrides [uncertainty] seed).
+    /// The seed of the scrambled sequences and of importance sampling (overrides [uncertainty] seed).
     #[arg(long)]
     seed: Option<u64>,
     /// Run only part I of N (I = 0 … N−1) and write it as a part (JSON) for

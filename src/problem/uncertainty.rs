@@ -72,7 +72,7 @@ impl Event {
 pub struct Uncertainty {
     /// N (before a Sobol′ study rounds it up to a power of two).
     pub samples: u64,
-    /// The seed of the scrambled sequences and of the bootstrap.
+    /// The seed of the scrambled sequences and of importance sampling.
     pub seed: u64,
     /// The outputs studied, in the order given.
     pub outputs: Vec<Quantity>,

@@ -84,7 +84,8 @@ fn method_words(doc: &UncertaintyDocument) -> String {
         .unwrap_or_default();
     match doc.method {
         Method::Sobol => format!(
-            "Sobol′ indices: centred Saltelli (first order S1) and Jansen (total ST) estimators on one scrambled {}-dimensional Sobol′ sequence, N = {n}{rounded}, N (d + 2) = {} evaluations; 95 % bootstrap intervals",
+            "Sobol′ indices: centred Saltelli (first order S1) and Jansen (total ST) estimators on {} independent Owen scrambles of a {}-dimensional Sobol′ sequence, N = {n}{rounded}, N (d + 2) = {} evaluations; 95 % intervals from the spread between the scrambles",
+            crate::uq::sobol::replicates(n),
             2 * d,
             doc.evaluations
         ),
@@ -570,7 +571,7 @@ pub fn json_value(doc: &UncertaintyDocument) -> Value {
             for (o, r) in doc.outputs.iter().zip(results) {
                 statuses.insert(
                     o.quantity.as_str().into(),
-                    json!({"status": r.status, "wide": r.wide, "mean": r.mean, "variance": r.variance, "resamples": r.resamples}),
+                    json!({"status": r.status, "wide": r.wide, "mean": r.mean, "variance": r.variance, "replicates": r.replicates}),
                 );
                 for (k, name) in names.iter().enumerate() {
                     let (Some(s), Some(t)) = (r.first_order.get(k), r.total.get(k)) else {
@@ -987,7 +988,7 @@ pub fn html(doc: &UncertaintyDocument) -> String {
                 p.figure(
                     &format!("sobol-{}", o.quantity.as_str()),
                     &indices_svg(&format!("Sobol′ indices of {}", o.quantity.as_str()), &names, &first, &tot),
-                    "First-order (S1: the share of the variance each input causes alone) and total (ST: alone and with the others) indices, with 95 % bootstrap intervals.",
+                    "First-order (S1: the share of the variance each input causes alone) and total (ST: alone and with the others) indices, with 95 % intervals from the spread between independent scrambles of the design.",
                 );
                 let rows: Vec<Vec<String>> = names
                     .iter()

@@ -20,7 +20,7 @@
 //!   standard normal variable.
 //! * [`model`]: the joint input model (Nataf / Gaussian copula).
 //! * [`sobol`]: Sobol′ sensitivity indices (Saltelli 2010, Jansen) with
-//!   bootstrap intervals.
+//!   intervals from independent scrambles (replicates) of the design.
 //! * [`morris`]: Morris elementary effects (screening).
 //! * [`sampling`]: output statistics and quantiles from a scrambled Sobol′ sample.
 //! * [`reliability`]: probability of a failure event g(x) ≤ 0: FORM, SORM,

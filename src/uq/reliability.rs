@@ -16,7 +16,9 @@
 //!    descends). Converged when |g| ≤ tol·|g(0)| and |u − (α·u)α| ≤ tol·max(|u|, 1),
 //!    α = −∇g/|∇g|. It starts from the median (u = 0), then from 2d + 1 points on
 //!    the sphere of radius β (from the first run; 3 if it failed): ±β along each
-//!    axis and β(1, …, 1)/√d. Converged points closer than 10⁻³ max(β, 1) are one
+//!    axis and β(1, …, 1)/√d, and from ±1.5β along each axis (2d more: a branch
+//!    of a series system a little beyond β is the least g only there, as the
+//!    four-branch system's at 5/√2 behind its pair at 3). Converged points closer than 10⁻³ max(β, 1) are one
 //!    point; the design points kept are those with Φ(−β_j) ≥ 10⁻² Φ(−β_min)
 //!    (the others add nothing measurable). β = |u*| (negative when the median
 //!    fails) and P_FORM = Φ(−β) of the most probable point.
@@ -60,7 +62,7 @@ pub struct ReliabilitySettings {
     pub gradient_step: f64,
     /// Finite-difference step of SORM's Hessian in u.
     pub hessian_step: f64,
-    /// Restart FORM from 2d + 1 points on the β-sphere.
+    /// Restart FORM from 2d + 1 points on the β-sphere and 2d on the 1.5β one.
     pub multistart: bool,
     /// Compute SORM at the most probable design point.
     pub sorm: bool,
@@ -385,6 +387,13 @@ fn hlrf<G: Fn(&[f64]) -> Option<f64> + Sync>(
     fail(FormStatus::NotConverged, u, s.max_iterations)
 }
 
+/// The radius of the second ring of FORM starts, in units of the first ring's
+/// β. A start sees the branch of a series system whose g is least there: on the
+/// β-sphere the nearest branch can hide one a little farther out (the
+/// four-branch system's points at 5/√2 behind those at 3), which wins a
+/// start taken farther from the origin.
+const OUTER_RING: f64 = 1.5;
+
 fn form<G: Fn(&[f64]) -> Option<f64> + Sync>(
     limit: &Limit<G>,
     s: &ReliabilitySettings,
@@ -416,15 +425,19 @@ fn form<G: Fn(&[f64]) -> Option<f64> + Sync>(
         } else {
             3.0
         };
-        let mut starts = Vec::with_capacity(2 * d + 1);
-        for i in 0..d {
-            for sgn in [1.0, -1.0] {
-                let mut u = vec![0.0; d];
-                u[i] = sgn * radius;
-                starts.push(u);
+        let mut starts = Vec::with_capacity(4 * d + 1);
+        for r in [radius, OUTER_RING * radius] {
+            for i in 0..d {
+                for sgn in [1.0, -1.0] {
+                    let mut u = vec![0.0; d];
+                    u[i] = sgn * r;
+                    starts.push(u);
+                }
+            }
+            if r == radius {
+                starts.push(vec![radius / (d as f64).sqrt(); d]);
             }
         }
-        starts.push(vec![radius / (d as f64).sqrt(); d]);
         let more: Vec<Run> = starts
             .into_par_iter()
             .map(|u| hlrf(limit, u, g_scale, s))

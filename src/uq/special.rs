@@ -156,6 +156,14 @@ pub(crate) fn beta_inc_inv_lower(p: f64, a: f64, b: f64) -> (f64, f64) {
     (t.exp(), -t.exp_m1())
 }
 
+/// The point t with P(|T| > t) = `alpha` for Student's T with `nu` degrees of
+/// freedom (so t_{1 − α/2, ν}): P(|T| > t) = I_{ν/(ν + t²)}(ν/2, 1/2), inverted
+/// by [`beta_inc_inv_lower`]. 0 < α ≤ ~0.5, ν > 0.
+pub(crate) fn student_t_two_sided(alpha: f64, nu: f64) -> f64 {
+    let (x, one_minus_x) = beta_inc_inv_lower(alpha, 0.5 * nu, 0.5);
+    (nu * one_minus_x / x).sqrt()
+}
+
 /// P(K ≤ k) for K ~ Binomial(n, p): I_{1−p}(n − k, k + 1).
 pub(crate) fn binomial_cdf(k: i64, n: u64, p: f64) -> f64 {
     if k < 0 {
@@ -220,6 +228,22 @@ mod tests {
                 let (lo, _) = beta_inc(a, b, y, ym);
                 assert!((lo - p).abs() <= 1e-13 * p, "a {a} b {b} p {p}: {lo}");
             }
+        }
+    }
+
+    #[test]
+    fn student_t_matches_tables() {
+        // t_{0.975, ν}: closed forms for ν = 1 (tan(0.475π)) and ν = 2
+        // ((2p − 1)·√(2/(4p(1 − p))), p = 0.975), the rest scipy.stats.t.ppf.
+        for (nu, want) in [
+            (1.0, (0.475 * std::f64::consts::PI).tan()),
+            (2.0, 0.95 * (2.0f64 / (4.0 * 0.975 * 0.025)).sqrt()),
+            (7.0, 2.364_624_251_592_784),
+            (15.0, 2.131_449_545_559_776),
+            (31.0, 2.039_513_446_396_408),
+        ] {
+            let t = student_t_two_sided(0.05, nu);
+            assert!((t - want).abs() < 1e-10 * want, "ν = {nu}: {t} vs {want}");
         }
     }
 

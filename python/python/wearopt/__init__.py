@@ -185,7 +185,7 @@ def uncertainty(
 ) -> Dict[str, Any]:
     """The scene under the scatter of its ``[uncertainty]`` inputs (the JSON of
     ``wearopt uncertainty FILE --method M [--samples N] [--seed S] --format json``):
-    ``method`` is ``"sobol"`` (indices with bootstrap intervals), ``"morris"``,
+    ``method`` is ``"sobol"`` (indices with 95 % intervals), ``"morris"``,
     ``"sampling"`` (percentiles with intervals, the empirical CDF as the numpy
     array ``cdf``, life B1/B10/B50) or ``"reliability"`` (the probability of each
     event with its interval, β, FORM, SORM, design points). Interval pairs come
