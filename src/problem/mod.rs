@@ -942,8 +942,7 @@ impl Problem {
         let cantilever = r.cantilever(&raw)?;
         let temperature = r.temperature(&raw, c, environment.as_ref())?;
         let environment = environment.map(|e| Environment { temperature, ..e });
-        let (wear_law, activation) =
-            r.wear(&raw, body_a.material, shear_strength, adhesion_model)?;
+        let (wear_law, activation) = r.wear(&raw, body_a.material, shear_strength)?;
         let scene = Scene {
             youngs_modulus_a: body_a.youngs_modulus,
             poisson_ratio_a: body_a.poisson_ratio,
@@ -1067,7 +1066,6 @@ impl Reader<'_> {
         raw: &RawProblem,
         material: Option<&'static Material>,
         shear_strength: Option<f64>,
-        adhesion_model: AdhesionModel,
     ) -> Result<(WearModel, Option<Activation>), ProblemError> {
         let Some(table) = &raw.wear else {
             return Ok((WearModel::Archard, None));
@@ -1226,17 +1224,6 @@ impl Reader<'_> {
                 "wear.stress",
                 &at,
                 "\"shear\" reads the junctions' shear strength τ: add interface.shear_strength, e.g. shear_strength = \"1 GPa\"",
-            ));
-        }
-        if stress == ContactStress::Normal && adhesion_model.law().general() {
-            let at = w.stress.as_ref().map_or(span.clone(), |s| s.span());
-            return Err(self.invalid(
-                "wear.stress",
-                &at,
-                format!(
-                    "\"normal\" reads each summit's contact pressure, which the {} law's table does not give: set interface.adhesion_model = \"jkr\" or \"dmt\", or stress = \"shear\" with interface.shear_strength",
-                    adhesion_model.label()
-                ),
             ));
         }
         let sliding_speed = self.quantity(

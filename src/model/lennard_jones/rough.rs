@@ -364,6 +364,33 @@ impl RoughLaw {
         })
     }
 
+    /// p(Δ) = ℓ^{-3/2} Σ_k w_k P̂_k(ℓΔ), one summit's load at interference
+    /// Δ ≥ 0 (§3's units, > 0 pressing): each curve's contact part at δ̂ = ℓΔ
+    /// (every curve's δ̂_s is < 0, so Δ ≥ 0 lies on it), interpolated in μ with
+    /// the weights of the integrals (cubic in 1/μ). At Δ ≥ 0 the curves have
+    /// no jump to move, so the loads themselves interpolate; what the
+    /// stress-assisted wear law reads as a summit's P (docs/model.md §12).
+    pub fn summit_load(&self, d: f64) -> f64 {
+        self.ell.powf(-1.5) * self.summit_load_maugis(d)
+    }
+
+    /// Σ_k w_k P̂_k(ℓΔ), [`RoughLaw::summit_load`] times ℓ^{3/2} (the curves' own
+    /// units, for a caller that hoists the power).
+    pub fn summit_load_maugis(&self, d: f64) -> f64 {
+        let dd = self.ell * d;
+        self.nodes()
+            .iter()
+            .map(|n| {
+                let load = if dd >= n.curve.switch {
+                    n.curve.contact_load(dd)
+                } else {
+                    n.curve.load(dd)
+                };
+                n.weight * load
+            })
+            .sum()
+    }
+
     /// The shares at separation h.
     pub fn at(&self, h: f64) -> Shares {
         let mut out = Shares {

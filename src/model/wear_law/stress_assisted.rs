@@ -27,6 +27,8 @@
 use super::{Activation, ContactStress, WearDetails, WearInput, WearLaw, WearModel, WearOutcome};
 use crate::model::gauss;
 use crate::model::integrals::Model;
+use crate::model::lennard_jones::law::table_of;
+use crate::model::lennard_jones::rough::RoughLaw;
 use crate::model::scaled::Scaled;
 use crate::model::scene::WearArea;
 
@@ -327,8 +329,9 @@ impl Elastic<'_> {
 /// ∫₀^{Δc} Δ F(p/Δ) φ̄ dΔ + F(c_h) Ā_p at separation h, F(s) = 1 − exp(−e^{ln c + b s}),
 /// the summits' stress s = p/Δ in the model's units (over (K/π)(σ/R)^{1/2}; c_h on a
 /// plastic junction): the non-dimensional integral the law's rate is Ω/a₀³ times the
-/// real-area scale times (what tests/data/reference_stress_assisted.csv tabulates). Zero
-/// under the Lennard-Jones law's table, whose summit stresses are not available.
+/// real-area scale times (what tests/data/reference_stress_assisted.csv tabulates; under
+/// the Lennard-Jones law's table, p its curves' load interpolated in μ, what
+/// tests/data/reference_stress_assisted_lj.csv tabulates).
 pub fn removal_integral(model: &Model, h: f64, ln_c: f64, b: f64) -> Scaled {
     let kernel = Kernel {
         ln_c,
@@ -349,11 +352,55 @@ pub fn removal_integral(model: &Model, h: f64, ln_c: f64, b: f64) -> Scaled {
 /// 0 ≤ Δ ≤ Δc of the summit's area Δ times F, its saturated share and its
 /// activation energy. `stress_scale` turns p/Δ into a stress (Pa).
 fn elastic_parts(model: &Model, h: f64, kernel: &Kernel, stress_scale: f64) -> Parts {
+    if let Some(law) = table_of(model.tabulated()) {
+        return lennard_jones_parts(law, h, model.critical_interference(), kernel, stress_scale);
+    }
     match elastic_of(model) {
         Some((elastic, dc)) => elastic_integrals(model, &elastic, h, dc, kernel, stress_scale),
         // The Lennard-Jones law's own table: refused by Scene::validate.
         None => Parts::default(),
     }
+}
+
+/// The relative accuracy of the Lennard-Jones summits' integrals (the adaptive
+/// rule's target; the table itself is interpolated in μ to about 1e-5,
+/// docs/model.md §11).
+pub const LENNARD_JONES_TOLERANCE: f64 = 1e-10;
+
+/// The Lennard-Jones law's elastic summits at separation h (docs/model.md §12):
+/// the Gaussian-weighted integrals over 0 ≤ Δ ≤ Δc (the model's Δc, its curves'
+/// interpolated as the plastic area's is) of the summit's area Δ times F(σ), σ =
+/// `stress_scale` p(Δ)/Δ with p the curves' load interpolated in μ
+/// ([`RoughLaw::summit_load`]), in x = Δ^{1/2} (the load is finite and, for an
+/// adhesive summit, < 0 at Δ = 0, so σ has DMT's pole there), by the adaptive
+/// Gauss–Kronrod rule to [`LENNARD_JONES_TOLERANCE`].
+fn lennard_jones_parts(
+    law: &RoughLaw,
+    h: f64,
+    critical_interference: f64,
+    kernel: &Kernel,
+    stress_scale: f64,
+) -> Parts {
+    // Beyond Δ_max the Gaussian weight is below e^{-800} of its largest value.
+    let reach = (1600.0 + h.max(0.0).powi(2)).sqrt() - h;
+    let top = critical_interference.min(reach.max(0.0));
+    if top.is_nan() || top <= 0.0 {
+        return Parts::default();
+    }
+    let scale = stress_scale * law.ell.powf(-1.5);
+    let ln_rate = |x: f64| -> (f64, f64, f64) {
+        let d = x * x;
+        if d <= 0.0 {
+            return (f64::NEG_INFINITY, f64::NEG_INFINITY, 0.0);
+        }
+        let stress = scale * law.summit_load_maugis(d) / d;
+        let ln_x = kernel.ln_x(stress);
+        let u = h + d;
+        // Δ φ̄ dΔ/dx = 2x³ φ̄.
+        let ln = d.ln() + Kernel::ln_removal(ln_x) - 0.5 * u * u + (2.0 * x).ln();
+        (ln, ln_x, kernel.activation(stress, ln_x))
+    };
+    adaptive_reference::integrate(&ln_rate, top.sqrt(), LENNARD_JONES_TOLERANCE, true)
 }
 
 /// The elastic summits of the model's law and its critical interference Δc; None
@@ -770,11 +817,14 @@ impl Layout<'_, '_> {
 /// The adaptive Gauss–Kronrod integration this law used before its fixed layout:
 /// an independent method the layout is held to over a grid of the range
 /// (`layout_matches_adaptive_quadrature`).
-#[cfg(test)]
+/// An adaptive Gauss–Kronrod rule over the summit heights: the tests' reference
+/// for the fixed layout under JKR and DMT, and the Lennard-Jones law's own rule
+/// ([`lennard_jones_parts`]).
 mod adaptive_reference {
     use super::*;
 
     /// [`super::elastic_parts`] by the adaptive rule.
+    #[cfg(test)]
     pub(super) fn elastic_parts(
         model: &Model,
         h: f64,
@@ -789,14 +839,16 @@ mod adaptive_reference {
 
     /// The relative accuracy the adaptive quadrature aims at (the reference of
     /// tests/data is met to 1e-12).
-    const TOLERANCE: f64 = 1e-13;
+    #[cfg(test)]
+    pub(super) const TOLERANCE: f64 = 1e-13;
 
     /// How far below its largest value (in ln) the integrand is left out: e^{−46} ≈ 1e-20.
-    const SUPPORT_DEPTH: f64 = 46.0;
+    pub(super) const SUPPORT_DEPTH: f64 = 46.0;
 
     /// The most panels the adaptive quadrature splits into.
     const MAX_PANELS: usize = 4000;
 
+    #[cfg(test)]
     pub(super) fn elastic_integrals(
         model: &Model,
         elastic: &Elastic<'_>,
@@ -825,6 +877,22 @@ mod adaptive_reference {
             let ln = d.ln() + Kernel::ln_removal(ln_x) - 0.5 * u * u + summit.jacobian.ln();
             (ln, ln_x, kernel.activation(stress, ln_x))
         };
+        integrate(&ln_rate, t_top, TOLERANCE, false)
+    }
+
+    /// The rate's integral, its saturated share and its activation integral over
+    /// 0 ≤ t ≤ t_top, `ln_rate(t)` giving ln of the rate's integrand (−∞ where it
+    /// vanishes), ln x = ln(Γa₀/v) and −d ln F/dβ there: panels from a scan for the
+    /// integrand's peak and support (down to e^{−46} of it), the crossings of
+    /// ln x = 0 (bisection) and edges halved geometrically towards t = 0 (80 of
+    /// them, or with `prune` until what lies below is e^{−36} of the whole), then
+    /// split adaptively to `tolerance` (each integral relative to itself).
+    pub(super) fn integrate(
+        ln_rate: &impl Fn(f64) -> (f64, f64, f64),
+        t_top: f64,
+        tolerance: f64,
+        prune: bool,
+    ) -> Parts {
         // A scan for the integrand's largest value, the heights that matter and
         // the edges of the saturated band.
         const GRID: usize = 96;
@@ -872,11 +940,19 @@ mod adaptive_reference {
         // Geometric edges towards t = 0, where the stress's pole makes F an essential
         // singularity that the error estimate alone does not find.
         let first_edge = edges.iter().copied().fold(f64::INFINITY, f64::min);
+        // With `prune`, the halving stops at the first edge t where t times the
+        // integrand is below e^{−36} of t_top times its peak: what lies below t is
+        // less still (the integrand falls on towards t = 0, at least as t³: the
+        // area and, for an adhesive summit, F's pole both vanish there).
         let mut t = grid[lo + 1].0;
+        let floor = peak + t_top.ln() - 36.0;
         for _ in 0..80 {
             t *= 0.5;
             if t > first_edge {
                 edges.push(t);
+                if prune && ln_rate(t).0 + t.ln() < floor {
+                    break;
+                }
             }
         }
         edges.sort_by(f64::total_cmp);
@@ -890,7 +966,7 @@ mod adaptive_reference {
             let r = (ln - peak).exp();
             [r, if ln_x > 0.0 { r } else { 0.0 }, r * activation]
         };
-        let [rate, saturated, activation] = adaptive(&f, &edges);
+        let [rate, saturated, activation] = adaptive(&f, &edges, tolerance);
         let scaled = |m: f64| Scaled::new(m, -peak);
         Parts {
             rate: scaled(rate),
@@ -951,9 +1027,13 @@ mod adaptive_reference {
     }
 
     /// The integrals of `f` over the union of panels `edges`, split where the error
-    /// is largest until each integral's error sum is below [`TOLERANCE`] of it (or of
+    /// is largest until each integral's error sum is below `tolerance` of it (or of
     /// 1e-3 of the first, for an integral that nearly vanishes).
-    pub(super) fn adaptive(f: &impl Fn(f64) -> [f64; 3], edges: &[f64]) -> [f64; 3] {
+    pub(super) fn adaptive(
+        f: &impl Fn(f64) -> [f64; 3],
+        edges: &[f64],
+        tolerance: f64,
+    ) -> [f64; 3] {
         let mut panels: Vec<(f64, f64, [f64; 3], [f64; 3])> = edges
             .windows(2)
             .filter(|w| w[1] > w[0])
@@ -966,7 +1046,7 @@ mod adaptive_reference {
             let scale = [0, 1, 2].map(|i| panels.iter().map(|p| p.2[i]).sum::<f64>().abs());
             let scale = [0, 1, 2].map(|i| scale[i].max(1e-3 * scale[0]).max(f64::MIN_POSITIVE));
             let error = [0, 1, 2].map(|i| panels.iter().map(|p| p.3[i]).sum::<f64>() / scale[i]);
-            if error.iter().all(|&e| e <= TOLERANCE) || panels.len() >= MAX_PANELS {
+            if error.iter().all(|&e| e <= tolerance) || panels.len() >= MAX_PANELS {
                 break;
             }
             let badness = |p: &(f64, f64, [f64; 3], [f64; 3])| {
@@ -1062,11 +1142,16 @@ mod tests {
     /// tolerance (closed forms: ∫₀¹ eˣ = e − 1; ∫₀² 1/(1 + e^{−200(x−1)}) = 1).
     #[test]
     fn adaptive_quadrature() {
-        let [i, _, _] = adaptive_reference::adaptive(&|x: f64| [x.exp(), 0.0, 0.0], &[0.0, 1.0]);
+        let [i, _, _] = adaptive_reference::adaptive(
+            &|x: f64| [x.exp(), 0.0, 0.0],
+            &[0.0, 1.0],
+            adaptive_reference::TOLERANCE,
+        );
         assert!((i / (std::f64::consts::E - 1.0) - 1.0).abs() < 1e-15);
         let [j, _, _] = adaptive_reference::adaptive(
             &|x: f64| [1.0 / (1.0 + (-200.0 * (x - 1.0)).exp()), 0.0, 0.0],
             &[0.0, 2.0],
+            adaptive_reference::TOLERANCE,
         );
         assert!((j - 1.0).abs() < 1e-13, "{j}");
     }
