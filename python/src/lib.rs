@@ -188,6 +188,17 @@ fn pareto_json(
                 .transpose()
                 .map_err(words)?,
         };
+        // A robust study against an adhesion measure: one robust optimum per level.
+        if problem.robust.is_robust() {
+            let doc = app::robust_adhesion_front::adhesion_front(
+                &problem,
+                &origin,
+                &options,
+                &mut |_| {},
+            )
+            .map_err(words)?;
+            return Ok(report::robust_adhesion_front::json_value(&doc).to_string());
+        }
         let doc = app::pareto::pareto(&problem, &origin, &options, &Silent).map_err(words)?;
         Ok(report::pareto::json_document(&doc).to_string())
     })

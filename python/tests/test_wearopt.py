@@ -181,6 +181,28 @@ def test_probability_front_equals_cli_json(tmp_path):
         wearopt.pareto(str(path), adhesion="pull_off_force")
 
 
+def test_robust_adhesion_front_equals_cli_json(tmp_path):
+    """`wearopt.pareto` on a robust study against an adhesion measure returns the
+    CLI's document: the shipped robust hub, its p95 and stiction left out for
+    speed, two levels of the pull-off force under P(plasticity_index > 1) <= 1e-3."""
+    text = (ROOT / "problems" / "micro-gear-robust.toml").read_text()
+    text = text.replace('statistic = "p95"', "").replace("samples = 256", "")
+    text = text.replace('event = "stiction"\nprobability_max = 1e-3\n', "")
+    text = text.replace("[[constraint]]                  # at most 1 hub in 1000 stuck to its pin\n", "")
+    text = text.replace("[optimizer]", '[pareto]\nadhesion = "pull_off_force"\npoints = 2\n\n[optimizer]')
+    # The DMT law's pull-off is cheap; the chance constraint (on ψ) does not depend on the law.
+    text = text.replace('adhesion_model = "lennard_jones"', 'adhesion_model = "dmt"')
+    path = tmp_path / "front.toml"
+    path.write_text(text)
+    expected = json.loads(cli("pareto", str(path), "--format", "json").stdout)
+    got = wearopt.pareto(str(path))
+    assert got["front_measure"] == "adhesion"
+    assert got["adhesion_measure"] == "pull_off_force"
+    assert len(got["points"]) == 2
+    assert got["points"][0]["target"] == pytest.approx(got["robust_optimum"]["adhesion"], rel=1e-12)
+    assert without_timing(got) == without_timing(expected)
+
+
 def test_dict_problem_equals_its_file():
     tomllib = pytest.importorskip("tomllib")
     path = ROOT / "problems" / "micro-gear.toml"

@@ -28,6 +28,7 @@ pub mod optimize;
 pub mod pareto;
 pub mod quantity;
 pub mod robust;
+pub mod robust_adhesion_front;
 pub mod robust_front;
 pub mod roughness;
 pub mod sweep;

@@ -430,12 +430,11 @@ pub(crate) fn write_output(path: &std::path::Path, text: &str, what: &str) -> Re
     }
 }
 
-/// Says on stderr what of a robust file `command` ("front" or "sweep") works
-/// at the nominal inputs (docs/robust-design.md, "Beyond `optimize`"): a front
-/// against an adhesion measure is of the nominal study (a front against a
-/// probability, `[pareto] event`, is robust and says nothing); a sweep's
+/// Says on stderr what of a robust file `command` ("sweep") works at the
+/// nominal inputs (docs/robust-design.md, "Beyond `optimize`"): a sweep's
 /// columns are nominal beside its `feasible_probability` columns, and it takes
-/// no statistic.
+/// no statistic. (`pareto` is robust against a probability and against an
+/// adhesion measure, and says nothing.)
 pub(crate) fn say_nominal_only(
     problem: &wearopt::problem::Problem,
     file: &std::path::Path,
@@ -445,20 +444,14 @@ pub(crate) fn say_nominal_only(
         return;
     }
     let file = file.display();
-    if command == "sweep" {
-        if problem.robust.statistic.is_some() {
-            eprintln!(
-                "note: {file}: the statistic objective is read by `wearopt optimize` and by a front against a probability only; this sweep's columns are at the nominal inputs{}",
-                if problem.robust.chance.is_empty() {
-                    ""
-                } else {
-                    ", beside one feasible_probability column per chance constraint"
-                }
-            );
-        }
-    } else {
+    if command == "sweep" && problem.robust.statistic.is_some() {
         eprintln!(
-            "note: {file}: the statistic objective and chance constraints are read by `wearopt optimize` and by a front against a probability ([pareto] event = \"stiction\") only; this {command} against an adhesion measure is of the nominal study (every input at its nominal value)"
+            "note: {file}: the statistic objective is read by `wearopt optimize` and by `wearopt pareto` only; this sweep's columns are at the nominal inputs{}",
+            if problem.robust.chance.is_empty() {
+                ""
+            } else {
+                ", beside one feasible_probability column per chance constraint"
+            }
         );
     }
 }

@@ -138,7 +138,6 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
     if problem.robust.front.is_some() {
         return event_front(&args, &problem, &origin);
     }
-    super::say_nominal_only(&problem, &args.file, "front");
     let mut options = out::options(args.format, args.points);
     options.adhesion = args
         .adhesion
@@ -150,6 +149,9 @@ pub fn run(args: ParetoArgs) -> Result<ExitCode> {
         .as_deref()
         .map(|t| front::direction(OptionName("direction"), t))
         .transpose()?;
+    if problem.robust.is_robust() {
+        return adhesion_front(&args, &problem, &origin, &options);
+    }
     let plan = front::plan(&problem, &origin, &options)?;
     let bar = super::progress::wanted().then(|| {
         let b = indicatif::ProgressBar::new(plan.spec.points as u64);
@@ -261,6 +263,53 @@ fn event_front(
     )?;
     if let Some(path) = &args.plot {
         super::write_output(path, &wearopt::report::robust_front::svg(&doc), "the plot")?;
+    }
+    Ok(match doc.status {
+        FrontStatus::Infeasible => ExitCode::from(1),
+        _ => ExitCode::SUCCESS,
+    })
+}
+
+/// `wearopt pareto` on a robust study against an adhesion measure: one robust
+/// optimum per level of the measure, a line on stderr per level on a
+/// terminal; the report written whole at the end. Exit code 1 when no level
+/// gives a usable point.
+fn adhesion_front(
+    args: &ParetoArgs,
+    problem: &wearopt::problem::Problem,
+    origin: &str,
+    options: &front::ParetoOptions,
+) -> Result<ExitCode> {
+    for (path, what) in [(&args.out, "the report"), (&args.plot, "the plot")] {
+        if let Some(path) = path {
+            super::check_output(path, what, &[&args.file])?;
+        }
+    }
+    let progress = super::progress::wanted();
+    let doc =
+        wearopt::app::robust_adhesion_front::adhesion_front(problem, origin, options, &mut |p| {
+            if progress {
+                eprintln!(
+                    "level {} ({:e}): {} in {:.1} s",
+                    p.index,
+                    p.target,
+                    p.status().as_str(),
+                    p.time_seconds
+                );
+            }
+        })?;
+    let text = wearopt::report::robust_adhesion_front::render(&doc, args.format);
+    super::write_output(
+        args.out.as_deref().unwrap_or(std::path::Path::new("-")),
+        &text,
+        "the report",
+    )?;
+    if let Some(path) = &args.plot {
+        super::write_output(
+            path,
+            &wearopt::report::robust_adhesion_front::svg(&doc),
+            "the plot",
+        )?;
     }
     Ok(match doc.status {
         FrontStatus::Infeasible => ExitCode::from(1),

@@ -26,6 +26,7 @@ pub mod optimize;
 pub mod pareto;
 pub(crate) mod png;
 pub mod robust;
+pub mod robust_adhesion_front;
 pub mod robust_front;
 pub mod roughness;
 pub mod svg;

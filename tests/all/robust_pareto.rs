@@ -280,3 +280,164 @@ fn bad_probability_fronts_name_the_field() {
     .unwrap();
     assert!(err.contains("--adhesion"), "{err}");
 }
+
+const ADHESION_FRONT: &str = "[pareto]\nadhesion = \"pull_off_force\"\npoints = 3\n";
+
+/// [`plastic_study`] under the DMT law, whose pull-off is cheap (ψ, what its
+/// chance constraint holds, does not depend on the law): a robust front against
+/// the pull-off force in about a second a level.
+fn dmt_study(dir: &std::path::Path, name: &str, extra: &str) -> std::path::PathBuf {
+    let path = plastic_study(dir, name, extra);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let law = "adhesion_model = \"lennard_jones\"";
+    assert!(text.contains(law));
+    std::fs::write(&path, text.replace(law, "adhesion_model = \"dmt\"")).unwrap();
+    path
+}
+
+/// A robust study against an adhesion measure: each point is `optimize`'s
+/// robust optimum of the file with the pull-off force held at its level as a
+/// `[[constraint]]` (the same design, to 1e-9), the first level is the file's
+/// own robust optimum's pull-off, the pull-off at the medians meets each
+/// level, each sampled chance constraint reaches down to its target at a
+/// usable point, and holding the pull-off lower costs wear.
+#[test]
+fn a_robust_adhesion_front_point_is_optimize_with_its_row() {
+    let dir = scratch("adhesion");
+    let front = dmt_study(&dir, "front", ADHESION_FRONT);
+    let run = wearopt()
+        .args(["pareto", front.to_str().unwrap(), "--format", "json"])
+        .assert()
+        .code(0);
+    let (out, err) = (&run.get_output().stdout, &run.get_output().stderr);
+    // The robust part is no longer ignored, so nothing says it is.
+    assert!(!String::from_utf8_lossy(err).contains("nominal study"));
+    let doc: Value = serde_json::from_slice(out).unwrap();
+    assert_eq!(doc["front_measure"], "adhesion", "{doc}");
+    assert_eq!(doc["adhesion_measure"], "pull_off_force");
+    assert_eq!(
+        doc["held_chance_constraints"][0]["label"],
+        "plasticity_index > 1"
+    );
+    let points = doc["points"].as_array().unwrap();
+    assert_eq!(points.len(), 3);
+    // The first level is the file's robust optimum's pull-off (to the round
+    // trip through log10).
+    let (t0, a0) = (
+        num(&points[0]["target"]),
+        num(&doc["robust_optimum"]["adhesion"]),
+    );
+    assert!(((t0 - a0) / a0).abs() < 1e-12, "{doc}");
+    let usable: Vec<&Value> = points
+        .iter()
+        .filter(|p| p["status"] == "optimal" || p["status"] == "chance_constraint_violated")
+        .collect();
+    assert!(usable.len() >= 2, "{doc}");
+    for p in &usable {
+        let (a, t) = (num(&p["adhesion"]), num(&p["target"]));
+        assert!(a <= t * (1.0 + 1e-6), "pull-off {a} above its level {t}");
+        for c in p["chance_constraints"].as_array().unwrap() {
+            let i = &c["probability_interval"];
+            assert!(num(&i[0]) <= num(&c["target"]), "{c}");
+        }
+    }
+    let last = usable.last().unwrap();
+    assert!(
+        num(&last["statistic"]) > num(&usable[0]["statistic"]),
+        "{doc}"
+    );
+    assert!(
+        num(&last["adhesion"]) < num(&usable[0]["adhesion"]),
+        "{doc}"
+    );
+    // optimize with the pull-off row at the last usable point's level.
+    let text = std::fs::read_to_string(&front).unwrap().replace(
+        "[optimizer]",
+        &format!(
+            "[[constraint]]\nquantity = \"pull_off_force\"\nmax = {:e}\n\n[optimizer]",
+            num(&last["target"])
+        ),
+    );
+    let at = dir.join("optimize-row.toml");
+    std::fs::write(&at, text).unwrap();
+    let opt: Value = serde_json::from_slice(&common::stdout(
+        wearopt().args(["optimize", at.to_str().unwrap(), "--format", "json"]),
+        0,
+    ))
+    .unwrap();
+    let r = &opt["robust"];
+    assert_eq!(r["status"], last["status"], "{r}");
+    for (name, v) in r["design"].as_object().unwrap() {
+        let (a, b) = (num(v), num(&last["design"][name]));
+        assert!(
+            ((a - b) / a).abs() < 1e-9,
+            "{name}: optimize {a}, front {b}"
+        );
+    }
+}
+
+/// The same front as text, CSV and HTML: the CSV's head and one row per level,
+/// the text's and page's words; and the shipped example's file loads with its
+/// robust study and its adhesion front.
+#[test]
+fn a_robust_adhesion_front_reads_in_every_format() {
+    let dir = scratch("adhesion-formats");
+    let front = dmt_study(
+        &dir,
+        "front",
+        "[pareto]\nadhesion = \"pull_off_force\"\npoints = 2\n",
+    );
+    let csv = String::from_utf8(common::stdout(
+        wearopt().args(["pareto", front.to_str().unwrap(), "--format", "csv"]),
+        0,
+    ))
+    .unwrap();
+    assert!(csv.starts_with("index,target,youngs_modulus,hardness,sigma,asperity_radius,adhesion,statistic,statistic_low,statistic_high,at_medians,status,on_front\n"), "{csv}");
+    assert_eq!(csv.lines().count(), 3, "{csv}");
+    let text = String::from_utf8(common::stdout(
+        wearopt().args(["pareto", front.to_str().unwrap()]),
+        0,
+    ))
+    .unwrap();
+    assert!(
+        text.contains("Robust front of wear_rate at the medians against pull_off_force"),
+        "{text}"
+    );
+    assert!(
+        text.contains("Held at every point: P(plasticity_index > 1) <= 0.0010"),
+        "{text}"
+    );
+    assert!(text.contains("pull_off_force <= "), "{text}");
+    let page = dir.join("front.html");
+    let plot = dir.join("front.svg");
+    common::stdout(
+        wearopt().args([
+            "pareto",
+            front.to_str().unwrap(),
+            "--format",
+            "html",
+            "--out",
+            page.to_str().unwrap(),
+            "--plot",
+            plot.to_str().unwrap(),
+        ]),
+        0,
+    );
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(html.contains("<svg"), "{html}");
+    assert!(
+        html.contains("P(plasticity_index &gt; 1) [95 %]")
+            || html.contains("P(plasticity_index > 1) [95 %]"),
+        "{html}"
+    );
+    assert!(std::fs::read_to_string(&plot).unwrap().contains("<svg"));
+    let p = wearopt::problem::load(std::path::Path::new(
+        "problems/micro-gear-robust-adhesion-front.toml",
+    ))
+    .unwrap();
+    assert!(p.robust.is_robust() && p.robust.front.is_none());
+    assert_eq!(
+        p.study.pareto.map(|s| s.adhesion),
+        Some(wearopt::optimize::AdhesionMeasure::PullOffForce)
+    );
+}

@@ -131,6 +131,12 @@ def pareto(
     >>> front = wearopt.pareto("problems/micro-gear.toml", points=5)
     >>> front["front"], front["turn"], len(front["points"])
     ([0, 1, 2, 3, 4], 4, 7)
+
+    A robust study (a statistic objective or chance constraints) returns its
+    robust front instead (docs/robust-design.md): against the probability of
+    an event (``front_measure`` ``"probability"``, ``[pareto] event``) or
+    against the adhesion measure, one robust optimum per level
+    (``front_measure`` ``"adhesion"``).
     """
     if points is not None and not _is_int(points):
         raise TypeError(f"points must be an int or None, not {type(points).__name__}")
