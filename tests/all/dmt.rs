@@ -464,6 +464,10 @@ fn shipped_scenes_use_the_law_their_tabor_parameter_calls_for() {
             "micro-gear-study",
             "switch-study",
             "infeasible-study",
+            // Stress-assisted wear on the Lennard-Jones law at φ0 = 0.125,
+            // beside the DMT file silicon-sidewall-wear.toml: the law's
+            // summit stresses where DMT's would do.
+            "silicon-sidewall-wear-lj",
         ]
         .contains(&stem)
         {
