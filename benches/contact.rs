@@ -4,7 +4,7 @@
 //! ~6 % contact, and adhesive solves on it, on one thread. The comparison with Tamaas runs side by side in
 //! `scripts/bench_contact.py`.
 //!
-//! Run: `cargo bench --bench contact`
+//! Run: `cargo bench -p wearopt-benches --bench contact`
 
 use std::hint::black_box;
 use std::path::Path;
@@ -31,7 +31,7 @@ fn contact(c: &mut Criterion) {
             b.iter(|| one.install(|| k.apply(black_box(&field), &mut out)))
         });
     }
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
     let map = load(
         &root.join("problems/scans/self-affine.gsf"),
         &Overrides::default(),

@@ -5,7 +5,7 @@
 //!
 //! The Lennard-Jones law's integrals (issue 23: one P̄ + Ā ≤ 2 µs) at one h.
 //!
-//! Run: `cargo bench --bench evaluator`
+//! Run: `cargo bench -p wearopt-benches --bench evaluator`
 
 use std::hint::black_box;
 
@@ -70,7 +70,7 @@ fn nondimensional_dmt(c: &mut Criterion) {
 /// The micro-gear hub (φ0 = 0.374) under DMT with either attraction, and the
 /// shipped DLC contact (DMT with van der Waals): separation solve and pull-off.
 fn dimensional_dmt(c: &mut Criterion) {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../problems/");
     let mut g = c.benchmark_group("dimensional DMT scene evaluation");
     let hub = wearopt::problem::load(std::path::Path::new(&format!("{dir}micro-gear.toml")))
         .expect("shipped problem loads");
@@ -87,7 +87,7 @@ fn dimensional_dmt(c: &mut Criterion) {
 }
 
 fn dimensional(c: &mut Criterion) {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../problems/");
     let mut g = c.benchmark_group("dimensional scene evaluation");
     for name in ["micro-gear", "dlc-contact", "gold-switch"] {
         let problem = wearopt::problem::load(std::path::Path::new(&format!("{dir}{name}.toml")))
@@ -142,7 +142,7 @@ fn capillary(c: &mut Criterion) {
             },
         );
     }
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../problems/");
     let humid =
         wearopt::problem::load(std::path::Path::new(&format!("{dir}micro-gear-humid.toml")))
             .expect("shipped problem loads")
@@ -269,7 +269,7 @@ fn nondimensional_lennard_jones(c: &mut Criterion) {
 /// form) and under Archard (the same scene, k = 1e-4), separation solve alone and with
 /// the pull-off.
 fn stress_assisted(c: &mut Criterion) {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/problems/");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../problems/");
     let problem = wearopt::problem::load(std::path::Path::new(&format!(
         "{dir}silicon-sidewall-wear.toml"
     )))

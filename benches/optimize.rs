@@ -1,7 +1,7 @@
 //! Speed of whole design studies (issue: the five-variable micro-gear study,
 //! median ≤ 10 ms on one thread).
 //!
-//! Run: `cargo bench --bench optimize`
+//! Run: `cargo bench -p wearopt-benches --bench optimize`
 
 use std::hint::black_box;
 use std::path::Path;
@@ -18,7 +18,7 @@ fn studies(c: &mut Criterion) {
     g.sample_size(20);
     for name in ["micro-gear-study", "micro-gear", "switch-study"] {
         let p = wearopt::problem::load(Path::new(&format!(
-            "{}/problems/{name}.toml",
+            "{}/../problems/{name}.toml",
             env!("CARGO_MANIFEST_DIR")
         )))
         .expect("shipped study loads");

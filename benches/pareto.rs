@@ -1,7 +1,7 @@
 //! Wear–adhesion fronts: 15 points of the micro-gear study
 //! (`problems/micro-gear.toml`), and 30 points of the five-variable latch study
 //! (`tests/data/study_wide_latch.toml`, issue 10: ≤ 1 s on two cores).
-//! Run with `cargo bench --bench pareto`.
+//! Run with `cargo bench -p wearopt-benches --bench pareto`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
@@ -11,7 +11,8 @@ use wearopt::optimize::pareto::{pareto, Silent};
 use wearopt::optimize::Study;
 
 fn micro_gear_front(c: &mut Criterion) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/micro-gear.toml");
+    let path =
+        Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("problems/micro-gear.toml");
     let problem = wearopt::problem::load(&path).expect("micro-gear.toml loads");
     let mut spec = problem.study.pareto.expect("micro-gear.toml has [pareto]");
     spec.points = 15;
@@ -31,7 +32,8 @@ fn micro_gear_front(c: &mut Criterion) {
 }
 
 fn five_variable_front(c: &mut Criterion) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/study_wide_latch.toml");
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .join("tests/data/study_wide_latch.toml");
     let problem = wearopt::problem::load(&path).expect("study_wide_latch.toml loads");
     let mut spec = problem.study.pareto.expect("the study has [pareto]");
     spec.points = 30;

@@ -2,7 +2,7 @@
 //! map (levelling, moments, parameters, summit count) ≤ 100 ms on two cores; reading a
 //! 2048² `.gsf` ≤ 50 ms.
 //!
-//! Run: `cargo bench --bench surface`
+//! Run: `cargo bench -p wearopt-benches --bench surface`
 
 use std::hint::black_box;
 

@@ -1,7 +1,7 @@
 //! 100 000 designs of the five-variable micro-gear study
 //! (`problems/micro-gear-study.toml`), Sobol′ points, each row evaluated (separation,
 //! pull-off, constraints) and written as CSV to a sink, as `wearopt sweep` does.
-//! Run with `cargo bench --bench sweep`; target median ≤ 3 s on two cores.
+//! Run with `cargo bench -p wearopt-benches --bench sweep`; target median ≤ 3 s on two cores.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
@@ -11,7 +11,8 @@ use wearopt::report::sweep::{self as out, Encoding};
 use wearopt::sweep::{Method, Sweep};
 
 fn micro_gear_sweep(c: &mut Criterion) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("problems/micro-gear-study.toml");
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .join("problems/micro-gear-study.toml");
     let problem = wearopt::problem::load(&path).expect("micro-gear-study.toml loads");
     let s = &problem.study;
     let samples = 100_000;

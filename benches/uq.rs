@@ -4,7 +4,7 @@
 //! estimates, intervals over 32 replicates) at N = 2^14, d = 5 on precomputed values;
 //! and the reliability-based design of Youn & Choi (2004) by SORA with its
 //! verification by importance sampling (`uq::robust`, s = 0.3, β_t = 3, one start).
-//! Run with `cargo bench --bench uq`.
+//! Run with `cargo bench -p wearopt-benches --bench uq`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;

@@ -945,7 +945,7 @@ fn layout(index: usize, level: i32) -> &'static Layout {
 
 /// Lays out the nodes of `curves()[index]` for the scale just below ℓ afresh,
 /// without the cache, and counts them (what a scene's first use of that
-/// curve and scale costs, once per process: `cargo bench --bench evaluator`).
+/// curve and scale costs, once per process: `cargo bench -p wearopt-benches --bench evaluator`).
 #[doc(hidden)]
 pub fn lay_out_uncached(index: usize, ell: f64) -> usize {
     level_of(ell).map_or(0, |level| {
