@@ -146,8 +146,8 @@ fn optimize_documents_equal_the_cli_json() {
 #[test]
 fn pareto_documents_equal_the_streamed_cli_json() {
     for (file, points) in [
-        ("problems/latch-pareto.toml", None),
-        ("problems/micro-gear.toml", Some(5)),
+        ("problems/latch-pareto.toml", Some(4)),
+        ("problems/micro-gear.toml", Some(3)),
     ] {
         let mut args = vec!["pareto", file, "--format", "json"];
         let n = points.map(|n: usize| n.to_string());

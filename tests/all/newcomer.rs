@@ -353,7 +353,7 @@ fn pareto_out_writes_every_format() {
             "pareto",
             "problems/micro-gear.toml",
             "--points",
-            "5",
+            "3",
             "--format",
             format,
         ];

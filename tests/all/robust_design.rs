@@ -190,7 +190,9 @@ fn the_text_report_puts_the_robust_optimum_beside_the_nominal_one() {
         std::fs::read_to_string(SHIPPED)
             .unwrap()
             .replace("statistic = \"p95\"", "")
-            .replace("samples = 256", ""),
+            .replace("samples = 256", "")
+            // One start: the report's words, not the optimum, are checked here.
+            .replace("starts = 4", "starts = 1"),
     )
     .unwrap();
     let out = String::from_utf8(common::stdout(

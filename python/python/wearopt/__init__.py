@@ -298,9 +298,9 @@ def asperity(
     trace's mesh above (``"fast"``: converging them there takes minutes);
     ``fast=True`` or ``fast=False`` asks for one or the other at any μ.
 
-    >>> c = wearopt.asperity(2.0, -1.0, 0.0, 3, fast=True)
+    >>> c = wearopt.asperity(1.0, -1.0, 0.0, 3, fast=True)
     >>> round(c["pull_off"]["load"], 2), c["jump_in"] is not None
-    (-1.58, True)
+    (-1.67, True)
     """
     if tabor is not None and not _is_number(tabor):
         raise TypeError(f"tabor must be a number or None, not {type(tabor).__name__}")
