@@ -44,7 +44,7 @@ fn sobol_analyze(c: &mut Criterion) {
         .collect();
     let mut group = c.benchmark_group("sobol");
     group.sample_size(10);
-    group.bench_function("analyze, N = 2^14, d = 5, 32 replicates", |b| {
+    group.bench_function("analyze, N = 2^14, d = 5", |b| {
         b.iter(|| black_box(sobol::analyze(d, &values)))
     });
     group.bench_function("points, N = 2^14, d = 5", |b| {
