@@ -28,6 +28,7 @@ pub(crate) mod png;
 pub mod robust;
 pub mod robust_adhesion_front;
 pub mod robust_front;
+mod robust_levels;
 pub mod roughness;
 pub mod svg;
 pub mod sweep;

@@ -10,7 +10,8 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::robust::{estimate_json, estimate_words, probability_words};
+use super::robust::{estimate_json, probability_words};
+use super::robust_levels as levels;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp};
 use crate::app::robust_adhesion_front::{AdhesionFrontDocument, AdhesionPoint};
@@ -19,10 +20,7 @@ use crate::units::format_quantity;
 
 /// What the first axis reads as: "p95 of wear_rate".
 fn statistic_name(doc: &AdhesionFrontDocument) -> String {
-    match doc.statistic {
-        Some(s) => format!("{} of {}", s.as_str(), doc.objective.as_str()),
-        None => format!("{} at the medians", doc.objective.as_str()),
-    }
+    levels::statistic_name(doc.objective, doc.statistic)
 }
 
 fn unit(doc: &AdhesionFrontDocument) -> &'static str {
@@ -77,10 +75,7 @@ fn status_sentence(doc: &AdhesionFrontDocument) -> String {
 }
 
 fn statistic_words(doc: &AdhesionFrontDocument, p: &AdhesionPoint) -> String {
-    match doc.statistic {
-        Some(_) => estimate_words(&p.statistic, unit(doc)),
-        None => super::si(p.statistic.value, unit(doc), 4),
-    }
+    levels::statistic_words(doc.statistic, &p.statistic, unit(doc))
 }
 
 fn mark(p: &AdhesionPoint) -> &'static str {
@@ -159,14 +154,7 @@ pub fn text(doc: &AdhesionFrontDocument) -> String {
         }
     );
     let _ = writeln!(out, "Status: {}", status_sentence(doc));
-    for h in &doc.held {
-        let _ = writeln!(
-            out,
-            "Held at every point: P({}) <= {}",
-            h.label,
-            sig_exp(h.target, 2)
-        );
-    }
+    levels::write_held(&mut out, &doc.held);
     let _ = writeln!(
         out,
         "The file's robust optimum (no level): {} = {} at the medians ({})",
@@ -175,10 +163,7 @@ pub fn text(doc: &AdhesionFrontDocument) -> String {
         doc.robust_status.as_str()
     );
     let _ = writeln!(out);
-    let stat_header = match doc.statistic {
-        Some(_) => format!("{} [95 %]", statistic_name(doc)),
-        None => statistic_name(doc),
-    };
+    let stat_header = levels::statistic_header(doc.objective, doc.statistic);
     let _ = writeln!(
         out,
         "  #  {:<28}  {:<14}  {:<34}  {:<26}  {:<10}  sampled P at the design",
@@ -427,39 +412,17 @@ pub fn svg(doc: &AdhesionFrontDocument) -> String {
 /// The HTML page: status, the front plot, the points with their statuses and
 /// sampled probabilities, and their designs.
 pub fn html(doc: &AdhesionFrontDocument) -> String {
-    let u = unit(doc);
     let mut p = super::html::Page::new(&format!("wearopt pareto — {}", doc.name));
     p.paragraph(&format!("Status: {}", status_sentence(doc)), Some("status"));
     p.paragraph(
         &format!(
             "Each point is the robust optimum of the study with {} held at its level at the medians of the uncertain inputs (a deterministic constraint), solved as wearopt optimize solves it (SORA, then each chance constraint sampled at the design){}.",
             doc.measure.as_str(),
-            match doc.statistic {
-                Some(_) => format!(
-                    ", {} taken over {} common random numbers",
-                    statistic_name(doc),
-                    doc.samples
-                ),
-                None => String::new(),
-            }
+            levels::sampled_over(doc.objective, doc.statistic, doc.samples)
         ),
         None,
     );
-    if !doc.held.is_empty() {
-        p.list(
-            &doc.held
-                .iter()
-                .map(|h| {
-                    format!(
-                        "held at every point: P({}) ≤ {}",
-                        h.label,
-                        sig_exp(h.target, 2)
-                    )
-                })
-                .collect::<Vec<_>>(),
-            "note",
-        );
-    }
+    levels::html_held(&mut p, &doc.held);
     p.paragraph(
         &format!(
             "The file's robust optimum (no level): {} = {} at the medians ({}).",
@@ -478,10 +441,7 @@ pub fn html(doc: &AdhesionFrontDocument) -> String {
             doc.measure.as_str()
         ),
     );
-    let stat_header = match doc.statistic {
-        Some(_) => format!("{} [95 %]", statistic_name(doc)),
-        None => statistic_name(doc),
-    };
+    let stat_header = levels::statistic_header(doc.objective, doc.statistic);
     let mut header: Vec<String> = vec![
         "#".into(),
         "level".into(),
@@ -519,27 +479,14 @@ pub fn html(doc: &AdhesionFrontDocument) -> String {
     let n = header.len();
     let header_refs: Vec<&str> = header.iter().map(|s| s.as_str()).collect();
     p.table(&header_refs, &rows, &[1, n - 2, n - 1]);
-    let mut header: Vec<&str> = vec!["#"];
-    header.extend(doc.names.iter().map(|n| n.as_str()));
-    let medians = format!("{} at the medians", doc.objective.as_str());
-    header.push(&medians);
-    let rows: Vec<Vec<String>> = doc
-        .points
-        .iter()
-        .map(|q| {
-            let mut r = vec![q.index.to_string()];
-            r.extend(
-                doc.names
-                    .iter()
-                    .zip(&q.design)
-                    .map(|(n, v)| format_quantity(*v, super::design_dimension(*n))),
-            );
-            r.push(super::si(q.at_medians, u, 4));
-            r
-        })
-        .collect();
-    p.heading("Designs");
-    p.table(&header, &rows, &[]);
+    levels::html_designs(
+        &mut p,
+        doc.objective,
+        &doc.names,
+        doc.points
+            .iter()
+            .map(|q| (q.index, &q.design[..], q.at_medians)),
+    );
     p.finish()
 }
 

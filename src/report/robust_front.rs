@@ -9,7 +9,8 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::robust::{estimate_json, estimate_words, method_word, probability_words};
+use super::robust::{estimate_json, method_word, probability_words};
+use super::robust_levels as levels;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp};
 use crate::app::robust_front::{EventFrontDocument, LevelPoint};
@@ -17,10 +18,7 @@ use crate::units::format_quantity;
 
 /// What the first axis reads as: "p95 of wear_rate".
 fn statistic_name(doc: &EventFrontDocument) -> String {
-    match doc.statistic {
-        Some(s) => format!("{} of {}", s.as_str(), doc.objective.as_str()),
-        None => format!("{} at the medians", doc.objective.as_str()),
-    }
+    levels::statistic_name(doc.objective, doc.statistic)
 }
 
 fn unit(doc: &EventFrontDocument) -> &'static str {
@@ -51,10 +49,7 @@ fn status_sentence(doc: &EventFrontDocument) -> String {
 /// The statistic with its interval; the value alone without a statistic
 /// (the objective at the medians has no sampling error).
 fn statistic_words(doc: &EventFrontDocument, p: &LevelPoint) -> String {
-    match doc.statistic {
-        Some(_) => estimate_words(&p.statistic, unit(doc)),
-        None => super::si(p.statistic.value, unit(doc), 4),
-    }
+    levels::statistic_words(doc.statistic, &p.statistic, unit(doc))
 }
 
 fn mark(p: &LevelPoint) -> &'static str {
@@ -89,14 +84,7 @@ pub fn text(doc: &EventFrontDocument) -> String {
         }
     );
     let _ = writeln!(out, "Status: {}", status_sentence(doc));
-    for h in &doc.held {
-        let _ = writeln!(
-            out,
-            "Held at every point: P({}) <= {}",
-            h.label,
-            sig_exp(h.target, 2)
-        );
-    }
+    levels::write_held(&mut out, &doc.held);
     let _ = writeln!(
         out,
         "Nominal optimum (every input at its median, each event held off there): {} = {}, P({}) = {} by {}",
@@ -110,10 +98,7 @@ pub fn text(doc: &EventFrontDocument) -> String {
     let _ = writeln!(
         out,
         "  #  level      {:<34}  {:<46}  {:<26}  front",
-        match doc.statistic {
-            Some(_) => format!("{} [95 %]", statistic_name(doc)),
-            None => statistic_name(doc),
-        },
+        levels::statistic_header(doc.objective, doc.statistic),
         format!("P({}) sampled [95 %]", doc.label),
         "status"
     );
@@ -402,32 +387,11 @@ pub fn html(doc: &EventFrontDocument) -> String {
         &format!(
             "Each point is the robust optimum of the study with P({}) ≤ its level (SORA, then the design's probability sampled: importance sampling or Monte Carlo to a coefficient of variation of 0.02){}.",
             doc.label,
-            match doc.statistic {
-                Some(_) => format!(
-                    ", {} taken over {} common random numbers",
-                    statistic_name(doc),
-                    doc.samples
-                ),
-                None => String::new(),
-            }
+            levels::sampled_over(doc.objective, doc.statistic, doc.samples)
         ),
         None,
     );
-    if !doc.held.is_empty() {
-        p.list(
-            &doc.held
-                .iter()
-                .map(|h| {
-                    format!(
-                        "held at every point: P({}) ≤ {}",
-                        h.label,
-                        sig_exp(h.target, 2)
-                    )
-                })
-                .collect::<Vec<_>>(),
-            "note",
-        );
-    }
+    levels::html_held(&mut p, &doc.held);
     p.paragraph(
         &format!(
             "The nominal optimum (every input at its median, each event held off there): {} = {}, P({}) = {}.",
@@ -447,10 +411,7 @@ pub fn html(doc: &EventFrontDocument) -> String {
             doc.label
         ),
     );
-    let stat_header = match doc.statistic {
-        Some(_) => format!("{} [95 %]", statistic_name(doc)),
-        None => statistic_name(doc),
-    };
+    let stat_header = levels::statistic_header(doc.objective, doc.statistic);
     let p_header = format!("P({}) [95 %]", doc.label);
     let rows: Vec<Vec<String>> = doc
         .points
@@ -483,27 +444,14 @@ pub fn html(doc: &EventFrontDocument) -> String {
         &rows,
         &[4, 5, 6],
     );
-    let mut header: Vec<&str> = vec!["#"];
-    header.extend(doc.names.iter().map(|n| n.as_str()));
-    let medians = format!("{} at the medians", doc.objective.as_str());
-    header.push(&medians);
-    let rows: Vec<Vec<String>> = doc
-        .points
-        .iter()
-        .map(|q| {
-            let mut r = vec![q.index.to_string()];
-            r.extend(
-                doc.names
-                    .iter()
-                    .zip(&q.design)
-                    .map(|(n, v)| format_quantity(*v, super::design_dimension(*n))),
-            );
-            r.push(super::si(q.at_medians, u, 4));
-            r
-        })
-        .collect();
-    p.heading("Designs");
-    p.table(&header, &rows, &[]);
+    levels::html_designs(
+        &mut p,
+        doc.objective,
+        &doc.names,
+        doc.points
+            .iter()
+            .map(|q| (q.index, &q.design[..], q.at_medians)),
+    );
     p.finish()
 }
 

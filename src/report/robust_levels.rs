@@ -1,0 +1,124 @@
+//! The words and tables the two robust fronts of `wearopt pareto` share
+//! (docs/robust-design.md, "Fronts"): against a probability (`robust_front`) and
+//! against an adhesion measure (`robust_adhesion_front`). Each point of either is
+//! a robust optimum with its statistic, its design and its objective at the
+//! medians; the chance constraints held at every point are the same list.
+
+use std::fmt::Write as _;
+
+use super::robust::estimate_words;
+use super::sig_exp;
+use crate::app::robust_front::HeldConstraint;
+use crate::model::SceneParameter;
+use crate::optimize::Objective;
+use crate::units::format_quantity;
+use crate::uq::robust::Statistic;
+use crate::uq::Estimate;
+
+/// What each point minimises: `p95 of wear_rate`, or `wear_rate at the medians`
+/// without a statistic.
+pub(super) fn statistic_name(objective: Objective, statistic: Option<Statistic>) -> String {
+    match statistic {
+        Some(s) => format!("{} of {}", s.as_str(), objective.as_str()),
+        None => format!("{} at the medians", objective.as_str()),
+    }
+}
+
+/// The statistic's column header: with `[95 %]` where it has a sampling interval.
+pub(super) fn statistic_header(objective: Objective, statistic: Option<Statistic>) -> String {
+    match statistic {
+        Some(_) => format!("{} [95 %]", statistic_name(objective, statistic)),
+        None => statistic_name(objective, statistic),
+    }
+}
+
+/// A point's statistic with its interval; the value alone without a statistic
+/// (the objective at the medians has no sampling error).
+pub(super) fn statistic_words(
+    statistic: Option<Statistic>,
+    value: &Estimate,
+    unit: &str,
+) -> String {
+    match statistic {
+        Some(_) => estimate_words(value, unit),
+        None => super::si(value.value, unit, 4),
+    }
+}
+
+/// The text report's lines naming the chance constraints held at every point.
+pub(super) fn write_held(out: &mut String, held: &[HeldConstraint]) {
+    for h in held {
+        let _ = writeln!(
+            out,
+            "Held at every point: P({}) <= {}",
+            h.label,
+            sig_exp(h.target, 2)
+        );
+    }
+}
+
+/// The page's note naming the chance constraints held at every point (none
+/// without them).
+pub(super) fn html_held(p: &mut super::html::Page, held: &[HeldConstraint]) {
+    if held.is_empty() {
+        return;
+    }
+    let items: Vec<String> = held
+        .iter()
+        .map(|h| {
+            format!(
+                "held at every point: P({}) ≤ {}",
+                h.label,
+                sig_exp(h.target, 2)
+            )
+        })
+        .collect();
+    p.list(&items, "note");
+}
+
+/// ", p95 of wear_rate taken over 256 common random numbers" for the page's
+/// opening paragraph; empty without a statistic.
+pub(super) fn sampled_over(
+    objective: Objective,
+    statistic: Option<Statistic>,
+    samples: usize,
+) -> String {
+    match statistic {
+        Some(_) => format!(
+            ", {} taken over {} common random numbers",
+            statistic_name(objective, statistic),
+            samples
+        ),
+        None => String::new(),
+    }
+}
+
+/// The page's "Designs" table: each point's index, design variables and
+/// objective at the medians. `points` yields (index, design, at the medians).
+pub(super) fn html_designs<'a>(
+    p: &mut super::html::Page,
+    objective: Objective,
+    names: &[SceneParameter],
+    points: impl Iterator<Item = (usize, &'a [f64], f64)>,
+) {
+    let mut header: Vec<&str> = vec!["#"];
+    header.extend(names.iter().map(|n| n.as_str()));
+    let medians = format!("{} at the medians", objective.as_str());
+    header.push(&medians);
+    let unit = super::objective_unit(objective);
+    let rows: Vec<Vec<String>> = points
+        .map(|(index, design, at_medians)| {
+            let mut r = vec![index.to_string()];
+            r.extend(
+                names
+                    .iter()
+                    .zip(design)
+                    .map(|(n, v)| format_quantity(*v, super::design_dimension(*n))),
+            );
+            r.push(super::si(at_medians, unit, 4));
+            r
+        })
+        .collect();
+    p.heading("Designs");
+    p.table(&header, &rows, &[]);
+}
