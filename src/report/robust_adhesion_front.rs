@@ -137,7 +137,6 @@ fn violation_words(doc: &AdhesionFrontDocument, p: &AdhesionPoint) -> String {
 /// The plain-text report.
 pub fn text(doc: &AdhesionFrontDocument) -> String {
     let mut out = String::new();
-    let u = unit(doc);
     let _ = writeln!(out, "{}", doc.name);
     let _ = writeln!(
         out,
@@ -182,24 +181,14 @@ pub fn text(doc: &AdhesionFrontDocument) -> String {
             chance_words(doc, p)
         );
     }
-    let _ = writeln!(out);
-    let _ = writeln!(out, "Designs:");
-    let mut header = String::from("  #");
-    for n in &doc.names {
-        let _ = write!(header, "  {:>16}", n.as_str());
-    }
-    let _ = writeln!(out, "{header}  {:>16}", "at the medians");
-    for p in &doc.points {
-        let mut row = format!("{:>3}", p.index);
-        for (n, v) in doc.names.iter().zip(&p.design) {
-            let _ = write!(
-                row,
-                "  {:>16}",
-                format_quantity(*v, super::design_dimension(*n))
-            );
-        }
-        let _ = writeln!(out, "{row}  {:>16}", super::si(p.at_medians, u, 4));
-    }
+    levels::write_designs(
+        &mut out,
+        doc.objective,
+        &doc.names,
+        doc.points
+            .iter()
+            .map(|q| (q.index, &q.design[..], q.at_medians)),
+    );
     for p in &doc.points {
         let why = violation_words(doc, p);
         if !why.is_empty() {

@@ -14,7 +14,6 @@ use super::robust_levels as levels;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp};
 use crate::app::robust_front::{EventFrontDocument, LevelPoint};
-use crate::units::format_quantity;
 
 /// What the first axis reads as: "p95 of wear_rate".
 fn statistic_name(doc: &EventFrontDocument) -> String {
@@ -118,24 +117,14 @@ pub fn text(doc: &EventFrontDocument) -> String {
             mark(p)
         );
     }
-    let _ = writeln!(out);
-    let _ = writeln!(out, "Designs:");
-    let mut header = String::from("  #");
-    for n in &doc.names {
-        let _ = write!(header, "  {:>16}", n.as_str());
-    }
-    let _ = writeln!(out, "{header}  {:>16}", "at the medians");
-    for p in &doc.points {
-        let mut row = format!("{:>3}", p.index);
-        for (n, v) in doc.names.iter().zip(&p.design) {
-            let _ = write!(
-                row,
-                "  {:>16}",
-                format_quantity(*v, super::design_dimension(*n))
-            );
-        }
-        let _ = writeln!(out, "{row}  {:>16}", super::si(p.at_medians, u, 4));
-    }
+    levels::write_designs(
+        &mut out,
+        doc.objective,
+        &doc.names,
+        doc.points
+            .iter()
+            .map(|q| (q.index, &q.design[..], q.at_medians)),
+    );
     // Why a level has no usable optimum: each chance constraint sampling finds
     // above its target at the level's design.
     for p in &doc.points {

@@ -93,6 +93,35 @@ pub(super) fn sampled_over(
     }
 }
 
+/// The text report's "Designs:" table: each point's index, design variables
+/// and objective at the medians. `points` yields (index, design, at the medians).
+pub(super) fn write_designs<'a>(
+    out: &mut String,
+    objective: Objective,
+    names: &[SceneParameter],
+    points: impl Iterator<Item = (usize, &'a [f64], f64)>,
+) {
+    let unit = super::objective_unit(objective);
+    let _ = writeln!(out);
+    let _ = writeln!(out, "Designs:");
+    let mut header = String::from("  #");
+    for n in names {
+        let _ = write!(header, "  {:>16}", n.as_str());
+    }
+    let _ = writeln!(out, "{header}  {:>16}", "at the medians");
+    for (index, design, at_medians) in points {
+        let mut row = format!("{index:>3}");
+        for (n, v) in names.iter().zip(design) {
+            let _ = write!(
+                row,
+                "  {:>16}",
+                format_quantity(*v, super::design_dimension(*n))
+            );
+        }
+        let _ = writeln!(out, "{row}  {:>16}", super::si(at_medians, unit, 4));
+    }
+}
+
 /// The page's "Designs" table: each point's index, design variables and
 /// objective at the medians. `points` yields (index, design, at the medians).
 pub(super) fn html_designs<'a>(
