@@ -238,11 +238,7 @@ fn event_front(
             )));
         }
     }
-    for (path, what) in [(&args.out, "the report"), (&args.plot, "the plot")] {
-        if let Some(path) = path {
-            super::check_output(path, what, &[&args.file])?;
-        }
-    }
+    check_robust_front_outputs(args)?;
     let progress = super::progress::wanted();
     let doc = wearopt::app::robust_front::event_front(problem, origin, args.points, &mut |p| {
         if progress {
@@ -255,19 +251,12 @@ fn event_front(
             );
         }
     })?;
-    let text = wearopt::report::robust_front::render(&doc, args.format);
-    super::write_output(
-        args.out.as_deref().unwrap_or(std::path::Path::new("-")),
-        &text,
-        "the report",
-    )?;
-    if let Some(path) = &args.plot {
-        super::write_output(path, &wearopt::report::robust_front::svg(&doc), "the plot")?;
-    }
-    Ok(match doc.status {
-        FrontStatus::Infeasible => ExitCode::from(1),
-        _ => ExitCode::SUCCESS,
-    })
+    write_robust_front(
+        args,
+        &wearopt::report::robust_front::render(&doc, args.format),
+        || wearopt::report::robust_front::svg(&doc),
+        doc.status,
+    )
 }
 
 /// `wearopt pareto` on a robust study against an adhesion measure: one robust
@@ -280,11 +269,7 @@ fn adhesion_front(
     origin: &str,
     options: &front::ParetoOptions,
 ) -> Result<ExitCode> {
-    for (path, what) in [(&args.out, "the report"), (&args.plot, "the plot")] {
-        if let Some(path) = path {
-            super::check_output(path, what, &[&args.file])?;
-        }
-    }
+    check_robust_front_outputs(args)?;
     let progress = super::progress::wanted();
     let doc =
         wearopt::app::robust_adhesion_front::adhesion_front(problem, origin, options, &mut |p| {
@@ -298,20 +283,42 @@ fn adhesion_front(
                 );
             }
         })?;
-    let text = wearopt::report::robust_adhesion_front::render(&doc, args.format);
+    write_robust_front(
+        args,
+        &wearopt::report::robust_adhesion_front::render(&doc, args.format),
+        || wearopt::report::robust_adhesion_front::svg(&doc),
+        doc.status,
+    )
+}
+
+/// `--out` and `--plot` checked before a robust front's work (not after
+/// minutes of it).
+fn check_robust_front_outputs(args: &ParetoArgs) -> Result<()> {
+    for (path, what) in [(&args.out, "the report"), (&args.plot, "the plot")] {
+        if let Some(path) = path {
+            super::check_output(path, what, &[&args.file])?;
+        }
+    }
+    Ok(())
+}
+
+/// A robust front's report to `--out` (or stdout) and its plot to `--plot`;
+/// exit code 1 when no level gives a usable point.
+fn write_robust_front(
+    args: &ParetoArgs,
+    report: &str,
+    svg: impl FnOnce() -> String,
+    status: FrontStatus,
+) -> Result<ExitCode> {
     super::write_output(
         args.out.as_deref().unwrap_or(std::path::Path::new("-")),
-        &text,
+        report,
         "the report",
     )?;
     if let Some(path) = &args.plot {
-        super::write_output(
-            path,
-            &wearopt::report::robust_adhesion_front::svg(&doc),
-            "the plot",
-        )?;
+        super::write_output(path, &svg(), "the plot")?;
     }
-    Ok(match doc.status {
+    Ok(match status {
         FrontStatus::Infeasible => ExitCode::from(1),
         _ => ExitCode::SUCCESS,
     })
