@@ -381,9 +381,7 @@ fn lennard_jones_parts(
     kernel: &Kernel,
     stress_scale: f64,
 ) -> Parts {
-    // Beyond Δ_max the Gaussian weight is below e^{-800} of its largest value.
-    let reach = (1600.0 + h.max(0.0).powi(2)).sqrt() - h;
-    let top = critical_interference.min(reach.max(0.0));
+    let top = elastic_top(h, critical_interference);
     if top.is_nan() || top <= 0.0 {
         return Parts::default();
     }
@@ -401,6 +399,14 @@ fn lennard_jones_parts(
         (ln, ln_x, kernel.activation(stress, ln_x))
     };
     adaptive_reference::integrate(&ln_rate, top.sqrt(), LENNARD_JONES_TOLERANCE, true)
+}
+
+/// The upper end of the elastic summits' integral over Δ at separation `h`: Δc,
+/// or Δ_max where the Gaussian weight has fallen below e^{-800} of its largest
+/// value, whichever is less.
+fn elastic_top(h: f64, critical_interference: f64) -> f64 {
+    let reach = (1600.0 + h.max(0.0).powi(2)).sqrt() - h;
+    critical_interference.min(reach.max(0.0))
 }
 
 /// The elastic summits of the model's law and its critical interference Δc; None
@@ -430,9 +436,7 @@ fn elastic_integrals(
     kernel: &Kernel,
     stress_scale: f64,
 ) -> Parts {
-    // Beyond Δ_max the Gaussian weight is below e^{-800} of its largest value.
-    let reach = (1600.0 + h.max(0.0).powi(2)).sqrt() - h;
-    let top = critical_interference.min(reach.max(0.0));
+    let top = elastic_top(h, critical_interference);
     if top <= 0.0 {
         return Parts::default();
     }
