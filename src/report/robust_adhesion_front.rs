@@ -10,7 +10,7 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::robust::{estimate_json, probability_words};
+use super::robust::probability_words;
 use super::robust_levels as levels;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp};
@@ -212,12 +212,6 @@ pub fn text(doc: &AdhesionFrontDocument) -> String {
 }
 
 fn point_json(doc: &AdhesionFrontDocument, p: &AdhesionPoint) -> Value {
-    let design: serde_json::Map<String, Value> = doc
-        .names
-        .iter()
-        .zip(&p.design)
-        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
-        .collect();
     let r = &p.result;
     let labels = doc.chance_labels();
     let chance: Vec<Value> = r
@@ -235,36 +229,24 @@ fn point_json(doc: &AdhesionFrontDocument, p: &AdhesionPoint) -> Value {
             })
         })
         .collect();
-    let stat = estimate_json(&p.statistic);
-    json!({
-        "index": p.index,
-        "target": p.target,
-        "adhesion": p.adhesion,
-        "design": design,
-        "statistic": stat.get("value").cloned(),
-        "statistic_interval": stat.get("interval").cloned(),
-        "statistic_verified": r.objective_verified.as_ref().map(estimate_json),
-        "at_medians": p.at_medians.is_finite().then_some(p.at_medians),
-        "status": r.status,
-        "violated": p.violated,
-        "on_front": p.on_front,
-        "chance_constraints": chance,
-        "cycles": r.cycles,
-        "corrections": r.corrections,
-        "evaluations": r.evaluations,
-        "time_seconds": p.time_seconds,
-    })
+    levels::merged(
+        levels::point_json(&doc.names, &p.design, &p.statistic, p.at_medians, r),
+        json!({
+            "index": p.index,
+            "target": p.target,
+            "adhesion": p.adhesion,
+            "violated": p.violated,
+            "on_front": p.on_front,
+            "chance_constraints": chance,
+            "time_seconds": p.time_seconds,
+        }),
+    )
 }
 
 /// The JSON document (keys in docs/robust-design.md, "A robust front against an
 /// adhesion measure").
 pub fn json_value(doc: &AdhesionFrontDocument) -> Value {
-    let design: serde_json::Map<String, Value> = doc
-        .names
-        .iter()
-        .zip(&doc.robust_design)
-        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
-        .collect();
+    let design = levels::design_json(&doc.names, &doc.robust_design);
     let f = |x: f64| x.is_finite().then_some(x);
     json!({
         "name": doc.name,

@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 
-use super::robust::{estimate_json, method_word, probability_words};
+use super::robust::{method_word, probability_words};
 use super::robust_levels as levels;
 use super::svg::{Axis, LinePlot, Marker, Series};
 use super::{number, sig_exp};
@@ -168,12 +168,6 @@ fn violation_words(doc: &EventFrontDocument, p: &LevelPoint) -> String {
 }
 
 fn point_json(doc: &EventFrontDocument, p: &LevelPoint) -> Value {
-    let design: serde_json::Map<String, Value> = doc
-        .names
-        .iter()
-        .zip(&p.design)
-        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
-        .collect();
     let r = &p.result;
     let labels = doc.chance_labels();
     let chance: Vec<Value> = r
@@ -190,39 +184,28 @@ fn point_json(doc: &EventFrontDocument, p: &LevelPoint) -> Value {
             })
         })
         .collect();
-    json!({
-        "index": p.index,
-        "level": p.level,
-        "design": design,
-        "statistic": estimate_json(&p.statistic).get("value").cloned(),
-        "statistic_interval": estimate_json(&p.statistic).get("interval").cloned(),
-        "statistic_verified": r.objective_verified.as_ref().map(estimate_json),
-        "at_medians": p.at_medians.is_finite().then_some(p.at_medians),
-        "probability": p.probability.probability,
-        "probability_interval": p.probability.interval,
-        "probability_upper_bound": p.probability.upper_bound,
-        "method": p.probability.sampling.as_ref().map(|s| s.method),
-        "form_beta": p.probability.form.beta,
-        "status": r.status,
-        "violated": p.violated,
-        "on_front": p.on_front,
-        "chance_constraints": chance,
-        "cycles": r.cycles,
-        "corrections": r.corrections,
-        "evaluations": r.evaluations,
-        "time_seconds": p.time_seconds,
-    })
+    levels::merged(
+        levels::point_json(&doc.names, &p.design, &p.statistic, p.at_medians, r),
+        json!({
+            "index": p.index,
+            "level": p.level,
+            "probability": p.probability.probability,
+            "probability_interval": p.probability.interval,
+            "probability_upper_bound": p.probability.upper_bound,
+            "method": p.probability.sampling.as_ref().map(|s| s.method),
+            "form_beta": p.probability.form.beta,
+            "violated": p.violated,
+            "on_front": p.on_front,
+            "chance_constraints": chance,
+            "time_seconds": p.time_seconds,
+        }),
+    )
 }
 
 /// The JSON document (keys in docs/robust-design.md, "A front against a
 /// probability").
 pub fn json_value(doc: &EventFrontDocument) -> Value {
-    let design: serde_json::Map<String, Value> = doc
-        .names
-        .iter()
-        .zip(&doc.nominal_design)
-        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
-        .collect();
+    let design = levels::design_json(&doc.names, &doc.nominal_design);
     json!({
         "name": doc.name,
         "status": doc.status.as_str(),

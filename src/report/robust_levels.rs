@@ -6,13 +6,15 @@
 
 use std::fmt::Write as _;
 
-use super::robust::estimate_words;
+use serde_json::{json, Map, Value};
+
+use super::robust::{estimate_json, estimate_words};
 use super::sig_exp;
 use crate::app::robust_front::HeldConstraint;
 use crate::model::SceneParameter;
 use crate::optimize::Objective;
 use crate::units::format_quantity;
-use crate::uq::robust::Statistic;
+use crate::uq::robust::{RobustResult, Statistic};
 use crate::uq::Estimate;
 
 /// What each point minimises: `p95 of wear_rate`, or `wear_rate at the medians`
@@ -150,4 +152,52 @@ pub(super) fn html_designs<'a>(
         .collect();
     p.heading("Designs");
     p.table(&header, &rows, &[]);
+}
+
+/// A design as JSON: each variable's name to its SI value.
+pub(super) fn design_json(names: &[SceneParameter], design: &[f64]) -> Map<String, Value> {
+    names
+        .iter()
+        .zip(design)
+        .map(|(n, v)| (n.as_str().to_string(), json!(v)))
+        .collect()
+}
+
+/// The keys every robust front's point carries: its design, its statistic with
+/// the interval and the verification's, its objective at the medians, and the
+/// robust solve's status and cost. The caller adds its level and its events.
+pub(super) fn point_json(
+    names: &[SceneParameter],
+    design: &[f64],
+    statistic: &Estimate,
+    at_medians: f64,
+    result: &RobustResult,
+) -> Map<String, Value> {
+    let stat = estimate_json(statistic);
+    let mut m = Map::new();
+    m.insert("design".into(), Value::Object(design_json(names, design)));
+    m.insert("statistic".into(), json!(stat.get("value")));
+    m.insert("statistic_interval".into(), json!(stat.get("interval")));
+    m.insert(
+        "statistic_verified".into(),
+        json!(result.objective_verified.as_ref().map(estimate_json)),
+    );
+    m.insert(
+        "at_medians".into(),
+        json!(at_medians.is_finite().then_some(at_medians)),
+    );
+    m.insert("status".into(), json!(result.status));
+    m.insert("cycles".into(), json!(result.cycles));
+    m.insert("corrections".into(), json!(result.corrections));
+    m.insert("evaluations".into(), json!(result.evaluations));
+    m
+}
+
+/// `common`'s keys with `extra`'s (an object) added: a point's JSON from
+/// [`point_json`] and what its front adds.
+pub(super) fn merged(mut common: Map<String, Value>, extra: Value) -> Value {
+    if let Value::Object(extra) = extra {
+        common.extend(extra);
+    }
+    Value::Object(common)
 }
