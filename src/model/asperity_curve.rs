@@ -106,7 +106,9 @@ pub struct AsperityCurve {
     /// The last stable point of the contact branch on retraction.
     pub jump_out: Option<CurveMark>,
     /// The curve drawn densely, in order along it (for plots): for an S-shaped
-    /// curve approach, unstable and contact branches in turn.
+    /// curve approach, unstable and contact branches in turn. A solved
+    /// Lennard-Jones curve's are its trace's points and, between them, their
+    /// cubic Hermite interpolant in the arclength (a drawing, not rows).
     pub path: Vec<CurvePoint>,
 }
 
@@ -1077,18 +1079,24 @@ fn curve_at(
             contact_radius: p.contact_radius,
             branch: unturned(&p),
         });
+    // Between them, the points of each piece's Hermite interpolant
+    // ([`drawn_between`]): straight chords cut the sharp turns of the
+    // unstable branch (at μ = 3 they cut a load minimum by about 0.01, drawn as a kink).
     let path = outer_path
         .chain(
             windows
                 .iter()
                 .enumerate()
                 .flat_map(|(k, w)| {
-                    turns
-                        .iter()
-                        .filter(move |t| t.0 == k)
-                        .map(|t| (t.1, t.2.point))
+                    let knots: Vec<(f64, SpherePoint)> = std::iter::once((0.0, w.start.point))
+                        .chain(turns.iter().filter(|t| t.0 == k).map(|t| (t.1, t.2.point)))
                         .chain(std::iter::once((w.length, w.end.point)))
+                        .collect();
+                    knots
+                        .windows(2)
+                        .flat_map(|pair| drawn_between(pair[0], pair[1]))
                         .map(move |(at, p)| (k, at, p))
+                        .collect::<Vec<_>>()
                 })
                 .map(|(k, at, p)| CurvePoint {
                     interference: p.interference,
@@ -1135,6 +1143,51 @@ fn curve_at(
         jump_in,
         jump_out,
         path,
+    })
+}
+
+/// How many pieces a plot's path draws each stretch of a trace step in.
+const DRAWN_PIECES: usize = 6;
+
+/// The points a plot draws from one solved state of a trace step to the next
+/// (arclengths `a` < `b` from the step's start), the second included: the
+/// cubic Hermite interpolant of δ̂ and P̂ in the arclength through both, with
+/// their slopes along the path (a drawing between solutions, exact at them;
+/// â linear, it only names the branch). A turn of δ̂ is a knot, its slope
+/// zero there, so the jumps are drawn as the folds they are.
+fn drawn_between(
+    (a, p): (f64, SpherePoint),
+    (b, q): (f64, SpherePoint),
+) -> impl Iterator<Item = (f64, SpherePoint)> {
+    let h = b - a;
+    (1..=DRAWN_PIECES).map(move |j| {
+        if j == DRAWN_PIECES {
+            return (b, q);
+        }
+        let t = j as f64 / DRAWN_PIECES as f64;
+        let (t2, t3) = (t * t, t * t * t);
+        let (h00, h10, h01, h11) = (
+            2.0 * t3 - 3.0 * t2 + 1.0,
+            t3 - 2.0 * t2 + t,
+            -2.0 * t3 + 3.0 * t2,
+            t3 - t2,
+        );
+        let cubic =
+            |x0: f64, d0: f64, x1: f64, d1: f64| h00 * x0 + h10 * h * d0 + h01 * x1 + h11 * h * d1;
+        (
+            a + t * h,
+            SpherePoint {
+                interference: cubic(
+                    p.interference,
+                    p.interference_slope,
+                    q.interference,
+                    q.interference_slope,
+                ),
+                load: cubic(p.load, p.load_slope, q.load, q.load_slope),
+                contact_radius: (1.0 - t) * p.contact_radius + t * q.contact_radius,
+                ..p
+            },
+        )
     })
 }
 
