@@ -5,16 +5,18 @@
 //! A junction wider than the critical size d* = Λ w G / τ_j² (w the work of
 //! adhesion, G the shear modulus of the softer body, τ_j the junction's shear
 //! strength, Λ a shape factor) breaks off a debris particle; a smaller one is
-//! smoothed away atom by atom. A summit's junction diameter is taken as its
-//! Hertz contact diameter 2√(Rδ) under every asperity law — the diameter of the
-//! πRδ area the model counts as real area (§3, §8 of docs/model.md), exact
-//! under DMT and an underestimate under JKR and Lennard-Jones, whose contacts
-//! are wider — so the cut is the interference δ* = d*²/(4R), and with Gaussian
-//! summit heights the share of the contacts and of the real area beyond it are
-//! closed forms in erfc.
+//! smoothed away atom by atom. A summit's junction diameter is its contact
+//! diameter under the scene's asperity law ([`junction_cut`]): Hertz's 2√(Rδ)
+//! under DMT, JKR's 2a with δ = a²/R − √(2πwa/E*), the Lennard-Jones sphere's
+//! from the law's curves. Each grows with the interference, so the junctions
+//! wider than d* are the summits beyond one cut δ*, and with Gaussian summit
+//! heights the share of the contacts and of the real area (the πRδ measure)
+//! beyond it are closed forms in erfc.
 
 use serde::Serialize;
 
+use super::law::AdhesionModel;
+use super::lennard_jones::rough::{tabor, RoughLaw};
 use super::scene::Scene;
 use super::special::{kappa, tail0, tail1_given};
 use super::warnings::Warning;
@@ -142,6 +144,58 @@ pub fn debris_fractions(h: f64, cut: f64) -> (f64, f64) {
     (contacts.clamp(0.0, 1.0), area.clamp(0.0, 1.0))
 }
 
+/// The interference δ*/σ (≥ 0) beyond which a summit's junction under the
+/// scene's asperity law is wider than `diameter` (m, ≥ 0), elastic summits'
+/// sizes (docs/model.md §13):
+///
+/// - DMT, and any law without adhesion: Hertz, δ* = a*²/R with a* = d/2;
+/// - JKR: δ* = a*²/R − √(2πwa*/E*) (E* the composite modulus), below Hertz's:
+///   a JKR summit is wider at the same interference, already at δ = 0;
+/// - Lennard-Jones: where the law's interpolated contact radius reaches a*
+///   ([`RoughLaw::interference_at_contact_radius`]), between JKR's and
+///   Hertz's; outside the table the closed form that stands in (JKR above
+///   μ = 1, Hertz below).
+///
+/// 0 where every summit in contact is wider than `diameter`; at most 1e4.
+pub fn junction_cut(scene: &Scene, diameter: f64) -> f64 {
+    let (r, s, w) = (scene.asperity_radius, scene.sigma, scene.work_of_adhesion);
+    let a = 0.5 * diameter;
+    let hertz = a * a / r;
+    let jkr = || {
+        let e = super::wear::equivalent_modulus(scene);
+        hertz - (2.0 * std::f64::consts::PI * w * a / e).sqrt()
+    };
+    let delta = if w <= 0.0 {
+        hertz
+    } else {
+        match scene.adhesion_model {
+            AdhesionModel::Dmt => hertz,
+            AdhesionModel::Jkr => jkr(),
+            AdhesionModel::LennardJones => {
+                let c = super::wear::coefficients(scene);
+                let z0 = scene.interatomic_distance / s;
+                match RoughLaw::new(c.c_0, c.c_h, z0) {
+                    Some(law) => {
+                        // â = a (K/(πγR²))^{1/3}; Δ in units of σ.
+                        let k = 4.0 / 3.0 * super::wear::equivalent_modulus(scene);
+                        let unit = (std::f64::consts::PI * w * r * r / k).cbrt();
+                        law.interference_at_contact_radius(a / unit) * s
+                    }
+                    None if tabor(c.c_0, z0) > 1.0 => jkr(),
+                    None => hertz,
+                }
+            }
+        }
+    };
+    // Beyond 1e4 σ no Gaussian summit reaches (the shares are 0 from 1e3).
+    let cut = delta / s;
+    if cut.is_nan() {
+        0.0
+    } else {
+        cut.clamp(0.0, 1e4)
+    }
+}
+
 /// The debris numbers of `scene` at the non-dimensional separation `h` (None when
 /// separated); None without `requirements.shear_strength`. Λ is
 /// `requirements.debris_shape_factor` or [`DEFAULT_DEBRIS_SHAPE_FACTOR`].
@@ -153,8 +207,7 @@ pub fn debris_of(scene: &Scene, h: Option<f64>) -> Option<Debris> {
         .unwrap_or(DEFAULT_DEBRIS_SHAPE_FACTOR);
     let g = shear_modulus(scene.youngs_modulus_a, scene.poisson_ratio_a);
     let d = critical_junction_size(shape, scene.work_of_adhesion, g, tau);
-    let cut = d * d / (4.0 * scene.asperity_radius) / scene.sigma;
-    let fractions = h.map(|h| debris_fractions(h, cut));
+    let fractions = h.map(|h| debris_fractions(h, junction_cut(scene, d)));
     Some(Debris {
         critical_junction_size: d,
         debris_contact_fraction: fractions.map(|f| f.0),

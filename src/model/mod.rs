@@ -65,7 +65,7 @@ pub use separation::{
 };
 pub use warnings::{Note, Warning};
 pub use wear::{
-    evaluate, evaluate_from, evaluate_with_other, Evaluation, EvaluationOptions, Indices,
-    OtherModel, Regime, SearchHints, Status, Stiction, StictionVerdict,
+    equivalent_modulus, evaluate, evaluate_from, evaluate_with_other, Evaluation,
+    EvaluationOptions, Indices, OtherModel, Regime, SearchHints, Status, Stiction, StictionVerdict,
 };
 pub use wear_law::{WearLaw, WearModel};

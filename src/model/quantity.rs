@@ -108,8 +108,8 @@ pub enum Quantity {
     /// d* = Λ w G / τ_j², the junction diameter above which a junction breaks off a
     /// debris particle (m).
     CriticalJunctionSize,
-    /// The share of the contacts whose junction (Hertz diameter 2√(Rδ)) is wider
-    /// than d*; exists only in contact.
+    /// The share of the contacts whose junction (its contact diameter under the
+    /// scene's law, docs/model.md §13) is wider than d*; exists only in contact.
     DebrisContactFraction,
     /// The share of the real area in junctions wider than d*; exists only in contact.
     DebrisAreaFraction,

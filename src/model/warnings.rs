@@ -171,10 +171,11 @@ pub enum Note {
         /// asperity's; above, the rough surface's (where adhesion is strong).
         pull_off_error: f64,
     },
-    /// The debris shares are computed with Hertz junction sizes 2√(Rδ), the
-    /// diameter of the πRδ area measure (docs/model.md §13): exact for elastic DMT
-    /// contacts; JKR, Lennard-Jones and plastic junctions are wider.
-    DebrisHertzSizes {
+    /// The debris shares take each junction's diameter as its elastic contact
+    /// diameter under the scene's law (docs/model.md §13): plastic junctions
+    /// (2√(2Rδ)) are wider, so where summits are plastic the shares are lower
+    /// bounds.
+    DebrisJunctionSizes {
         /// The scene's asperity law.
         adhesion_model: super::law::AdhesionModel,
     },

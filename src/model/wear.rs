@@ -794,7 +794,7 @@ fn with_designer_numbers(mut ev: Evaluation, scene: &Scene) -> Evaluation {
     }
     ev.debris = super::debris::debris_of(scene, ev.nondimensional_separation);
     if let Some(d) = &ev.debris {
-        ev.notes.push(Note::DebrisHertzSizes {
+        ev.notes.push(Note::DebrisJunctionSizes {
             adhesion_model: scene.adhesion_model,
         });
         ev.warnings.extend(d.warning(scene.wear_law.as_str()));

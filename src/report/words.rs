@@ -238,12 +238,14 @@ pub fn note(n: &Note) -> String {
                 sig_exp(*tabor_parameter, 3),
             )
         }
-        Note::DebrisHertzSizes { adhesion_model } => format!(
-            "the debris shares take each junction's diameter as 2√(Rδ), that of the πRδ real area{}; wider junctions make more debris, so the shares are lower bounds where they are",
-            if *adhesion_model == crate::model::AdhesionModel::Dmt {
-                ": exact for elastic DMT contacts, plastic junctions are wider"
-            } else {
-                " (the Hertz size): the law's own contacts and plastic junctions are wider"
+        Note::DebrisJunctionSizes { adhesion_model } => format!(
+            "the debris shares take each junction's diameter as its elastic contact diameter under the {} law ({}); plastic junctions (2√(2Rδ)) are wider and make more debris, so where summits are plastic the shares are lower bounds",
+            adhesion_model.law().label(),
+            match adhesion_model {
+                crate::model::AdhesionModel::Dmt => "Hertz's 2√(Rδ)",
+                crate::model::AdhesionModel::Jkr => "JKR's 2a, with δ = a²/R − √(2πwa/E*)",
+                crate::model::AdhesionModel::LennardJones =>
+                    "the sphere's, from the law's curves, between JKR's and Hertz's 2√(Rδ)",
             }
         ),
         Note::LennardJonesLimitCurves {

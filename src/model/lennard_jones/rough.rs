@@ -391,6 +391,48 @@ impl RoughLaw {
             .sum()
     }
 
+    /// â(ℓΔ) = Σ_k w_k â_k(ℓΔ), one summit's contact radius in Maugis units
+    /// (â = a (K/(πγR²))^{1/3}) at interference Δ ≥ 0 (§3's units): each
+    /// curve's contact part, interpolated in μ with the weights of
+    /// [`RoughLaw::summit_load`]; the junction size the debris regime reads
+    /// (docs/model.md §13). At least Hertz's √(ℓΔ), and rising with Δ.
+    pub fn summit_contact_radius_maugis(&self, d: f64) -> f64 {
+        let dd = self.ell * d;
+        self.nodes()
+            .iter()
+            .map(|n| n.weight * n.curve.contact_area(dd.max(n.curve.switch)).0)
+            .sum()
+    }
+
+    /// The interference Δ ≥ 0 (§3's units) at which one summit's contact
+    /// radius [`RoughLaw::summit_contact_radius_maugis`] reaches `radius`
+    /// (Maugis units, ≥ 0): 0 where it is wider already at Δ = 0; by
+    /// bisection to 1e-12 relative, between 0 and Hertz's ℓΔ = â² (the law's
+    /// radius is at least Hertz's, so its root lies below).
+    pub fn interference_at_contact_radius(&self, radius: f64) -> f64 {
+        let f = |d: f64| self.summit_contact_radius_maugis(d) - radius;
+        if radius.is_nan() || radius <= 0.0 || f(0.0) >= 0.0 {
+            return 0.0;
+        }
+        let (mut lo, mut hi) = (0.0, radius * radius / self.ell);
+        // Where interpolating in μ leaves the radius a hair below Hertz's.
+        while f(hi) < 0.0 && hi < 1e300 {
+            hi *= 2.0;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) < 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            if hi - lo <= 1e-12 * hi {
+                break;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+
     /// The shares at separation h.
     pub fn at(&self, h: f64) -> Shares {
         let mut out = Shares {
