@@ -8,10 +8,12 @@
 //! smoothed away atom by atom. A summit's junction diameter is its contact
 //! diameter under the scene's asperity law ([`junction_cut`]): Hertz's 2√(Rδ)
 //! under DMT, JKR's 2a with δ = a²/R − √(2πwa/E*), the Lennard-Jones sphere's
-//! from the law's curves. Each grows with the interference, so the junctions
-//! wider than d* are the summits beyond one cut δ*, and with Gaussian summit
-//! heights the share of the contacts and of the real area (the πRδ measure)
-//! beyond it are closed forms in erfc.
+//! from the law's curves; a plastic junction's is 2√(2Rδ). Each grows with
+//! the interference, so the junctions wider than d* are the summits beyond a
+//! cut (two stretches where plastic junctions start narrower than the elastic
+//! summits below them), and with Gaussian summit heights the share of the
+//! contacts and of the real area (the πRδ measure) in them are closed forms
+//! in erfc.
 
 use serde::Serialize;
 
@@ -196,10 +198,39 @@ pub fn junction_cut(scene: &Scene, diameter: f64) -> f64 {
     }
 }
 
+/// The shares (of the contacts, of the πRδ real area) of the junctions wider
+/// than d* at separation `h`, every interference over σ: elastic summits
+/// (below `critical`, Δc) are wider beyond `elastic` ([`junction_cut`]),
+/// plastic ones (from Δc on, diameter 2√(2Rδ)) beyond `plastic`
+/// (d*²/(8R)). The set is (elastic, Δc) ∪ (max(Δc, plastic), ∞): two tails'
+/// difference plus a tail of [`debris_fractions`], a plastic junction being
+/// narrower at Δc than a JKR or Lennard-Jones summit just below it can be.
+/// `critical` = ∞ without plasticity.
+pub fn junction_fractions(h: f64, elastic: f64, critical: f64, plastic: f64) -> (f64, f64) {
+    let tail = |cut: f64| {
+        if cut < 1e4 {
+            debris_fractions(h, cut.max(0.0))
+        } else {
+            (0.0, 0.0)
+        }
+    };
+    let late = tail(critical.max(plastic));
+    if elastic < critical {
+        let (from, to) = (tail(elastic), tail(critical));
+        (
+            (from.0 - to.0 + late.0).clamp(0.0, 1.0),
+            (from.1 - to.1 + late.1).clamp(0.0, 1.0),
+        )
+    } else {
+        late
+    }
+}
+
 /// The debris numbers of `scene` at the non-dimensional separation `h` (None when
-/// separated); None without `requirements.shear_strength`. Λ is
+/// separated) and the critical interference Δc·σ (m, ∞ without plasticity);
+/// None without `requirements.shear_strength`. Λ is
 /// `requirements.debris_shape_factor` or [`DEFAULT_DEBRIS_SHAPE_FACTOR`].
-pub fn debris_of(scene: &Scene, h: Option<f64>) -> Option<Debris> {
+pub fn debris_of(scene: &Scene, h: Option<f64>, critical_interference: f64) -> Option<Debris> {
     let tau = scene.requirements.shear_strength?;
     let shape = scene
         .requirements
@@ -207,7 +238,24 @@ pub fn debris_of(scene: &Scene, h: Option<f64>) -> Option<Debris> {
         .unwrap_or(DEFAULT_DEBRIS_SHAPE_FACTOR);
     let g = shear_modulus(scene.youngs_modulus_a, scene.poisson_ratio_a);
     let d = critical_junction_size(shape, scene.work_of_adhesion, g, tau);
-    let fractions = h.map(|h| debris_fractions(h, junction_cut(scene, d)));
+    let s = scene.sigma;
+    let (elastic, plastic) = (
+        junction_cut(scene, d),
+        d * d / (8.0 * scene.asperity_radius) / s,
+    );
+    let critical = critical_interference / s;
+    let fractions = h.map(|h| {
+        junction_fractions(
+            h,
+            elastic,
+            if critical.is_nan() {
+                f64::INFINITY
+            } else {
+                critical
+            },
+            plastic,
+        )
+    });
     Some(Debris {
         critical_junction_size: d,
         debris_contact_fraction: fractions.map(|f| f.0),
@@ -289,6 +337,50 @@ mod tests {
         let a_asym = (1.0 / (a * a) + cut / a) * h * h * e;
         assert!((ar / a_asym - 1.0).abs() < 3.0 / (h * h), "{ar} {a_asym}");
         assert!(c > 0.0 && c < 1.0 && ar > c);
+    }
+
+    /// The union of stretches against an independent quadrature: composite
+    /// Simpson on each stretch of u = δ/σ (ends exact, 20 000 panels, the
+    /// tail cut at u = 14 where φ(h + u) < 1e-50) of φ(h + u) and u φ(h + u),
+    /// over the same on (0, 14), to 1e-12.
+    #[test]
+    fn a_plastic_stretch_against_quadrature() {
+        let h = 1.5;
+        let simpson = |f: &dyn Fn(f64) -> f64, a: f64, b: f64| {
+            let n = 20_000;
+            let step = (b - a) / n as f64;
+            let mut sum = f(a) + f(b);
+            for k in 1..n {
+                sum += f(a + k as f64 * step) * if k % 2 == 1 { 4.0 } else { 2.0 };
+            }
+            sum * step / 3.0
+        };
+        let count = |u: f64| (-0.5 * (h + u) * (h + u)).exp();
+        let area = |u: f64| u * count(u);
+        let shares = |stretches: &[(f64, f64)]| {
+            let part = |f: &dyn Fn(f64) -> f64| {
+                stretches
+                    .iter()
+                    .map(|&(a, b)| simpson(f, a, b))
+                    .sum::<f64>()
+                    / simpson(f, 0.0, 14.0)
+            };
+            (part(&count), part(&area))
+        };
+        type Stretches = Vec<(f64, f64)>;
+        let cases: [((f64, f64, f64), Stretches); 3] = [
+            ((0.35, 0.84, 1.26), vec![(0.35, 0.84), (1.26, 14.0)]),
+            ((1.05, 0.84, 0.56), vec![(0.84, 14.0)]),
+            ((0.35, f64::INFINITY, 1.0), vec![(0.35, 14.0)]),
+        ];
+        for ((elastic, critical, plastic), stretches) in cases {
+            let got = junction_fractions(h, elastic, critical, plastic);
+            let want = shares(&stretches);
+            assert!(
+                (got.0 - want.0).abs() < 1e-12 && (got.1 - want.1).abs() < 1e-12,
+                "{elastic} {critical} {plastic}: {got:?} {want:?}"
+            );
+        }
     }
 
     #[test]

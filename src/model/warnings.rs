@@ -171,10 +171,9 @@ pub enum Note {
         /// asperity's; above, the rough surface's (where adhesion is strong).
         pull_off_error: f64,
     },
-    /// The debris shares take each junction's diameter as its elastic contact
-    /// diameter under the scene's law (docs/model.md §13): plastic junctions
-    /// (2√(2Rδ)) are wider, so where summits are plastic the shares are lower
-    /// bounds.
+    /// The debris shares take each junction's diameter as its contact
+    /// diameter (docs/model.md §13): an elastic summit's under the scene's law,
+    /// a plastic junction's 2√(2Rδ).
     DebrisJunctionSizes {
         /// The scene's asperity law.
         adhesion_model: super::law::AdhesionModel,

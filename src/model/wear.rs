@@ -792,7 +792,11 @@ fn with_designer_numbers(mut ev: Evaluation, scene: &Scene) -> Evaluation {
         ev.friction_force = Some(f);
         ev.friction_coefficient = (scene.load > 0.0).then(|| f / scene.load);
     }
-    ev.debris = super::debris::debris_of(scene, ev.nondimensional_separation);
+    ev.debris = super::debris::debris_of(
+        scene,
+        ev.nondimensional_separation,
+        ev.critical_interference,
+    );
     if let Some(d) = &ev.debris {
         ev.notes.push(Note::DebrisJunctionSizes {
             adhesion_model: scene.adhesion_model,

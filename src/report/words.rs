@@ -239,7 +239,7 @@ pub fn note(n: &Note) -> String {
             )
         }
         Note::DebrisJunctionSizes { adhesion_model } => format!(
-            "the debris shares take each junction's diameter as its elastic contact diameter under the {} law ({}); plastic junctions (2√(2Rδ)) are wider and make more debris, so where summits are plastic the shares are lower bounds",
+            "the debris shares take each junction's diameter as its contact diameter: an elastic summit's under the {} law ({}), a plastic junction's 2√(2Rδ)",
             adhesion_model.law().label(),
             match adhesion_model {
                 crate::model::AdhesionModel::Dmt => "Hertz's 2√(Rδ)",

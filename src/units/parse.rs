@@ -356,11 +356,18 @@ fn factor_in(unit: &str, dimension: Dimension) -> Option<Factor> {
         ),
         Dimension::Pressure => pow10(prefixed(unit, "Pa")),
         Dimension::Force => pow10(prefixed(unit, "N")),
+        // cm and cm² too (a sliding distance of "10 cm"), though centi is no
+        // prefix elsewhere.
         Dimension::Length => pow10(
             prefixed(unit, "m")
-                .or_else(|| (unit == "\u{00c5}" || unit == "\u{212b}").then_some(-10)),
+                .or_else(|| (unit == "\u{00c5}" || unit == "\u{212b}").then_some(-10))
+                .or_else(|| (unit == "cm").then_some(-2)),
         ),
-        Dimension::Area => pow10(prefixed(unit, "m^2").map(|e| 2 * e)),
+        Dimension::Area => pow10(
+            prefixed(unit, "m^2")
+                .map(|e| 2 * e)
+                .or_else(|| (unit == "cm^2").then_some(-4)),
+        ),
         Dimension::Volume => pow10(prefixed(unit, "m^3").map(|e| 3 * e)),
         Dimension::WearRate => pow10(
             prefixed(unit, "m^3/m")
@@ -458,6 +465,8 @@ mod tests {
         assert!(close(q("5 nm", Dimension::Length), 5e-9));
         assert!(close(q("1 um", Dimension::Length), 1e-6));
         assert!(close(q("2 mm", Dimension::Length), 2e-3));
+        assert!(close(q("10 cm", Dimension::Length), 0.1));
+        assert!(close(q("1 cm²", Dimension::Area), 1e-4));
         assert!(close(q("3 m", Dimension::Length), 3.0));
         assert!(close(q("3 \u{00c5}", Dimension::Length), 3e-10));
         assert!(close(q("100 um^2", Dimension::Area), 1e-10));

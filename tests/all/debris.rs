@@ -40,7 +40,8 @@ fn json_with(extra: &str) -> serde_json::Value {
 /// d* is the closed form. The shares come from the hub's Lennard-Jones junction
 /// sizes: they are the closed forms Q(h + δ*/σ)/Q(h) and
 /// [φ(a) − hQ(a)]/[φ(h) − hQ(h)] at the law's cut (`junction_cut`, checked
-/// against the solved sphere in `each_law_cuts_at_its_own_contact_diameter`),
+/// against the solved sphere in `each_law_cuts_at_its_own_contact_diameter`;
+/// `junction_fractions`, with the plastic junctions' cut),
 /// to 1e-7 (the separation comes out of the Lennard-Jones solve to about 1e-9,
 /// and the far-tail share moves by (a − h)·a·Δh relative with it). With
 /// Hertz's sizes the numbers (mpmath at 40 digits at the hub's
@@ -49,7 +50,7 @@ fn json_with(extra: &str) -> serde_json::Value {
 /// the sphere's junctions are wider.
 #[test]
 fn the_hub_table_through_eval() {
-    use wearopt::model::debris::{debris_fractions, junction_cut};
+    use wearopt::model::debris::{junction_cut, junction_fractions};
     let scene = wearopt::problem::load(std::path::Path::new("problems/micro-gear.toml"))
         .unwrap()
         .scene;
@@ -84,7 +85,15 @@ fn the_hub_table_through_eval() {
         let rel =
             |a: f64, b: f64, tol: f64| assert!((a / b - 1.0).abs() < tol, "{tau}: {a} vs {b}");
         rel(f("critical_junction_size"), d, 1e-11);
-        let (count, area) = debris_fractions(h, junction_cut(&scene, d));
+        // Elastic summits beyond the law's cut, plastic ones (Δc = 28 σ here)
+        // beyond d*²/(8R).
+        let (s, r) = (scene.sigma, scene.asperity_radius);
+        let (count, area) = junction_fractions(
+            h,
+            junction_cut(&scene, d),
+            f("critical_interference") / s,
+            d * d / (8.0 * r) / s,
+        );
         rel(f("debris_contact_fraction"), count, 1e-7);
         rel(f("debris_area_fraction"), area, 1e-7);
         assert!(
@@ -123,7 +132,7 @@ fn the_hub_table_through_eval() {
     assert!(
         v["notes"]
             .to_string()
-            .contains("contact diameter under the Lennard-Jones law"),
+            .contains("an elastic summit's under the Lennard-Jones law"),
         "{}",
         v["notes"]
     );
@@ -230,4 +239,43 @@ fn each_law_cuts_at_its_own_contact_diameter() {
         row.contact_radius
     );
     assert!(error < 1e-6, "{error}");
+}
+
+/// A soft hub (H = 0.3 GPa, so Δc is below the elastic cut) at τ_j = 1 GPa:
+/// its plastic junctions, 2√(2Rδ) wide, make debris from d*²/(8R) on, so the
+/// shares are those of `junction_fractions` and above the elastic cut's tail
+/// alone (what the shares were before plastic sizes were read).
+#[test]
+fn plastic_junctions_make_debris_at_their_own_size() {
+    use wearopt::model::debris::{debris_fractions, junction_cut, junction_fractions};
+    let v = json_with("hardness = \"0.3 GPa\"\nshear_strength = \"1 GPa\"");
+    let f = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("{k}: {v}"));
+    let scene = wearopt::problem::load(std::path::Path::new("problems/micro-gear.toml"))
+        .unwrap()
+        .scene;
+    let (s, r, d) = (
+        scene.sigma,
+        scene.asperity_radius,
+        f("critical_junction_size"),
+    );
+    let mut soft = scene.clone();
+    soft.hardness = 3e8;
+    let (h, critical) = (
+        f("nondimensional_separation"),
+        f("critical_interference") / s,
+    );
+    let elastic = junction_cut(&soft, d);
+    assert!(
+        critical < elastic,
+        "Δc {critical} against the cut {elastic}"
+    );
+    let (count, area) = junction_fractions(h, elastic, critical, d * d / (8.0 * r) / s);
+    assert!((f("debris_contact_fraction") / count - 1.0).abs() < 1e-12);
+    assert!((f("debris_area_fraction") / area - 1.0).abs() < 1e-12);
+    let alone = debris_fractions(h, elastic);
+    // Measured: 0.574 and 0.879 of the contacts and the area, against 0.476 and 0.810.
+    assert!(
+        count > 1.1 * alone.0 && area > alone.1,
+        "{count} {area} {alone:?}"
+    );
 }
