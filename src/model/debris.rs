@@ -164,7 +164,7 @@ pub fn junction_cut(scene: &Scene, diameter: f64) -> f64 {
     let a = 0.5 * diameter;
     let hertz = a * a / r;
     let jkr = || {
-        let e = super::wear::equivalent_modulus(scene);
+        let e = scene.equivalent_modulus();
         hertz - (2.0 * std::f64::consts::PI * w * a / e).sqrt()
     };
     let delta = if w <= 0.0 {
@@ -174,12 +174,12 @@ pub fn junction_cut(scene: &Scene, diameter: f64) -> f64 {
             AdhesionModel::Dmt => hertz,
             AdhesionModel::Jkr => jkr(),
             AdhesionModel::LennardJones => {
-                let c = super::wear::coefficients(scene);
+                let c = scene.coefficients();
                 let z0 = scene.interatomic_distance / s;
                 match RoughLaw::new(c.c_0, c.c_h, z0) {
                     Some(law) => {
                         // â = a (K/(πγR²))^{1/3}; Δ in units of σ.
-                        let k = 4.0 / 3.0 * super::wear::equivalent_modulus(scene);
+                        let k = 4.0 / 3.0 * scene.equivalent_modulus();
                         let unit = (std::f64::consts::PI * w * r * r / k).cbrt();
                         law.interference_at_contact_radius(a / unit) * s
                     }

@@ -172,6 +172,32 @@ pub(crate) fn check(
 }
 
 impl Scene {
+    /// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹ (Pa); E2 = ∞ is a rigid counterface.
+    pub fn equivalent_modulus(&self) -> f64 {
+        let compliance = |e: f64, nu: f64| {
+            if e.is_infinite() {
+                0.0
+            } else {
+                (1.0 - nu * nu) / e
+            }
+        };
+        1.0 / (compliance(self.youngs_modulus_a, self.poisson_ratio_a)
+            + compliance(self.youngs_modulus_b, self.poisson_ratio_b))
+    }
+
+    /// The load-law coefficients (docs/model.md §3), computed directly (never
+    /// via θ and λ) so that γ = 0 and H = ∞ are exact.
+    pub fn coefficients(&self) -> super::coefficients::Coefficients {
+        use std::f64::consts::PI;
+        let k = 4.0 / 3.0 * self.equivalent_modulus();
+        let (r, s) = (self.asperity_radius, self.sigma);
+        // c_a² = 6π/θ = 6π γ R^{1/2} / (K σ^{3/2}).
+        let c_a = (6.0 * PI * self.work_of_adhesion * r.sqrt() / (k * s * s.sqrt())).sqrt();
+        // c_h = π R^{1/2} H / (K σ^{1/2}).
+        let c_h = PI * r.sqrt() * self.hardness / (k * s.sqrt());
+        super::coefficients::Coefficients::new(c_a, c_h)
+    }
+
     /// The wear law's inputs: present and in range exactly under the
     /// stress-assisted law, which also needs τ under `stress = "shear"`.
     fn validate_wear_law(&self) -> Result<(), InputError> {

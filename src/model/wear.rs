@@ -325,29 +325,15 @@ impl Stiction {
     }
 }
 
-/// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹; E2 = ∞ is a rigid counterface.
+/// E = [(1-ν1²)/E1 + (1-ν2²)/E2]⁻¹; E2 = ∞ is a rigid counterface
+/// ([`Scene::equivalent_modulus`]).
 pub fn equivalent_modulus(scene: &Scene) -> f64 {
-    let compliance = |e: f64, nu: f64| {
-        if e.is_infinite() {
-            0.0
-        } else {
-            (1.0 - nu * nu) / e
-        }
-    };
-    1.0 / (compliance(scene.youngs_modulus_a, scene.poisson_ratio_a)
-        + compliance(scene.youngs_modulus_b, scene.poisson_ratio_b))
+    scene.equivalent_modulus()
 }
 
-/// The load-law coefficients of a scene, computed directly (never via θ and λ)
-/// so that γ = 0 and H = ∞ are exact.
+/// The load-law coefficients of a scene ([`Scene::coefficients`]).
 pub fn coefficients(scene: &Scene) -> Coefficients {
-    let k = 4.0 / 3.0 * equivalent_modulus(scene);
-    let (r, s) = (scene.asperity_radius, scene.sigma);
-    // c_a² = 6π/θ = 6π γ R^{1/2} / (K σ^{3/2}).
-    let c_a = (6.0 * PI * scene.work_of_adhesion * r.sqrt() / (k * s * s.sqrt())).sqrt();
-    // c_h = π R^{1/2} H / (K σ^{1/2}).
-    let c_h = PI * r.sqrt() * scene.hardness / (k * s.sqrt());
-    Coefficients::new(c_a, c_h)
+    scene.coefficients()
 }
 
 /// θ, λ, ψ, φ0 of a scene (logs where powers could overflow).
