@@ -392,45 +392,62 @@ impl RoughLaw {
     }
 
     /// â(ℓΔ) = Σ_k w_k â_k(ℓΔ), one summit's contact radius in Maugis units
-    /// (â = a (K/(πγR²))^{1/3}) at interference Δ ≥ 0 (§3's units): each
-    /// curve's contact part, interpolated in μ with the weights of
-    /// [`RoughLaw::summit_load`]; the junction size the debris regime reads
-    /// (docs/model.md §13). At least Hertz's √(ℓΔ), and rising with Δ.
-    pub fn summit_contact_radius_maugis(&self, d: f64) -> f64 {
+    /// (â = a (K/(πγR²))^{1/3}) at interference Δ ≥ 0 (§3's units), and its
+    /// derivative in Δ: each curve's contact part, interpolated in μ with the
+    /// weights of [`RoughLaw::summit_load`]; the junction size the debris
+    /// regime reads (docs/model.md §13). At least Hertz's √(ℓΔ), and rising.
+    pub fn summit_contact_radius_maugis(&self, d: f64) -> (f64, f64) {
         let dd = self.ell * d;
-        self.nodes()
-            .iter()
-            .map(|n| n.weight * n.curve.contact_area(dd.max(n.curve.switch)).0)
-            .sum()
+        self.nodes().iter().fold((0.0, 0.0), |(a, slope), n| {
+            let ((ak, sk), _) = n.curve.contact_area_slope(dd.max(n.curve.switch));
+            (a + n.weight * ak, slope + n.weight * sk * self.ell)
+        })
     }
 
     /// The interference Δ ≥ 0 (§3's units) at which one summit's contact
     /// radius [`RoughLaw::summit_contact_radius_maugis`] reaches `radius`
-    /// (Maugis units, ≥ 0): 0 where it is wider already at Δ = 0; by
-    /// bisection to 1e-12 relative, between 0 and Hertz's ℓΔ = â² (the law's
-    /// radius is at least Hertz's, so its root lies below).
+    /// (Maugis units, ≥ 0): 0 where it is wider already at Δ = 0; by Newton's
+    /// method kept inside a bracket (bisection where a step leaves it) from
+    /// Hertz's ℓΔ = â², above the root (the law's radius is at least
+    /// Hertz's), to a step of 1e-13 relative. It runs in every evaluation of
+    /// a scene with a shear strength, so Newton, not bisection.
     pub fn interference_at_contact_radius(&self, radius: f64) -> f64 {
-        let f = |d: f64| self.summit_contact_radius_maugis(d) - radius;
-        if radius.is_nan() || radius <= 0.0 || f(0.0) >= 0.0 {
+        let f = |d: f64| {
+            let (a, slope) = self.summit_contact_radius_maugis(d);
+            (a - radius, slope)
+        };
+        if radius.is_nan() || radius <= 0.0 || f(0.0).0 >= 0.0 {
             return 0.0;
         }
         let (mut lo, mut hi) = (0.0, radius * radius / self.ell);
         // Where interpolating in μ leaves the radius a hair below Hertz's.
-        while f(hi) < 0.0 && hi < 1e300 {
+        while f(hi).0 < 0.0 && hi < 1e300 {
             hi *= 2.0;
         }
+        let mut d = hi;
         for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if f(mid) < 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
+            let (value, slope) = f(d);
+            if value == 0.0 {
+                break;
             }
-            if hi - lo <= 1e-12 * hi {
+            if value < 0.0 {
+                lo = d;
+            } else {
+                hi = d;
+            }
+            let newton = d - value / slope;
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let step = (next - d).abs();
+            d = next;
+            if step <= 1e-13 * d || hi - lo <= 1e-13 * hi {
                 break;
             }
         }
-        0.5 * (lo + hi)
+        d
     }
 
     /// The shares at separation h.
