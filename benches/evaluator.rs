@@ -264,45 +264,51 @@ fn nondimensional_lennard_jones(c: &mut Criterion) {
 }
 
 /// The stress-assisted wear law (docs/model.md §12; issue 55: an eval ≤ 1.5× the
-/// Archard eval of the same scene): `problems/silicon-sidewall-wear.toml` under its
-/// own law (normal stress, the summit integral), under `stress = "shear"` (a closed
+/// Archard eval of the same scene): `problems/silicon-sidewall-wear.toml` and its
+/// Lennard-Jones twin `silicon-sidewall-wear-lj.toml`, each under its own law (normal stress, the summit integral), under `stress = "shear"` (a closed
 /// form) and under Archard (the same scene, k = 1e-4), separation solve alone and with
 /// the pull-off.
 fn stress_assisted(c: &mut Criterion) {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../problems/");
-    let problem = wearopt::problem::load(std::path::Path::new(&format!(
-        "{dir}silicon-sidewall-wear.toml"
-    )))
-    .expect("shipped problem loads");
-    let normal = problem.scene.clone();
-    let mut shear = normal.clone();
-    shear.requirements.shear_strength = Some(1e9);
-    if let Some(a) = shear.activation.as_mut() {
-        a.stress = wearopt::model::wear_law::ContactStress::Shear;
-    }
-    let mut archard = normal.clone();
-    archard.wear_law = wearopt::model::WearModel::Archard;
-    archard.activation = None;
-    archard.wear_coefficient = 1e-4;
+    let load = |name: &str| {
+        wearopt::problem::load(std::path::Path::new(&format!("{dir}{name}")))
+            .expect("shipped problem loads")
+            .scene
+    };
     let mut g = c.benchmark_group("stress-assisted wear");
-    for (label, options) in [
-        (
-            "separation solve",
-            EvaluationOptions {
-                pull_off: false,
-                ..EvaluationOptions::default()
-            },
-        ),
-        ("solve + pull-off", EvaluationOptions::default()),
+    for (file, scene_name) in [
+        ("silicon-sidewall-wear.toml", "silicon sidewall"),
+        ("silicon-sidewall-wear-lj.toml", "silicon sidewall LJ"),
     ] {
-        for (law, scene) in [
-            ("archard", &archard),
-            ("normal", &normal),
-            ("shear", &shear),
+        let normal = load(file);
+        let mut shear = normal.clone();
+        shear.requirements.shear_strength = Some(1e9);
+        if let Some(a) = shear.activation.as_mut() {
+            a.stress = wearopt::model::wear_law::ContactStress::Shear;
+        }
+        let mut archard = normal.clone();
+        archard.wear_law = wearopt::model::WearModel::Archard;
+        archard.activation = None;
+        archard.wear_coefficient = 1e-4;
+        for (label, options) in [
+            (
+                "separation solve",
+                EvaluationOptions {
+                    pull_off: false,
+                    ..EvaluationOptions::default()
+                },
+            ),
+            ("solve + pull-off", EvaluationOptions::default()),
         ] {
-            g.bench_function(format!("silicon sidewall, {law}: {label}"), |b| {
-                b.iter(|| black_box(evaluate(black_box(scene), &options)))
-            });
+            for (law, scene) in [
+                ("archard", &archard),
+                ("normal", &normal),
+                ("shear", &shear),
+            ] {
+                g.bench_function(format!("{scene_name}, {law}: {label}"), |b| {
+                    b.iter(|| black_box(evaluate(black_box(scene), &options)))
+                });
+            }
         }
     }
     g.finish();

@@ -391,6 +391,49 @@ impl RoughLaw {
             .sum()
     }
 
+    /// [`RoughLaw::summit_load_maugis`] at each Δ of `d` (each ≥ 0), into `out`
+    /// (as long): the same numbers, the curves' recurrences run four nodes
+    /// abreast ([`Curve::add_contact_loads`]).
+    pub fn summit_loads_maugis(&self, d: &[f64], out: &mut [f64]) {
+        let mut scaled = [0.0; 32];
+        for (dc, oc) in d.chunks(32).zip(out.chunks_mut(32)) {
+            let scaled = &mut scaled[..dc.len()];
+            for (s, &d) in scaled.iter_mut().zip(dc) {
+                *s = self.ell * d;
+            }
+            oc.fill(0.0);
+            for n in self.nodes() {
+                n.curve.add_contact_loads(scaled, n.weight, oc);
+            }
+        }
+    }
+
+    /// [`RoughLaw::summit_load_maugis`] and its derivative in Δ (§3's units):
+    /// Σ_k w_k (P̂_k, ℓ dP̂_k/dδ̂) at δ̂ = ℓΔ ≥ 0, each curve's contact part.
+    pub fn summit_load_slope_maugis(&self, d: f64) -> (f64, f64) {
+        let dd = self.ell * d;
+        if let [a, b, c, e] = self.nodes() {
+            if [a, b, c, e].iter().all(|n| dd >= n.curve.switch) {
+                // Four curves (μ inside the table): their recurrences abreast.
+                let loads = Curve::contacts4([a.curve, b.curve, c.curve, e.curve], [dd; 4]);
+                return [a, b, c, e].iter().zip(loads).fold(
+                    (0.0, 0.0),
+                    |(p, slope), (n, (pk, sk))| {
+                        (p + n.weight * pk, slope + n.weight * sk * self.ell)
+                    },
+                );
+            }
+        }
+        self.nodes().iter().fold((0.0, 0.0), |(p, slope), n| {
+            let (pk, sk) = if dd >= n.curve.switch {
+                n.curve.contact(dd)
+            } else {
+                (n.curve.load(dd), 0.0)
+            };
+            (p + n.weight * pk, slope + n.weight * sk * self.ell)
+        })
+    }
+
     /// â(ℓΔ) = Σ_k w_k â_k(ℓΔ), one summit's contact radius in Maugis units
     /// (â = a (K/(πγR²))^{1/3}) at interference Δ ≥ 0 (§3's units), and its
     /// derivative in Δ: each curve's contact part, interpolated in μ with the
@@ -1720,6 +1763,44 @@ fn inner_pressure_slope(curve: &Curve, d: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The summit loads taken a panel at a time, and with their slopes four
+    /// curves abreast, are the one-at-a-time sums bit for bit: over μ from the
+    /// table's DMT end to JKR-like (four curves each), Δ from 1e-6 to past the
+    /// tails' last panel, slices of 1 … 9 nodes (whole and partial groups of four).
+    #[test]
+    fn summit_loads_abreast_are_the_loads_one_by_one() {
+        let ds: Vec<f64> = (0..106)
+            .map(|i| 1e-6 * 10f64.powf(i as f64 * 0.2))
+            .collect();
+        for (c_0, z0) in [(0.05, 2.0), (0.3, 0.05), (2.0 * 12f64.powf(-1.5), 0.2)] {
+            let law = RoughLaw::new(c_0, f64::INFINITY, z0).expect("in the table");
+            assert_eq!(law.nodes().len(), 4);
+            for n in 1..=9 {
+                for chunk in ds.chunks(n) {
+                    let mut out = vec![f64::NAN; chunk.len()];
+                    law.summit_loads_maugis(chunk, &mut out);
+                    for (&d, &got) in chunk.iter().zip(&out) {
+                        assert_eq!(
+                            got.to_bits(),
+                            law.summit_load_maugis(d).to_bits(),
+                            "Δ = {d}"
+                        );
+                    }
+                }
+            }
+            for &d in &ds {
+                let dd = law.ell * d;
+                let want = law.nodes().iter().fold((0.0, 0.0), |(p, s), n| {
+                    let (pk, sk) = n.curve.contact(dd);
+                    (p + n.weight * pk, s + n.weight * sk * law.ell)
+                });
+                let got = law.summit_load_slope_maugis(d);
+                assert_eq!(got.0.to_bits(), want.0.to_bits(), "Δ = {d}");
+                assert_eq!(got.1.to_bits(), want.1.to_bits(), "Δ = {d}");
+            }
+        }
+    }
 
     /// A cluster regroups the same quadrature sum (docs/model.md §11): each
     /// share summed with its clusters against the same nodes one by one, on

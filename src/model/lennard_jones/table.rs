@@ -543,6 +543,37 @@ impl Tail {
         self.branch + (self.start - self.branch) * (k as f64).exp2()
     }
 
+    /// The integral's series of the panel holding δ̂ ≥ δ̂_max, x there and the
+    /// load at the panel's start (what [`Tail::at`] sums); None beyond the last
+    /// panel, where the tail is a closed form.
+    #[inline]
+    fn series(&self, d: f64) -> Option<(&[f64], f64, f64)> {
+        let (integral, _, x, offset) = self.series_slope(d)?;
+        Some((integral, x, offset))
+    }
+
+    /// [`Tail::series`] with the slope's series.
+    #[inline]
+    fn series_slope(&self, d: f64) -> Option<(&[f64], &[f64], f64, f64)> {
+        if d >= self.end(TAIL_PANELS) {
+            return None;
+        }
+        let k = self.panel_of(d);
+        let panel = &self.panels[k];
+        let x = (2.0 * d - panel.lo - panel.hi) / (panel.hi - panel.lo);
+        Some((&panel.integral, &panel.slope, x, self.load + self.sums[k]))
+    }
+
+    /// The panel holding δ̂ ∈ [δ̂_max, e_40): ⌊log2 of the distance over the
+    /// first's⌋, from the binary exponent (d ≥ δ̂_max: the ratio is at least 1).
+    #[inline]
+    fn panel_of(&self, d: f64) -> usize {
+        let ratio = (d - self.branch) / (self.start - self.branch);
+        ((ratio.to_bits() >> 52) as usize)
+            .saturating_sub(1023)
+            .min(TAIL_PANELS - 1)
+    }
+
     /// P̂ and dP̂/dδ̂ at δ̂ ≥ δ̂_max.
     fn at(&self, d: f64) -> (f64, f64) {
         let last = self.end(TAIL_PANELS);
@@ -553,12 +584,7 @@ impl Tail {
             let rise = (d - c) * r - (last - c) * r0;
             return (self.load + self.sums[TAIL_PANELS] + rise, 1.5 * r);
         }
-        // The panel: ⌊log2 of the distance over the first's⌋, from the
-        // binary exponent (d ≥ δ̂_max: the ratio is at least 1).
-        let ratio = (d - self.branch) / (self.start - self.branch);
-        let k = ((ratio.to_bits() >> 52) as usize)
-            .saturating_sub(1023)
-            .min(TAIL_PANELS - 1);
+        let k = self.panel_of(d);
         let panel = &self.panels[k];
         let x = (2.0 * d - panel.lo - panel.hi) / (panel.hi - panel.lo);
         let (integral, slope) = clenshaw2(&panel.integral, &panel.slope, x);
@@ -679,6 +705,83 @@ impl Curve {
         }
         let panel = &self.body().panels[self.panel(d)];
         Chebyshev::clenshaw(&panel.coefficients, panel.x(d))
+    }
+
+    /// [`Curve::contact_load`] at each δ̂ of `d` (each ≥ δ̂_s) times `weight`,
+    /// added to `out` (as long as `d`): the same numbers, with the Chebyshev
+    /// recurrences of four nodes run abreast where their series are as long
+    /// (four independent chains instead of one: what a quadrature panel's nodes
+    /// cost).
+    pub fn add_contact_loads(&self, d: &[f64], weight: f64, out: &mut [f64]) {
+        for (d, out) in d.chunks(4).zip(out.chunks_mut(4)) {
+            let mut series: [Option<(&[f64], f64, f64)>; 4] = [None; 4];
+            for (s, &d) in series.iter_mut().zip(d) {
+                *s = self.contact_series(d);
+            }
+            if let [Some(a), Some(b), Some(c), Some(e)] = series {
+                if d.len() == 4 && [b, c, e].iter().all(|s| s.0.len() == a.0.len()) {
+                    let values = clenshaw4([a.0, b.0, c.0, e.0], [a.1, b.1, c.1, e.1]);
+                    for ((o, v), offset) in out.iter_mut().zip(values).zip([a.2, b.2, c.2, e.2]) {
+                        *o += weight * (offset + v);
+                    }
+                    continue;
+                }
+            }
+            for ((o, s), &d) in out.iter_mut().zip(series).zip(d) {
+                let load = match s {
+                    Some((c, x, offset)) => offset + Chebyshev::clenshaw(c, x),
+                    None => self.contact(d).0,
+                };
+                *o += weight * load;
+            }
+        }
+    }
+
+    /// The Chebyshev series [`Curve::contact_load`] sums at δ̂ ≥ δ̂_s, with its x
+    /// and the offset added to it (a contact panel's series and 0, or a tail
+    /// panel's integral and P̂ at its start); None beyond the tail's panels.
+    #[inline]
+    fn contact_series(&self, d: f64) -> Option<(&[f64], f64, f64)> {
+        let body = self.body();
+        let max = body.breaks[body.breaks.len() - 1];
+        if d >= max {
+            return body.tail.series(d);
+        }
+        let panel = &body.panels[self.panel(d)];
+        Some((&panel.coefficients, panel.x(d), 0.0))
+    }
+
+    /// The series [`Curve::contact`] sums at δ̂ ≥ δ̂_s: P̂'s and dP̂/dδ̂'s, their
+    /// x and the offset added to P̂'s (None beyond the tail's panels).
+    #[inline]
+    fn contact_series_slope(&self, d: f64) -> Option<(&[f64], &[f64], f64, f64)> {
+        let body = self.body();
+        let max = body.breaks[body.breaks.len() - 1];
+        if d >= max {
+            return body.tail.series_slope(d);
+        }
+        let panel = &body.panels[self.panel(d)];
+        Some((&panel.coefficients, &panel.derivative, panel.x(d), 0.0))
+    }
+
+    /// [`Curve::contact`] of each curve at its own δ̂ (each ≥ δ̂_s): the same
+    /// numbers, the four curves' recurrences run abreast where their series are
+    /// as long (what one summit of the rough law costs, four curves at one μ).
+    pub fn contacts4(curves: [&Curve; 4], d: [f64; 4]) -> [(f64, f64); 4] {
+        let series = [0, 1, 2, 3].map(|j| curves[j].contact_series_slope(d[j]));
+        if let [Some(a), Some(b), Some(c), Some(e)] = series {
+            if [b, c, e]
+                .iter()
+                .all(|s| s.0.len() == a.0.len() && s.1.len() == a.1.len())
+            {
+                let x = [a.2, b.2, c.2, e.2];
+                let loads = clenshaw4([a.0, b.0, c.0, e.0], x);
+                let slopes = clenshaw4([a.1, b.1, c.1, e.1], x);
+                let offsets = [a.3, b.3, c.3, e.3];
+                return [0, 1, 2, 3].map(|j| (offsets[j] + loads[j], slopes[j]));
+            }
+        }
+        [0, 1, 2, 3].map(|j| curves[j].contact(d[j]))
     }
 
     /// P̂ and dP̂/dδ̂ on the contact part at δ̂ ≥ δ̂_s.
@@ -853,6 +956,22 @@ fn clenshaw2(a: &[f64], b: &[f64], x: f64) -> (f64, f64) {
         }
     }
     (x * a1 - a2 + a[0], x * b1 - b2 + b[0])
+}
+
+/// Four Chebyshev series of one length, each at its own x, their Clenshaw
+/// recurrences run abreast: the same numbers as [`Chebyshev::clenshaw`] of each.
+#[inline]
+fn clenshaw4(c: [&[f64]; 4], x: [f64; 4]) -> [f64; 4] {
+    let n = c[0].len();
+    let (mut b1, mut b2) = ([0.0; 4], [0.0; 4]);
+    for k in (1..n).rev() {
+        for j in 0..4 {
+            let b0 = 2.0 * x[j] * b1[j] - b2[j] + c[j][k];
+            b2[j] = b1[j];
+            b1[j] = b0;
+        }
+    }
+    [0, 1, 2, 3].map(|j| x[j] * b1[j] - b2[j] + c[j][0])
 }
 
 /// Three Chebyshev series at one x by one Clenshaw recurrence over their
