@@ -38,9 +38,21 @@ fn wear_law_lines(sc: &Scene, ev: &Evaluation) -> Vec<String> {
         format!("the stress that assists: {stress}"),
     ];
     if let Some(k) = w.effective_wear_coefficient {
+        // Below a double's range (a cold or slow contact): k_eff = rate / A_r in
+        // logarithms where the wearing area is the real area.
+        let log10_k = ev.log10_wear_rate - ev.log10_real_area;
+        let value = if k == 0.0 && sc.wear_area == WearArea::Total && log10_k.is_finite() {
+            format!(
+                "10^{} (below the smallest number a double holds)",
+                sig(log10_k, 5)
+            )
+        } else if k == 0.0 {
+            "below the smallest number a double holds".to_string()
+        } else {
+            sig_exp(k, 4)
+        };
         out.push(format!(
-            "effective wear coefficient k_eff = {} (the one-pass cap Ω/a0³ = {})",
-            sig_exp(k, 4),
+            "effective wear coefficient k_eff = {value} (the one-pass cap Ω/a0³ = {})",
             sig(a.atomic_volume / a.site_spacing.powi(3), 4)
         ));
     }
@@ -1148,11 +1160,11 @@ pub fn text(r: &EvalReport) -> String {
         si(sc.sliding_distance, "m", 3)
     ));
     if ev.log10_wear_rate.is_finite() && ev.wear_rate == 0.0 {
-        // Too small for a double (plastic junctions far out in the heights'
-        // tail): the logarithm is the number.
+        // Too small for a double: the logarithm is the number.
         line(format!(
-            "  wear rate V/L = 10^{} m³/m  (negligible: below the smallest number a double holds; only plastic junctions wear, and asperities tall enough to turn plastic are that rare)",
-            sig(ev.log10_wear_rate, 5)
+            "  wear rate V/L = 10^{} m³/m  (negligible: below the smallest number a double holds; {})",
+            sig(ev.log10_wear_rate, 5),
+            super::tiny_wear_reason(sc)
         ));
     } else if ev.log10_wear_rate.is_finite() {
         line(format!(

@@ -62,6 +62,19 @@ pub(crate) fn zero_wear_reason(sc: &crate::model::Scene) -> &'static str {
     }
 }
 
+/// Why a scene's wear rate is too small for a double (its logarithm finite, its
+/// value 0), in words: the thermally activated law's removal of atoms that slow, or
+/// only plastic junctions wearing and those that rare.
+pub(crate) fn tiny_wear_reason(sc: &crate::model::Scene) -> &'static str {
+    if sc.wear_law == crate::model::WearModel::StressAssisted {
+        "the thermally activated removal of atoms is that slow at this temperature, speed and barrier"
+    } else if sc.wear_area == crate::model::WearArea::Plastic {
+        "only plastic junctions wear, and asperities tall enough to turn plastic are that rare"
+    } else {
+        "the wearing area and the wear coefficient are that small"
+    }
+}
+
 /// The dimension of a design variable.
 pub(crate) fn design_dimension(p: crate::model::SceneParameter) -> crate::units::Dimension {
     p.dimension()

@@ -360,8 +360,9 @@ pub fn text(
                     };
                 if log10.is_finite() {
                     format!(
-                        "\n  (10^{} {unit} at the optimum, below the smallest number a double holds: only plastic junctions wear, and asperities tall enough to turn plastic are that rare; every design this far down is as good to the optimiser, and this is one of them)",
-                        sig(log10, 5)
+                        "\n  (10^{} {unit} at the optimum, below the smallest number a double holds: {}; every design this far down is as good to the optimiser, and this is one of them)",
+                        sig(log10, 5),
+                        super::tiny_wear_reason(&o.scene)
                     )
                 } else {
                     format!(

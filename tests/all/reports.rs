@@ -552,3 +552,48 @@ fn the_hardness_is_the_softer_bodys() {
         "{t}"
     );
 }
+
+/// A cold contact under the stress-assisted law (the DMT sidewall at 1 K: ΔU/k_BT
+/// ≈ 10⁴) wears below a double's range: the report says so in the law's words,
+/// not the plastic-junction reason of an Archard scene, and gives k_eff as the
+/// logarithm of rate/A_r (the two logarithms it prints) rather than 0.
+#[test]
+fn a_cold_stress_assisted_contact_is_worded_by_its_law() {
+    let dir = std::env::temp_dir().join(format!("wearopt-cold-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = std::fs::read_to_string("problems/silicon-sidewall-wear.toml")
+        .unwrap()
+        .replace("temperature = \"300 K\"", "temperature = \"1 K\"");
+    let path = dir.join("cold.toml");
+    std::fs::write(&path, file).unwrap();
+    let text = stdout_of(&["eval", path.to_str().unwrap()]);
+    let rate = text.lines().find(|l| l.contains("wear rate V/L")).unwrap();
+    assert!(
+        rate.contains("below the smallest number a double holds; the thermally activated removal"),
+        "{rate}"
+    );
+    let k = text.lines().find(|l| l.contains("k_eff =")).unwrap();
+    assert!(
+        k.contains("k_eff = 10^-") && k.contains("below the smallest number a double holds"),
+        "{k}"
+    );
+    // k_eff = rate / A_r: the two logarithms printed above it.
+    let log10 = |line: &str, key: &str| -> f64 {
+        let at = line.find(key).unwrap() + key.len();
+        line[at..]
+            .split([' ', ')'])
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap()
+    };
+    let area = text.lines().find(|l| l.contains("real area A_r")).unwrap();
+    let want = log10(rate, "V/L = 10^") - log10(area, "; 10^");
+    let got = log10(k, "k_eff = 10^");
+    // Each printed to five digits (0.1 at this size).
+    assert!(
+        (got - want).abs() < 0.15,
+        "{got} vs {want}: {k} / {rate} / {area}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
