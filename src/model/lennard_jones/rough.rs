@@ -122,6 +122,16 @@ pub fn tabor(c_0: f64, z0: f64) -> f64 {
     super::spacing(1.0) / (ell * z0)
 }
 
+/// How far below the law's the stand-in's rough-surface numbers lie at the
+/// table's lower end (μ = 0.01): (real area, pull-off), the worst relative
+/// falls over the grid of `tests/all/lennard_jones_law.rs`
+/// (`stand_in_jump_campaign`: Z0/σ from 0.07 to 1.7), at σ = 0.3 nm, Z0 = 0.5 nm,
+/// R = 5 µm and a light load. DMT with van der Waals attraction is one
+/// summit's small-μ limit (its pull-off, [`stand_in_pull_off_error`]) but not
+/// the rough surface's: its contact begins at the apex gap Z0, where the
+/// sphere's squeezed gap takes up about Z0 of interference (docs/model.md §11).
+pub const STAND_IN_ROUGH_JUMP: (f64, f64) = (0.841, 0.468);
+
 /// The relative error of the closed-form law's pull-off where it takes over
 /// from the law's curves: below the table one summit's (Bradley's 2 against
 /// the first curve's); above the limit curves the rough surface's (JKR's law
