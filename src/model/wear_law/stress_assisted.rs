@@ -387,17 +387,9 @@ pub fn removal_integral(model: &Model, h: f64, ln_c: f64, b: f64) -> Scaled {
 /// 0 ≤ Δ ≤ Δc of the summit's area Δ times F, its saturated share and its
 /// activation energy. `stress_scale` turns p/Δ into a stress (Pa).
 fn elastic_parts(model: &Model, h: f64, kernel: &Kernel, stress_scale: f64) -> Parts {
-    if let Some(law) = table_of(model.tabulated()) {
-        let elastic = Elastic::LennardJones {
-            law,
-            load_scale: law.ell.powf(-1.5),
-        };
-        let dc = model.critical_interference();
-        return elastic_integrals(model, &elastic, h, dc, kernel, stress_scale);
-    }
     match elastic_of(model) {
         Some((elastic, dc)) => elastic_integrals(model, &elastic, h, dc, kernel, stress_scale),
-        // The Lennard-Jones law's own table: refused by Scene::validate.
+        // A tabulated law other than the Lennard-Jones table (none is registered).
         None => Parts::default(),
     }
 }
@@ -410,9 +402,16 @@ fn elastic_top(h: f64, critical_interference: f64) -> f64 {
     critical_interference.min(reach.max(0.0))
 }
 
-/// The elastic summits of the model's law and its critical interference Δc; None
-/// under the Lennard-Jones law's table.
+/// The elastic summits of the model's law and its critical interference Δc: the
+/// closed forms', or the Lennard-Jones law's table (its curves' Δc interpolated).
 fn elastic_of(model: &Model) -> Option<(Elastic<'_>, f64)> {
+    if let Some(law) = table_of(model.tabulated()) {
+        let elastic = Elastic::LennardJones {
+            law,
+            load_scale: law.ell.powf(-1.5),
+        };
+        return Some((elastic, model.critical_interference()));
+    }
     let law = model.contact_law()?;
     let elastic = if law.hertz_offset != 0.0 {
         Elastic::Hertz {
@@ -1037,14 +1036,6 @@ mod adaptive_reference {
         kernel: &Kernel,
         stress_scale: f64,
     ) -> Parts {
-        if let Some(law) = table_of(model.tabulated()) {
-            let elastic = Elastic::LennardJones {
-                law,
-                load_scale: law.ell.powf(-1.5),
-            };
-            let dc = model.critical_interference();
-            return elastic_integrals(model, &elastic, h, dc, kernel, stress_scale);
-        }
         match elastic_of(model) {
             Some((elastic, dc)) => elastic_integrals(model, &elastic, h, dc, kernel, stress_scale),
             None => Parts::default(),
