@@ -11,7 +11,9 @@ use crate::model::{evaluate, AdhesionModel, EvaluationOptions, Scene, Status, We
 use crate::surface::analysed_map;
 use crate::surface::read;
 
-use crate::problem::{AreaCorrection, ContactModel, Problem, ProblemError, ScanSource};
+use crate::problem::{
+    AreaCorrection, ContactModel, ExactContact, Problem, ProblemError, ScanSource,
+};
 
 /// The statistical model on the same map at the same mean pressure: McCool's σ,
 /// R and N of the levelled map, no adhesion, H as given.
@@ -117,6 +119,36 @@ impl ScanContact {
 /// take): words for the report, not an error of the scene.
 pub fn scan_contact(scan: &ScanSource, scene: &Scene, modulus: f64) -> Result<ScanContact, String> {
     let pressure = scene.load / scene.nominal_area;
+    // The solve `contact_model = "bem_corrected"` made at load, where it was at
+    // this operating point (the statistical side is cheap: taken again).
+    let kept = scan.correction.as_ref().map(|c| &c.exact).filter(|e| {
+        e.solution.pressure == pressure && e.modulus == modulus && e.hardness == scene.hardness
+    });
+    let exact = match kept {
+        Some(e) => e.clone(),
+        None => exact_contact(scan, scene, modulus)?,
+    };
+    let statistical = statistical(
+        [scene.sigma, scene.asperity_radius, scene.asperity_density],
+        modulus,
+        scene.hardness,
+        pressure,
+        scene.nominal_area,
+    );
+    Ok(ScanContact {
+        pressure,
+        modulus,
+        hardness: scene.hardness,
+        pixels: exact.pixels,
+        solution: exact.solution,
+        statistical,
+    })
+}
+
+/// The exact contact of the scene's scan at its nominal pressure (the solve
+/// [`scan_contact`] reports), or why there is none.
+fn exact_contact(scan: &ScanSource, scene: &Scene, modulus: f64) -> Result<ExactContact, String> {
+    let pressure = scene.load / scene.nominal_area;
     if pressure <= 0.0 {
         return Err(format!(
             "the load is {} N: the contact solver takes a compressive load",
@@ -154,20 +186,11 @@ pub fn scan_contact(scan: &ScanSource, scene: &Scene, modulus: f64) -> Result<Sc
         .map_err(|e| e.to_string())?;
     solution.pressures = Vec::new();
     solution.gaps = Vec::new();
-    let statistical = statistical(
-        [scene.sigma, scene.asperity_radius, scene.asperity_density],
-        modulus,
-        scene.hardness,
-        pressure,
-        scene.nominal_area,
-    );
-    Ok(ScanContact {
-        pressure,
+    Ok(ExactContact {
         modulus,
         hardness: scene.hardness,
         pixels: [nx, ny],
         solution,
-        statistical,
     })
 }
 
@@ -201,6 +224,12 @@ pub fn fulfil(mut problem: Problem) -> Result<Problem, ProblemError> {
     scan.correction = Some(AreaCorrection {
         pressure: exact.pressure,
         ratio,
+        exact: ExactContact {
+            modulus: exact.modulus,
+            hardness: exact.hardness,
+            pixels: exact.pixels,
+            solution: exact.solution,
+        },
     });
     Ok(problem)
 }

@@ -69,7 +69,7 @@ pub use robust::{
 };
 pub(crate) use study::DesignKeys;
 pub use study::{Dimensioned, Study};
-pub use topography::{AreaCorrection, ContactModel, ScanSource};
+pub use topography::{AreaCorrection, ContactModel, ExactContact, ScanSource};
 pub use uncertainty::{Event, UncertainInput, Uncertainty};
 
 use crate::model::wear_law::{Activation, ContactStress};

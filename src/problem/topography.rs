@@ -55,12 +55,29 @@ pub struct ScanSource {
 /// What `contact_model = "bem_corrected"` measured on the scan at the file's
 /// operating point (both sides without adhesion); the scene's `real_area_scale` is
 /// `1 / ratio`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct AreaCorrection {
     /// The nominal pressure W / A_n the scan was solved at (Pa).
     pub pressure: f64,
     /// The statistical model's real area over the exact one (finite, > 0).
     pub ratio: f64,
+    /// The exact contact it measured, kept so that a report of the same operating
+    /// point does not solve the scan again.
+    pub exact: ExactContact,
+}
+
+/// The exact contact on a scan at one operating point, without its fields (what
+/// the application layer's solve returns and a report reads).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExactContact {
+    /// E* the scan was solved with (Pa).
+    pub modulus: f64,
+    /// The hardness that capped the pixels (Pa; infinite: none).
+    pub hardness: f64,
+    /// The analysed map's pixels, [nx, ny].
+    pub pixels: [usize; 2],
+    /// The solution, its pressure and gap fields dropped.
+    pub solution: crate::contact::Solution,
 }
 
 impl ScanSource {

@@ -460,7 +460,7 @@ pub(crate) fn bem_corrected_words(scan: &crate::problem::ScanSource) -> Option<S
     if scan.contact_model != crate::problem::ContactModel::BemCorrected {
         return None;
     }
-    let measured = scan.correction?;
+    let measured = scan.correction.as_ref()?;
     Some(format!(
         "contact model: bem_corrected — the statistical real area, and so the wear and friction, × {} (the exact-to-statistical ratio of real areas on the scan at the operating point {}, both without adhesion; held fixed as a study moves the design)",
         sig(1.0 / measured.ratio, 4),

@@ -402,6 +402,32 @@ fn bem_corrected_scales_the_real_area_by_the_measured_ratio() {
     assert!(text("optimize").contains("contact model: bem_corrected"));
 }
 
+/// Under `bem_corrected` the scan is solved once, at load: the report's exact
+/// contact at the same operating point is that solve (a marker planted in it comes
+/// back), and at another load the scan is solved afresh.
+#[test]
+fn bem_corrected_solves_the_scan_once() {
+    let path = scan_problem("contact_model = \"bem_corrected\"", "once");
+    let mut problem = wearopt::app::load(&path).expect("loads");
+    let scan = problem.scan.as_mut().unwrap();
+    let kept = scan.correction.as_mut().expect("measured at load");
+    assert!(kept.exact.solution.iterations > 0);
+    kept.exact.solution.iterations = 987_654;
+    let modulus = wearopt::model::wear::equivalent_modulus(&problem.scene);
+    let scan = problem.scan.as_ref().unwrap();
+    let same = wearopt::app::contact::scan_contact(scan, &problem.scene, modulus).unwrap();
+    assert_eq!(same.solution.iterations, 987_654);
+    assert_eq!(
+        same.area_ratio(),
+        Some(scan.correction.as_ref().unwrap().ratio)
+    );
+    let mut heavier = problem.scene.clone();
+    heavier.load *= 1.5;
+    let other = wearopt::app::contact::scan_contact(scan, &heavier, modulus).unwrap();
+    assert_ne!(other.solution.iterations, 987_654);
+    assert!(other.solution.real_area_fraction > same.solution.real_area_fraction);
+}
+
 #[test]
 fn contact_model_is_refused_where_it_cannot_apply() {
     let bad = scan_problem("contact_model = \"exact\"", "unknown");
