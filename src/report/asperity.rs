@@ -326,6 +326,51 @@ fn stretches(path: &[CurvePoint]) -> Vec<(Branch, Vec<(f64, f64)>)> {
     out
 }
 
+/// The runs of a polyline (interference, load) inside from ≤ δ̂ ≤ to, each cut at
+/// the range's ends where a segment crosses them (the crossing by linear
+/// interpolation, so that a curve starts at `from` itself, not at the first point
+/// past it), and split where the polyline leaves the range and comes back.
+fn clipped(pts: &[(f64, f64)], from: f64, to: f64) -> Vec<Vec<(f64, f64)>> {
+    let inside = |x: f64| x >= from && x <= to;
+    let cross = |a: (f64, f64), b: (f64, f64), x: f64| {
+        let t = (x - a.0) / (b.0 - a.0);
+        (x, a.1 + t * (b.1 - a.1))
+    };
+    let mut runs: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut run: Vec<(f64, f64)> = Vec::new();
+    for (i, &p) in pts.iter().enumerate() {
+        let prev = i.checked_sub(1).map(|j| pts[j]);
+        match (prev, inside(p.0)) {
+            (Some(q), true) if !inside(q.0) => {
+                // Entering: from the end it crossed.
+                let edge = if q.0 < from { from } else { to };
+                run.push(cross(q, p, edge));
+                run.push(p);
+            }
+            (_, true) => run.push(p),
+            (Some(q), false) if inside(q.0) => {
+                // Leaving: to the end it crosses, and the run ends.
+                let edge = if p.0 < from { from } else { to };
+                run.push(cross(q, p, edge));
+                runs.push(std::mem::take(&mut run));
+            }
+            (Some(q), false) => {
+                // Across the whole range between two points outside it.
+                if (q.0 < from && p.0 > to) || (q.0 > to && p.0 < from) {
+                    let (a, b) = if q.0 < p.0 { (from, to) } else { (to, from) };
+                    runs.push(vec![cross(q, p, a), cross(q, p, b)]);
+                }
+            }
+            (None, false) => {}
+        }
+    }
+    if !run.is_empty() {
+        runs.push(run);
+    }
+    runs.retain(|r| !r.is_empty());
+    runs
+}
+
 /// Load against interference: the law's path by branch, its jumps, and the
 /// JKR and DMT curves over the same interferences.
 pub fn plot_svg(doc: &AsperityDocument) -> String {
@@ -344,17 +389,21 @@ pub fn plot_svg(doc: &AsperityDocument) -> String {
         let pts: Vec<(f64, f64)> = other
             .path
             .iter()
-            .filter(|p| within(p.interference))
             .map(|p| (p.interference, p.load))
             .collect();
-        plot = plot.with_series(
-            Series::new(format!("{} (comparison)", law_words(other.law)), pts)
-                .with_marker(Marker::None)
-                .with_color(match other.law {
+        for (i, run) in clipped(&pts, o.from, o.to).into_iter().enumerate() {
+            let name = if i == 0 {
+                format!("{} (comparison)", law_words(other.law))
+            } else {
+                String::new()
+            };
+            plot = plot.with_series(Series::new(name, run).with_marker(Marker::None).with_color(
+                match other.law {
                     CurveLaw::Jkr => "#999999",
                     _ => "#c8a2c8",
-                }),
-        );
+                },
+            ));
+        }
     }
     if let Some(c) = &doc.curve {
         // A Lennard-Jones curve without jumps is single-valued: no branch to name
@@ -364,11 +413,10 @@ pub fn plot_svg(doc: &AsperityDocument) -> String {
         let single_valued =
             c.law == CurveLaw::LennardJones && c.jump_in.is_none() && c.jump_out.is_none();
         let mut named = [false; 3];
-        for (branch, pts) in stretches(&c.path) {
-            let pts: Vec<(f64, f64)> = pts.into_iter().filter(|p| within(p.0)).collect();
-            if pts.is_empty() {
-                continue;
-            }
+        for (branch, pts) in stretches(&c.path)
+            .into_iter()
+            .flat_map(|(b, pts)| clipped(&pts, o.from, o.to).into_iter().map(move |r| (b, r)))
+        {
             let k = if single_valued { 0 } else { branch as usize };
             let name = if named[k] {
                 String::new()
@@ -496,4 +544,34 @@ pub fn render(doc: &AsperityDocument, format: Format) -> Result<String, FormatEr
         Format::Json => json(doc),
         Format::Html => html(doc),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::clipped;
+
+    /// A path clipped to the range starts and ends at the range's ends (the
+    /// crossings interpolated on their segments), splits where it leaves and
+    /// comes back, and keeps a segment that spans the whole range.
+    #[test]
+    fn a_path_is_cut_at_the_range_ends() {
+        let line = [(-2.0, 0.0), (-0.5, 3.0), (0.5, 5.0), (2.0, 8.0)];
+        assert_eq!(
+            clipped(&line, -1.0, 1.0),
+            vec![vec![(-1.0, 2.0), (-0.5, 3.0), (0.5, 5.0), (1.0, 6.0)]]
+        );
+        // Out and back in (an S-curve's fold past `to`).
+        let fold = [(0.0, 0.0), (2.0, 1.0), (0.5, 2.0)];
+        let runs = clipped(&fold, -1.0, 1.0);
+        assert_eq!(runs.len(), 2);
+        assert_eq!(runs[0], vec![(0.0, 0.0), (1.0, 0.5)]);
+        assert_eq!((runs[1][0].0, runs[1][1]), (1.0, (0.5, 2.0)));
+        assert!((runs[1][0].1 - 5.0 / 3.0).abs() < 1e-15);
+        // One segment across the whole range, and nothing inside.
+        assert_eq!(
+            clipped(&[(-3.0, 0.0), (3.0, 6.0)], -1.0, 1.0),
+            vec![vec![(-1.0, 2.0), (1.0, 4.0)]]
+        );
+        assert!(clipped(&[(2.0, 0.0), (3.0, 1.0)], -1.0, 1.0).is_empty());
+    }
 }
