@@ -12,6 +12,42 @@ pub struct GaussRule {
     pub weights: Vec<f64>,
 }
 
+/// The Gauss–Kronrod 7–15 pair (QUADPACK's qk15): the 15 Kronrod nodes on [0, 1)
+/// (each ± but the last, 0). Checked by `kronrod_pair_is_exact` (`model/work.rs`):
+/// degree 22 and 13. The adaptive rules of `work.rs`, `accuracy/reference.rs` and the
+/// stress-assisted law's tests share the pair.
+#[allow(clippy::excessive_precision)] // QUADPACK's published digits
+pub const KRONROD_NODES: [f64; 8] = [
+    0.991_455_371_120_812_639_206_854_697_526_329,
+    0.949_107_912_342_758_524_526_189_684_047_851,
+    0.864_864_423_359_769_072_789_712_788_640_926,
+    0.741_531_185_599_394_439_863_864_773_280_788,
+    0.586_087_235_467_691_130_294_144_845_693_013,
+    0.405_845_151_377_397_166_906_606_412_076_961,
+    0.207_784_955_007_898_467_600_689_403_773_245,
+    0.0,
+];
+/// The 15-point Kronrod weights of [`KRONROD_NODES`].
+#[allow(clippy::excessive_precision)] // QUADPACK's published digits
+pub const KRONROD_WEIGHTS: [f64; 8] = [
+    0.022_935_322_010_529_224_963_732_008_058_970,
+    0.063_092_092_629_978_553_290_700_663_189_204,
+    0.104_790_010_322_250_183_839_876_322_541_518,
+    0.140_653_259_715_525_918_745_189_590_510_238,
+    0.169_004_726_639_267_902_826_583_426_598_550,
+    0.190_350_578_064_785_409_913_256_402_421_014,
+    0.204_432_940_075_298_892_414_161_999_234_649,
+    0.209_482_141_084_727_828_012_999_174_891_714,
+];
+/// The 7-point Gauss weights of the odd-indexed [`KRONROD_NODES`] (1, 3, 5, 7).
+#[allow(clippy::excessive_precision)] // QUADPACK's published digits
+pub const KRONROD_GAUSS_WEIGHTS: [f64; 4] = [
+    0.129_484_966_168_869_693_270_611_432_679_082,
+    0.279_705_391_489_276_667_901_467_771_423_780,
+    0.381_830_050_505_118_944_950_369_775_488_975,
+    0.417_959_183_673_469_387_755_102_040_816_327,
+];
+
 /// The orders a [`crate::model::Quadrature`] may ask for.
 pub const ORDERS: [usize; 8] = [4, 6, 8, 12, 16, 20, 24, 32];
 

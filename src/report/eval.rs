@@ -38,10 +38,9 @@ fn wear_law_lines(sc: &Scene, ev: &Evaluation) -> Vec<String> {
         format!("the stress that assists: {stress}"),
     ];
     if let Some(k) = w.effective_wear_coefficient {
-        // Below a double's range (a cold or slow contact): k_eff = rate / A_r in
-        // logarithms where the wearing area is the real area.
-        let log10_k = ev.log10_wear_rate - ev.log10_real_area;
-        let value = if k == 0.0 && sc.wear_area == WearArea::Total && log10_k.is_finite() {
+        // Below a double's range (a cold or slow contact): k_eff in logarithms.
+        let log10_k = w.log10_effective_wear_coefficient.filter(|_| k == 0.0);
+        let value = if let Some(log10_k) = log10_k {
             format!(
                 "10^{} (below the smallest number a double holds)",
                 sig(log10_k, 5)

@@ -595,5 +595,16 @@ fn a_cold_stress_assisted_contact_is_worded_by_its_law() {
         (got - want).abs() < 0.15,
         "{got} vs {want}: {k} / {rate} / {area}"
     );
+    // The JSON carries k_eff's logarithm beside the 0 it underflows to.
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "eval",
+        path.to_str().unwrap(),
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["effective_wear_coefficient"], 0.0);
+    let log10_k = json["log10_effective_wear_coefficient"].as_f64().unwrap();
+    assert!((log10_k - want).abs() < 0.15, "{log10_k} vs {want}");
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -214,6 +214,9 @@ fn normal_stress_raises_the_rate_above_the_stress_free_one() {
     let d = ev.wear_details.unwrap();
     let k = d.effective_wear_coefficient.unwrap();
     assert!(k > k_eff(&s, 0.0) && k < 0.3536, "{k}");
+    // Its logarithm, carried for the rates below a double's range, is its own.
+    let log10_k = d.log10_effective_wear_coefficient.unwrap();
+    assert!((log10_k - k.log10()).abs() < 1e-12, "{log10_k} {k}");
     // The mean stress is the contacts' load over their area (Pa): of the order of
     // the mean real pressure, and the rate is at least e^{b σ_mean} k_eff(0)
     // (Jensen: the mean of e^{bσ} is above e^{b mean σ}, unsaturated).

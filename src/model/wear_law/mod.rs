@@ -29,6 +29,10 @@ pub struct WearDetails {
     /// k_eff = wear rate / wearing area (A_r, or A_rp under `wear_area =
     /// "plastic"`); None without a wearing area.
     pub effective_wear_coefficient: Option<f64>,
+    /// log10 of k_eff, finite where k_eff itself underflows to 0 (a cold or
+    /// slow contact: the rate is carried in logarithms, docs/model.md §12);
+    /// None where k_eff is None or there is no wear.
+    pub log10_effective_wear_coefficient: Option<f64>,
     /// The area-weighted mean of the stress that assists (Pa); None without contact.
     pub mean_contact_stress: Option<f64>,
     /// The share of the rate from summits with Γa₀/v > 1; None without wear.

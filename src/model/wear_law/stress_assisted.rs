@@ -106,6 +106,9 @@ impl WearLaw for StressAssisted {
                 wear_law: WearModel::StressAssisted,
                 effective_wear_coefficient: has_area
                     .then(|| prefactor * parts.rate.ratio(input.wearing_area)),
+                log10_effective_wear_coefficient: (has_area && parts.rate.mantissa > 0.0).then(
+                    || prefactor.log10() + parts.rate.log10_abs() - input.wearing_area.log10_abs(),
+                ),
                 mean_contact_stress,
                 saturated_fraction: (parts.rate.mantissa > 0.0)
                     .then(|| parts.saturated.ratio(parts.rate)),
@@ -1178,34 +1181,9 @@ mod adaptive_reference {
         }
     }
 
-    /// Gauss–Kronrod 7–15: the Kronrod nodes on [0, 1] (the symmetric half) and weights.
-    const XGK: [f64; 8] = [
-        0.991_455_371_120_812_6,
-        0.949_107_912_342_758_5,
-        0.864_864_423_359_769_1,
-        0.741_531_185_599_394_4,
-        0.586_087_235_467_691_1,
-        0.405_845_151_377_397_2,
-        0.207_784_955_007_898_5,
-        0.0,
-    ];
-    const WGK: [f64; 8] = [
-        0.022_935_322_010_529_22,
-        0.063_092_092_629_978_55,
-        0.104_790_010_322_250_2,
-        0.140_653_259_715_525_9,
-        0.169_004_726_639_267_9,
-        0.190_350_578_064_785_4,
-        0.204_432_940_075_298_9,
-        0.209_482_141_084_727_8,
-    ];
-    /// The Gauss weights of the 7 nodes XGK[1], XGK[3], XGK[5], XGK[7].
-    const WG: [f64; 4] = [
-        0.129_484_966_168_869_7,
-        0.279_705_391_489_276_7,
-        0.381_830_050_505_118_9,
-        0.417_959_183_673_469_4,
-    ];
+    use crate::model::gauss::{
+        KRONROD_GAUSS_WEIGHTS as WG, KRONROD_NODES as XGK, KRONROD_WEIGHTS as WGK,
+    };
 
     /// One panel: the Kronrod estimates of the three integrands and the error of the first.
     fn kronrod(f: &impl Fn(f64) -> [f64; 3], a: f64, b: f64) -> ([f64; 3], [f64; 3]) {
