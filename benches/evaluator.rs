@@ -216,7 +216,9 @@ fn nondimensional_lennard_jones(c: &mut Criterion) {
         (
             "one curve mu=0.358",
             wearopt::model::lennard_jones::spacing(
-                wearopt::model::lennard_jones::table::curves()[76].tabor,
+                wearopt::model::lennard_jones::table::curves()
+                    [wearopt::model::lennard_jones::table::AT_HUNDREDTH + 76]
+                    .tabor,
             ) / ell,
         ),
     ] {

@@ -9,7 +9,7 @@
 
 use wearopt::model::asperity_curve::{lennard_jones_loading, CurveError};
 use wearopt::model::lennard_jones::table::{
-    approach_gaps, contact_breaks, contact_nodes, write_block, Header,
+    approach_gaps, breaks_scale, contact_breaks, contact_nodes, write_block, Header,
 };
 use wearopt::model::lennard_jones::{spacing, SphereSettings};
 
@@ -26,10 +26,13 @@ use wearopt::model::lennard_jones::{spacing, SphereSettings};
 /// within 1e-6 of the solver's (`tests/all/lennard_jones_rough.rs`, against
 /// curves between them; 3.7e-5 from four on half the curves). Above 22.4
 /// the law's closed-form limit curves continue (`table::limit_curve`).
+/// Below 0.01 the same geometric steps go on for [`BELOW`] more, to
+/// μ = 9.91e-5: there the DMT stand-in takes over, beyond any physical pair
+/// (μ = 1e-4 needs γ = 0.03 mJ/m² on 10 nm diamond summits).
 fn grid() -> Vec<f64> {
     let (lo, hi, steps) = (0.01f64, 5.0f64, 132);
     let (top, top_steps) = (5.0 * 20f64.sqrt(), 12);
-    (0..=steps)
+    (-BELOW..=steps)
         .map(|i| {
             if i == 91 {
                 FIRST_S_SHAPED
@@ -40,6 +43,9 @@ fn grid() -> Vec<f64> {
         .chain((1..=top_steps).map(|i| hi * (top / hi).powf(i as f64 / top_steps as f64)))
         .collect()
 }
+
+/// The grid's steps below μ = 0.01 (two decades of 49).
+const BELOW: i32 = 98;
 
 /// The grid's first S-shaped curve, standing in for step 91.
 const FIRST_S_SHAPED: f64 = 0.7275;
@@ -117,7 +123,7 @@ fn main() {
             lennard_jones_loading(
                 mu,
                 approach_gaps,
-                |switch| contact_nodes(&contact_breaks(switch, to)),
+                |switch| contact_nodes(&contact_breaks(switch, to, breaks_scale(mu))),
                 to,
                 SphereSettings {
                     refinement: refinement_of(mu, refinement),
@@ -132,7 +138,7 @@ fn main() {
             .iter()
             .map(|p| p.interference / spacing(mu) - 1.0 + p.apex_gap)
             .collect();
-        let breaks = contact_breaks(samples.switch, to);
+        let breaks = contact_breaks(samples.switch, to, breaks_scale(mu));
         let column = |f: fn(&wearopt::model::lennard_jones::SpherePoint) -> f64| -> Vec<f64> {
             samples.contact.iter().map(f).collect()
         };

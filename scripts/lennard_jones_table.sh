@@ -4,15 +4,17 @@
 # extrapolated from three nested meshes to the converged solution), and checks
 # the result against the converged solver between its nodes.
 #
-#   scripts/lennard_jones_table.sh            # the grid: μ = 0.01 … 5, 132 steps (49 per decade),
+#   scripts/lennard_jones_table.sh            # the grid: μ = 9.91e-5 … 5, 230 steps (49 per decade),
 #                                             # then to 22.4 in 12 (18.4 per decade)
 #   scripts/lennard_jones_table.sh check      # only the check of the committed table
 #   scripts/lennard_jones_table.sh check 0.01 1.95   # of the curves at those μ
 #   scripts/lennard_jones_table.sh between    # tests/data/lennard_jones_between.txt
 #   scripts/lennard_jones_table.sh far        # tests/data/lennard_jones_far.txt
+#   scripts/lennard_jones_table.sh far-below  # tests/data/lennard_jones_far_below.txt
+#   scripts/lennard_jones_table.sh between-below  # tests/data/lennard_jones_between_below.txt
 #   scripts/lennard_jones_table.sh cusp       # tests/data/lennard_jones_above_cusp.txt
 #
-# Takes about three and a half hours on one core to write (release build; 17–103 s a
+# Takes about four and a half hours on one core to write (release build; 17–103 s a
 # curve up to μ = 5, 4–23 minutes above); the check took two hours for the
 # first table's 34 curves.
 # `between` writes seventeen curves the table does not hold, at the geometric
@@ -25,8 +27,10 @@
 # parts two to eight times as far as the table's (to δ̂ = 1808, 880 and 400),
 # which the same tests measure the table's tail against (about 40 minutes, 8 of them at
 # μ = 4.14, 18 at 5.66). The contact
-# parts reach δ̂ = 50, or 16 ẑ0 where that is further (μ < 0.18: `GRID=0..62`
-# in the environment writes only those 62 curves, 30 minutes on two processes).
+# parts reach δ̂ = 50, or 16 ẑ0 where that is further (μ < 0.18: `GRID=0..160`
+# in the environment writes only those 160 curves; `GRID=0..98` the 98 below
+# μ = 0.01, written on 2026-12-03 in 40 minutes on two processes, GRID=0..49 and
+# GRID=49..98, 40–55 s a curve).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --example lennard_jones_table
@@ -79,6 +83,32 @@ if [[ "${1:-}" == far ]]; then
         REACH=400 "$bin" 1 0.10527787805206623 0.9180942678743859 4.141741928025571 5.664734861651771 | grep -v '^#'
     } > tests/data/lennard_jones_far.txt.new
     mv tests/data/lennard_jones_far.txt.new tests/data/lennard_jones_far.txt
+    exit 0
+fi
+if [[ "${1:-}" == between-below ]]; then
+    # Two curves at geometric midpoints below μ = 0.01, between the grid's
+    # steps −88 and −87 (μ = 1.63e-4) and −58 and −57 (6.67e-4): what the
+    # interpolation in μ there is measured against (about 2 minutes).
+    mus=$(python3 -c 'print(" ".join(repr(0.01 * 500 ** (i / 132)) for i in (-87.5, -57.5)))')
+    {
+        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 1, extrapolated, at two midpoints of the table's grid below μ = 0.01:"
+        echo "# written by scripts/lennard_jones_table.sh between-below; read by tests/all/lennard_jones_rough.rs"
+        # shellcheck disable=SC2086
+        "$bin" 1 $mus | grep -v '^#'
+    } > tests/data/lennard_jones_between_below.txt.new
+    mv tests/data/lennard_jones_between_below.txt.new tests/data/lennard_jones_between_below.txt
+    exit 0
+fi
+if [[ "${1:-}" == far-below ]]; then
+    # The table's lowest curve (μ = 9.91e-5) with its contact part twice as
+    # far, to δ̂ = 182 400 (32 ẑ0): what the tail there is measured against.
+    mu=$(python3 -c 'print(repr(0.01 * 500 ** (-98 / 132)))')
+    {
+        echo "# Lennard-Jones loading curve (docs/model.md §11), refinement 1, extrapolated, the table's lowest (μ = 9.91e-5) with its contact part to δ̂ = 182 400 (32 ẑ0):"
+        echo "# written by scripts/lennard_jones_table.sh far-below; read by tests/all/lennard_jones_rough.rs"
+        REACH=182400 "$bin" 1 "$mu" | grep -v '^#'
+    } > tests/data/lennard_jones_far_below.txt.new
+    mv tests/data/lennard_jones_far_below.txt.new tests/data/lennard_jones_far_below.txt
     exit 0
 fi
 if [[ "${1:-}" != check ]]; then

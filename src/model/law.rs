@@ -13,7 +13,7 @@
 //! * [`AsperityLaw::LennardJones`] — docs/model.md §11 (`lennard_jones/`): the
 //!   self-consistent sphere with a Lennard-Jones surface force, from its loading
 //!   table (solved to μ = 22.4, its closed-form limit curves above), valid for
-//!   every Tabor parameter; outside them (μ < 0.01, μ > 3.58e6) the closed-form
+//!   every Tabor parameter; outside them (μ < 9.91e-5, μ > 3.58e6) the closed-form
 //!   laws stand in.
 //!
 //! Each law's module implements `asperity_law::Law`: its entry in the registry (names,

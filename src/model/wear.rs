@@ -220,7 +220,7 @@ pub struct Evaluation {
     /// Lennard-Jones law's numbers.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub other_model: Option<OtherModel>,
-    /// Under the Lennard-Jones law outside its curves (μ < 0.01 or μ > 3.58e6): the
+    /// Under the Lennard-Jones law outside its curves (μ < 9.91e-5 or μ > 3.58e6): the
     /// closed-form limit whose numbers stand in (`dmt` or `jkr`); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stand_in_model: Option<AdhesionModel>,

@@ -9,12 +9,24 @@ use serde_json::{json, Value};
 
 use crate::accuracy::{Quantity, Row, RowLaw, WorkPrecision};
 use crate::model::lennard_jones::table::{
-    INTERPOLATION_ERROR, INTERPOLATION_ERROR_ABOVE_CUSP, INTERPOLATION_ERROR_SPARSE, LIMIT_CHECK,
-    LIMIT_ERROR, SOLVER_ERROR, TABLE_ERROR, TAIL_ERROR, TAIL_SCALES,
+    INTERPOLATION_ERROR, INTERPOLATION_ERROR_ABOVE_CUSP, INTERPOLATION_ERROR_BELOW,
+    INTERPOLATION_ERROR_SPARSE, INTERPOLATION_RANGES_BELOW, LIMIT_CHECK, LIMIT_ERROR, SOLVER_ERROR,
+    TABLE_ERROR, TAIL_ERROR, TAIL_ERROR_BELOW, TAIL_RANGES_BELOW, TAIL_SCALES,
 };
 use crate::model::AttractionKind;
 
 use super::number;
+
+/// `{"at_z0_R": error}` for each range z0 = Z0/σ and its error.
+fn by_range(ranges: &[f64], errors: &[f64]) -> Value {
+    Value::Object(
+        ranges
+            .iter()
+            .zip(errors)
+            .map(|(z0, e)| (format!("at_z0_{z0}"), json!(e)))
+            .collect(),
+    )
+}
 
 /// The formats `wearopt accuracy` writes (the first is the default).
 pub const FORMATS: &[super::Format] =
@@ -116,6 +128,11 @@ pub fn json(wp: &WorkPrecision) -> String {
                     Value::Object(m)
                 })
                 .collect::<Vec<_>>(),
+            "interpolation_in_tabor_below_hundredth": by_range(&INTERPOLATION_RANGES_BELOW, &INTERPOLATION_ERROR_BELOW),
+            "tail_at_lowest": {
+                "tabor": TAIL_ERROR_BELOW[0],
+                "by_range": by_range(&TAIL_RANGES_BELOW, &TAIL_ERROR_BELOW[1..]),
+            },
         },
         "scenes": wp.scenes,
         "rows": rows,
@@ -201,6 +218,26 @@ pub fn text(wp: &WorkPrecision) -> String {
                     .collect::<Vec<_>>()
                     .join(", ")
                     + " (ℓ = 30 / 100 / 300 / 1000)"
+            );
+            let listed = |ranges: &[f64], errors: &[f64]| {
+                ranges
+                    .iter()
+                    .zip(errors)
+                    .map(|(z0, &e)| {
+                        if e <= 1e-12 {
+                            format!("≤ 1e-12 at z0 = {z0}")
+                        } else {
+                            format!("{e:.1e} at z0 = {z0}")
+                        }
+                    })
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            let _ = writeln!(
+                out,
+                "below μ = 0.01 (to the table's lowest curve, μ = {lo}, where ℓ = σ/ε is large), by the range z0 = Z0/σ: P̄ interpolated in μ within {} of the solver's own curve at the midpoints; the tail at the lowest curve {}",
+                listed(&INTERPOLATION_RANGES_BELOW, &INTERPOLATION_ERROR_BELOW),
+                listed(&TAIL_RANGES_BELOW, &TAIL_ERROR_BELOW[1..]),
             );
             let solved =
                 crate::units::format_number(crate::model::lennard_jones::table::solved_range().1);

@@ -228,8 +228,8 @@ pub fn note(n: &Note) -> String {
                     format!("below {lo}"),
                     "DMT's with van der Waals attraction (one sphere's small-μ limit)",
                     format!(
-                        "whose single-asperity pull-off differs from the sphere's by {:.2} % at the table's end, but which is not the rough surface's small-μ limit: its far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π) and its contact begins at the apex gap Z0, where the sphere's squeezed gap takes up about Z0 of interference. At the switch the rough surface's real area lies up to {:.0} % and its pull-off up to {:.0} % below the law's (measured for Z0/σ ≤ 1.7, more beyond; docs/model.md §11): treat these numbers as estimates",
-                        100.0 * pull_off_error,
+                        "whose single-asperity pull-off differs from the sphere's by {} % at the table's end, but which is not the rough surface's small-μ limit: its far attraction is 3/4 of the sphere's (Hamaker constant 12π Z0²γ against 16π) and its contact begins at the apex gap Z0, where the sphere's squeezed gap takes up about Z0 of interference. At the switch the rough surface's real area lies up to {:.0} % and its pull-off up to {:.0} % below the law's (measured for Z0/σ ≤ 1.7, more beyond; docs/model.md §11): treat these numbers as estimates",
+                        sig_exp(100.0 * pull_off_error, 2),
                         100.0 * crate::model::lennard_jones::rough::STAND_IN_ROUGH_JUMP.0,
                         100.0 * crate::model::lennard_jones::rough::STAND_IN_ROUGH_JUMP.1,
                     ),

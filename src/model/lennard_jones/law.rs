@@ -1,6 +1,6 @@
 //! The Lennard-Jones law's entry in the registry (docs/model.md §11): the
 //! self-consistent sphere from its loading table, valid for every Tabor
-//! parameter: the solver's curves from μ = 0.01 to 22.4, then closed-form
+//! parameter: the solver's curves from μ = 9.91e-5 to 22.4, then closed-form
 //! limit curves (JKR's contact branch from the sphere's jump in) to 3.6e6;
 //! outside them the closed-form laws stand in, JKR above and DMT with van der
 //! Waals attraction below.

@@ -123,14 +123,16 @@ pub fn tabor(c_0: f64, z0: f64) -> f64 {
 }
 
 /// How far below the law's the stand-in's rough-surface numbers lie at the
-/// table's lower end (μ = 0.01): (real area, pull-off), the worst relative
+/// table's lower end (μ = 9.91e-5): (real area, pull-off), the worst relative
 /// falls over the grid of `tests/all/lennard_jones_law.rs`
 /// (`stand_in_jump_campaign`: Z0/σ from 0.07 to 1.7), at σ = 0.3 nm, Z0 = 0.5 nm,
 /// R = 5 µm and a light load. DMT with van der Waals attraction is one
 /// summit's small-μ limit (its pull-off, [`stand_in_pull_off_error`]) but not
-/// the rough surface's: its contact begins at the apex gap Z0, where the
-/// sphere's squeezed gap takes up about Z0 of interference (docs/model.md §11).
-pub const STAND_IN_ROUGH_JUMP: (f64, f64) = (0.841, 0.468);
+/// the rough surface's at any μ: its contact begins at the apex gap Z0, where
+/// the sphere's squeezed gap takes up about Z0 of interference (the crossover
+/// from the rigid sphere to Hertz's narrows only as μ^{3/19}; docs/model.md
+/// §11).
+pub const STAND_IN_ROUGH_JUMP: (f64, f64) = (0.9589, 0.5282);
 
 /// The relative error of the closed-form law's pull-off where it takes over
 /// from the law's curves: below the table one summit's (Bradley's 2 against
@@ -1773,6 +1775,7 @@ fn inner_pressure_slope(curve: &Curve, d: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::lennard_jones::table::AT_HUNDREDTH;
 
     /// The summit loads taken a panel at a time, and with their slopes four
     /// curves abreast, are the one-at-a-time sums bit for bit: over μ from the
@@ -1820,7 +1823,7 @@ mod tests {
     #[test]
     fn clusters_sum_what_their_nodes_sum() {
         let mut clustered = 0;
-        for index in (32..40).step_by(2) {
+        for index in (AT_HUNDREDTH + 32..AT_HUNDREDTH + 40).step_by(2) {
             let layout = layout(index, 15);
             for share in [&layout.noncontact, &layout.contact] {
                 clustered += share.clusters.len();
@@ -1862,7 +1865,7 @@ mod tests {
     /// stretches and separations.
     #[test]
     fn clusters_sum_the_tail_as_their_nodes() {
-        for index in (32..40).step_by(2) {
+        for index in (AT_HUNDREDTH + 32..AT_HUNDREDTH + 40).step_by(2) {
             let layout = layout(index, 15);
             for share in [&layout.noncontact, &layout.contact] {
                 let n = share.all.len();
@@ -1897,12 +1900,13 @@ mod tests {
     /// Δ', [`Shared`]) against the curve's own (Gauss in τ, as the windowed
     /// quadrature lays them out from the same lower end) over the same
     /// stretch of summits, at separations across the grid's: the same sums
-    /// to 1e-13 of the whole non-contact share's size, on curves across the table (both sides of the
+    /// to 1e-13 of the whole non-contact share's size (times √(0.01/μ) below
+    /// μ = 0.01), on curves across the table (both sides of the
     /// cusp) and scales from 0.6 to 300.
     #[test]
     fn the_shared_nodes_sum_what_each_curves_own_sum() {
         let mut compared = 0;
-        for index in [0, 40, 76, 90, 91, 92, 132] {
+        for index in [0, 49, 98, 138, 174, 188, 189, 190, 230] {
             let curve = &curves()[index];
             for level in [-3, 0, 12, 33] {
                 let s = level_scale(level);
@@ -1932,9 +1936,13 @@ mod tests {
                     let (a, shared_size) = sum(&shared.nodes.interference, loads);
                     let (b, _) = sum(&own.interference, &own.load);
                     let size = shared_size + sum(&all.interference, &all.load).1;
+                    // Below μ = 0.01 the rounding of δ̂ = ẑ0 (1 − G + e) near
+                    // the switch grows with ẑ0 (measured: 1.7e-13 at μ = 1e-4,
+                    // 2.7e-14 at 1e-3, below 1e-14 from 0.01 up).
+                    let tol = 1e-13 * (0.01 / curve.tabor).max(1.0).sqrt();
                     for k in 0..3 {
                         assert!(
-                            (a[k] - b[k]).abs() <= 1e-13 * size + 1e-300,
+                            (a[k] - b[k]).abs() <= tol * size + 1e-300,
                             "curve {index} s {s} h {h}: {a:?} vs {b:?}"
                         );
                     }
@@ -1995,7 +2003,7 @@ mod tests {
     /// the table and scales from 0.01 to 300.
     #[test]
     fn the_far_field_is_converged() {
-        for index in [0, 32, 64, 76, 91, 104, 132] {
+        for index in [0, 49, 98, 130, 162, 174, 189, 202, 230] {
             for s in [0.01, 1.0, 8.0, 300.0] {
                 let a = far_load(&curves()[index], s, -30.0, FAR_GROWTH);
                 let b = far_load(&curves()[index], s, -30.0, 1.05);
@@ -2015,7 +2023,7 @@ mod tests {
     /// the tail: the same root to 1e-12.
     #[test]
     fn the_critical_interference_is_the_root_bisection_finds() {
-        for index in [0, 32, 64, 76, 91, 104, 132] {
+        for index in [0, 49, 98, 130, 162, 174, 189, 202, 230] {
             let curve = &curves()[index];
             let ratio = |d: f64| inner_pressure(curve, d);
             let start = curve.switch.max(0.0);

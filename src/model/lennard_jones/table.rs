@@ -1029,6 +1029,18 @@ pub const SOLVER_ERROR: f64 = 1.8e-6;
 /// `the_interpolation_in_tabor_against_curves_between_the_tables` (every
 /// curve: `between_the_tables_campaign`). How it came down: docs/history.md.
 pub const INTERPOLATION_ERROR: (f64, f64) = (2.5e-7, 3.2e-7);
+/// As [`INTERPOLATION_ERROR`] below μ = 0.01, where ẑ0 is large and the
+/// scenes' ℓ = ẑ0/z0 with it: P̄ between the table's curves against P̄ of
+/// the solver's own curve at the midpoints μ = 1.63e-4 and 6.67e-4
+/// (`tests/data/lennard_jones_between_below.txt`), relative to ∫|p| φ̄, at
+/// each range z0 = Z0/σ of [`INTERPOLATION_RANGES_BELOW`]: within
+/// [`INTERPOLATION_ERROR`] where z0 ≤ 0.3 (σ ≥ 1 nm at Z0 = 0.3 nm), more on
+/// atomically smooth surfaces (z0 = 1 and 3), where the cubic in 1/μ follows
+/// the integrals less well at these large ℓ (1.1e3 … 5.7e5). Asserted by the
+/// test `below_a_hundredth_the_interpolation_is_what_the_reports_say`.
+pub const INTERPOLATION_ERROR_BELOW: [f64; 5] = [9.2e-5, 2.9e-6, 3.7e-8, 7.0e-9, 1.5e-9];
+/// The ranges z0 = Z0/σ of [`INTERPOLATION_ERROR_BELOW`].
+pub const INTERPOLATION_RANGES_BELOW: [f64; 5] = [3.0, 1.0, 0.3, 0.1, 0.03];
 /// Just above the cusp, between it and the first S-shaped curve (0.7275),
 /// as [`INTERPOLATION_ERROR`]: (μ, P̄'s error there), the largest of five
 /// curves the solver wrote (μ = 0.70 at refinement 3, 0.705, 0.71, 0.715,
@@ -1083,6 +1095,14 @@ pub const TAIL_ERROR: [[f64; 5]; 8] = [
     [4.14, 2.2e-9, 1.7e-8, 1.7e-8, 1.5e-8],
     [5.66, 2.3e-9, 1.65e-8, 1.65e-8, 1.5e-8],
 ];
+/// The tail's error, as [`TAIL_ERROR`]'s, at the table's lowest curve (μ =
+/// 9.91e-5, reach 16 ẑ0 = 91 151, against the curve written to twice that:
+/// `scripts/lennard_jones_table.sh far-below`): [μ, then at each range z0 =
+/// Z0/σ of [`TAIL_RANGES_BELOW`]] (ℓ = ẑ0/z0 from 1.9e4 to 5.7e5). Asserted
+/// by the test `the_tail_at_the_lowest_curve_is_what_the_reports_say`.
+pub const TAIL_ERROR_BELOW: [f64; 5] = [9.91e-5, 1e-12, 2.9e-9, 3.5e-9, 2.6e-9];
+/// The ranges z0 = Z0/σ of [`TAIL_ERROR_BELOW`]'s columns.
+pub const TAIL_RANGES_BELOW: [f64; 4] = [0.3, 0.1, 0.03, 0.01];
 /// The ℓ = σ/ε of [`TAIL_ERROR`]'s columns.
 pub const TAIL_SCALES: [f64; 4] = [30.0, 100.0, 300.0, 1000.0];
 
@@ -1116,25 +1136,36 @@ pub const STEADY_FROM: f64 = 50.0;
 /// [`WIDEST_PANEL`], doubling again once past [`STEADY_FROM`] (where a
 /// curve reaches further: each panel's centre lies further from the curve's
 /// branch point, C_eff ≤ 30, than the panel is wide); the last panel
-/// between one and two steps.
-pub fn contact_breaks(switch: f64, max_interference: f64) -> Vec<f64> {
+/// between one and two steps. [`breaks_scale`] stretches the widest panel and
+/// the steady point with the attraction's range below μ = 0.01.
+pub fn contact_breaks(switch: f64, max_interference: f64, scale: f64) -> Vec<f64> {
+    let (widest, steady) = (WIDEST_PANEL * scale, STEADY_FROM * scale);
     let mut breaks = vec![switch];
     let mut width = FIRST_PANEL;
-    while width <= WIDEST_PANEL && switch + 2.0 * width < max_interference {
+    while width <= widest && switch + 2.0 * width < max_interference {
         breaks.push(switch + width);
         width *= 2.0;
     }
     let mut at = breaks[breaks.len() - 1];
-    let mut width = WIDEST_PANEL;
+    let mut width = widest;
     while at + 2.0 * width < max_interference {
         at += width;
         breaks.push(at);
-        if at >= STEADY_FROM {
+        if at >= steady {
             width *= 2.0;
         }
     }
     breaks.push(max_interference);
     breaks
+}
+
+/// The factor [`contact_breaks`] stretches its widest panel and steady point
+/// by for a curve at μ: 1 from μ = 0.01 up, ẑ0(μ)/ẑ0(0.01) = 0.01/μ below.
+/// There the repulsion sets in at δ̂ ≈ ẑ0, beyond 50, and the rigid sphere's
+/// load, steep as (1 − δ̂/ẑ0)⁻⁸, bends over a share of ẑ0: the panels keep
+/// the share of ẑ0 that resolves it at μ = 0.01.
+pub fn breaks_scale(tabor: f64) -> f64 {
+    (0.01 / tabor).max(1.0)
 }
 
 /// The interferences the contact part is sampled at: every panel's Lobatto
@@ -1366,7 +1397,7 @@ impl Curve {
         let gaps = approach_gaps(self.end_gap);
         let load: Vec<f64> = gaps.iter().map(|g| bradley(g.powf(-0.5)).0).collect();
         let opening = vec![0.0; gaps.len()];
-        let breaks = contact_breaks(self.switch, STEADY_FROM);
+        let breaks = contact_breaks(self.switch, STEADY_FROM, 1.0);
         let (contact, radius): (Vec<f64>, Vec<f64>) =
             contact_nodes(&breaks).into_iter().map(jkr_sphere).unzip();
         // JKR's surface force acts inside the contact only.
@@ -1534,6 +1565,10 @@ pub fn tabor_range() -> (f64, f64) {
     let c = curves();
     (c[0].tabor, c[c.len() - 1].tabor)
 }
+
+/// The index of the table's curve at μ = 0.01, where the grid of 49 curves a
+/// decade began until 2026-12-03; the 98 below it reach μ = 9.91e-5.
+pub const AT_HUNDREDTH: usize = 98;
 
 /// The tabulated curve `index`'s [`Curve::pull_off`] (found once).
 pub fn pull_off_of(index: usize) -> (f64, f64) {
@@ -1943,7 +1978,7 @@ mod tests {
 
     #[test]
     fn contact_breaks_double_away_from_the_switch() {
-        let b = contact_breaks(-0.5, 10.0);
+        let b = contact_breaks(-0.5, 10.0, 1.0);
         assert_eq!(b[0], -0.5);
         assert_eq!(*b.last().unwrap(), 10.0);
         for w in b.windows(3).take(b.len() - 3) {
@@ -1951,7 +1986,7 @@ mod tests {
         }
         assert_eq!(contact_nodes(&b).len(), (b.len() - 1) * PANEL_DEGREE + 1);
         // Far from the switch the panels stop growing at WIDEST_PANEL.
-        let b = contact_breaks(-0.1, 50.0);
+        let b = contact_breaks(-0.1, 50.0, 1.0);
         let widths: Vec<f64> = b.windows(2).map(|w| w[1] - w[0]).collect();
         assert!(widths.iter().all(|&w| w < 2.0 * WIDEST_PANEL), "{widths:?}");
         assert!(
