@@ -279,8 +279,8 @@ fn left_out_error(index: usize, c_0: f64, z0: f64) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Below μ = 0.01 (the curves written on 2026-12-03, down to 9.91e-5) the
-/// same: a node left out and interpolated to from the others (twice the
+/// Below μ = 0.01 (the curves written on 2026-12-03, down to 9.91e-5, six
+/// to a stencil) the same: a node left out and interpolated to from the others (twice the
 /// table's spacing), P̄ within `LOW_LEFT_OUT` of its larger share where the
 /// range z0 = Z0/σ is 3, 0.3 and 0.03 (ℓ = ẑ0/z0 from 190 to 2e6), at μ =
 /// 1.6e-4, 6.4e-4, 2.6e-3 and next to 0.01 (the stencil across the old end).
@@ -306,9 +306,10 @@ fn below_a_hundredth_the_interpolation_holds_where_a_node_is_left_out() {
 }
 
 /// What [`below_a_hundredth_the_interpolation_holds_where_a_node_is_left_out`]
-/// holds the interpolation to at z0 = 3, 0.3 and 0.03 (measured 9.9e-4,
-/// 1.7e-7, 8.9e-9; at the table's own spacing `INTERPOLATION_ERROR_BELOW`).
-const LOW_LEFT_OUT: [f64; 3] = [1.2e-3, 2e-7, 1e-8];
+/// holds the interpolation to at z0 = 3, 0.3 and 0.03 (six curves: measured
+/// 2.6e-5, 1.3e-9, 7.3e-11; from four, 9.9e-4, 1.7e-7, 8.9e-9; at the table's
+/// own spacing `INTERPOLATION_ERROR_BELOW`).
+const LOW_LEFT_OUT: [f64; 3] = [3e-5, 2e-9, 1e-10];
 
 /// The per-scene grid (the same panels laid out from the grid's ends, built
 /// once) against the quadrature laid out from each h's window: both
@@ -774,7 +775,7 @@ fn below_a_hundredth_the_interpolation_is_what_the_reports_say() {
                 let c = wearopt::model::Coefficients::new(6f64.sqrt() * ell.powf(-0.75), c_h);
                 let law = RoughLaw::new(c.c_0, c.c_h, z0).expect("inside the table");
                 assert!((law.tabor / curve.tabor - 1.0).abs() < 1e-12);
-                assert_eq!(law.curves().count(), 4);
+                assert_eq!(law.curves().count(), 6);
                 let dc = critical_interference(curve, c_h * ell.sqrt()) / ell;
                 for h in [-1.0, 0.5, 2.0, 4.0] {
                     let (served, _) = reference_load_of(law.curves(), ell, c, h);
@@ -834,6 +835,34 @@ fn the_tail_at_the_lowest_curve_is_what_the_reports_say() {
             stated <= 1e-12 || worst > stated / 10.0,
             "z0 = {z0}: {worst:e} ≪ {stated:e}"
         );
+    }
+}
+
+/// At μ = 0.01 the stencil changes from six curves (below) to four: both pass
+/// through the curve at 0.01, so P̄ is continuous there — the same to 1e-9 of
+/// ∫|p| φ̄ a relative 1e-10 of μ either side, where z0 = 3, 0.3 and 0.03.
+#[test]
+fn the_law_is_continuous_in_tabor_at_a_hundredth() {
+    let value = |s: &wearopt::model::lennard_jones::rough::Shares| {
+        let (a, b) = (
+            s.noncontact[0] * (-s.noncontact_exponent).exp(),
+            s.elastic[0] * (-s.elastic_exponent).exp(),
+        );
+        (a + b, a.abs() + b.abs())
+    };
+    for z0 in [3.0f64, 0.3, 0.03] {
+        let ell = spacing(0.01) / z0;
+        let c_0 = 2.0 * ell.powf(-1.5);
+        let law = |m: f64| RoughLaw::new(c_0, 6.0, z0 * 0.01 / m).unwrap();
+        let (below, above) = (law(0.01 * (1.0 - 1e-10)), law(0.01 * (1.0 + 1e-10)));
+        assert_eq!((below.curves().count(), above.curves().count()), (6, 4));
+        for h in [-1.0, 0.5, 2.0] {
+            let ((a, size), (b, _)) = (value(&below.at(h)), value(&above.at(h)));
+            assert!(
+                (a - b).abs() <= 1e-9 * size,
+                "z0 {z0} h {h}: {a:e} vs {b:e}"
+            );
+        }
     }
 }
 

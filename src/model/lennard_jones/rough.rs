@@ -161,7 +161,8 @@ pub fn stand_in_pull_off_error(above: bool) -> f64 {
 pub const CUSP_TABOR: f64 = 0.6972;
 
 /// The Lagrange weights of the four nodes around μ, cubic in 1/μ (∝ ẑ0, the
-/// attraction's range in the sphere's units), all on μ's side of the cusp
+/// attraction's range in the sphere's units; six, quintic, above
+/// [`SPARSE_ABOVE`] and below μ = 0.01), all on μ's side of the cusp
 /// ([`CUSP_TABOR`]; just above it the cusp and three, the cusp's value the
 /// four single-valued curves' there), or one at a node;
 /// None outside the table. Each node comes with a second weight, cubic in
@@ -190,8 +191,14 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
         .iter()
         .position(|&k| c[k].tabor >= tabor)
         .unwrap_or(kept.len() - 1);
-    // Six curves where the solved grid is sparse, four elsewhere.
-    let sparse = tabor > SPARSE_ABOVE && tabor <= super::table::solved_range().1;
+    // Six curves where the solved grid is sparse, four elsewhere; and six
+    // below μ = 0.01, where ẑ0 and with it ℓ = ẑ0/z0 are large and four
+    // followed the integrals less well (at the midpoints μ = 1.6e-4 and 6.7e-4:
+    // 9.2e-5 at z0 = 3, 2.8e-6 at 1, 3.7e-8 at 0.3; six: 1.7e-6, 7.9e-9,
+    // 2.7e-10). The switch lies at the curve of μ = 0.01, which both stencils
+    // pass through: P̄ is continuous there.
+    let below = tabor < c[super::table::AT_HUNDREDTH].tabor;
+    let sparse = (tabor > SPARSE_ABOVE && tabor <= super::table::solved_range().1) || below;
     let width = if sparse { 6 } else { 4 };
     let first = above.saturating_sub(width / 2).min(kept.len() - width);
     // The solver's curves and the limit curves above them are kept apart, as
