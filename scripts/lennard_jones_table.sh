@@ -85,30 +85,32 @@ if [[ "${1:-}" == far ]]; then
     mv tests/data/lennard_jones_far.txt.new tests/data/lennard_jones_far.txt
     exit 0
 fi
+# `below NAME WHAT ARGS…`: tests/data/lennard_jones_NAME.txt, the curves the
+# generator writes for ARGS (an environment assignment may lead), headed by WHAT.
+below() {
+    local name=$1 what=$2 out=tests/data/lennard_jones_$1.txt
+    shift 2
+    {
+        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 1, extrapolated, $what:"
+        echo "# written by scripts/lennard_jones_table.sh ${name//_/-}; read by tests/all/lennard_jones_rough.rs"
+        env "$@" | grep -v '^#'
+    } > "$out.new"
+    mv "$out.new" "$out"
+}
 if [[ "${1:-}" == between-below ]]; then
     # Two curves at geometric midpoints below μ = 0.01, between the grid's
     # steps −88 and −87 (μ = 1.63e-4) and −58 and −57 (6.67e-4): what the
     # interpolation in μ there is measured against (about 2 minutes).
-    mus=$(python3 -c 'print(" ".join(repr(0.01 * 500 ** (i / 132)) for i in (-87.5, -57.5)))')
-    {
-        echo "# Lennard-Jones loading curves (docs/model.md §11), refinement 1, extrapolated, at two midpoints of the table's grid below μ = 0.01:"
-        echo "# written by scripts/lennard_jones_table.sh between-below; read by tests/all/lennard_jones_rough.rs"
-        # shellcheck disable=SC2086
-        "$bin" 1 $mus | grep -v '^#'
-    } > tests/data/lennard_jones_between_below.txt.new
-    mv tests/data/lennard_jones_between_below.txt.new tests/data/lennard_jones_between_below.txt
+    # shellcheck disable=SC2046
+    below between_below "at two midpoints of the table's grid below μ = 0.01" "$bin" 1 \
+        $(python3 -c 'print(" ".join(repr(0.01 * 500 ** (i / 132)) for i in (-87.5, -57.5)))')
     exit 0
 fi
 if [[ "${1:-}" == far-below ]]; then
     # The table's lowest curve (μ = 9.91e-5) with its contact part twice as
     # far, to δ̂ = 182 400 (32 ẑ0): what the tail there is measured against.
-    mu=$(python3 -c 'print(repr(0.01 * 500 ** (-98 / 132)))')
-    {
-        echo "# Lennard-Jones loading curve (docs/model.md §11), refinement 1, extrapolated, the table's lowest (μ = 9.91e-5) with its contact part to δ̂ = 182 400 (32 ẑ0):"
-        echo "# written by scripts/lennard_jones_table.sh far-below; read by tests/all/lennard_jones_rough.rs"
-        REACH=182400 "$bin" 1 "$mu" | grep -v '^#'
-    } > tests/data/lennard_jones_far_below.txt.new
-    mv tests/data/lennard_jones_far_below.txt.new tests/data/lennard_jones_far_below.txt
+    below far_below "the table's lowest (μ = 9.91e-5) with its contact part to δ̂ = 182 400 (32 ẑ0)" \
+        REACH=182400 "$bin" 1 "$(python3 -c 'print(repr(0.01 * 500 ** (-98 / 132)))')"
     exit 0
 fi
 if [[ "${1:-}" != check ]]; then

@@ -267,14 +267,10 @@ fn left_out_error(index: usize, c_0: f64, z0: f64) -> f64 {
         .into_iter()
         .map(|h| {
             let (a, b) = (exact.at(h), left_out.at(h));
-            let value = |s: &wearopt::model::lennard_jones::rough::Shares| {
-                share(s.noncontact[0], s.noncontact_exponent)
-                    + share(s.elastic[0], s.elastic_exponent)
-            };
             let scale = share(a.noncontact[0], a.noncontact_exponent)
                 .abs()
                 .max(share(a.elastic[0], a.elastic_exponent).abs());
-            (value(&a) - value(&b)).abs() / scale
+            (total_and_size(&a).0 - total_and_size(&b).0).abs() / scale
         })
         .fold(0.0, f64::max)
 }
@@ -838,18 +834,21 @@ fn the_tail_at_the_lowest_curve_is_what_the_reports_say() {
     }
 }
 
+/// P̄ from its two shares, and the size it is compared against (the sum of
+/// their magnitudes).
+fn total_and_size(s: &wearopt::model::lennard_jones::rough::Shares) -> (f64, f64) {
+    let (a, b) = (
+        s.noncontact[0] * (-s.noncontact_exponent).exp(),
+        s.elastic[0] * (-s.elastic_exponent).exp(),
+    );
+    (a + b, a.abs() + b.abs())
+}
+
 /// At μ = 0.01 the stencil changes from six curves (below) to four: both pass
 /// through the curve at 0.01, so P̄ is continuous there — the same to 1e-9 of
 /// ∫|p| φ̄ a relative 1e-10 of μ either side, where z0 = 3, 0.3 and 0.03.
 #[test]
 fn the_law_is_continuous_in_tabor_at_a_hundredth() {
-    let value = |s: &wearopt::model::lennard_jones::rough::Shares| {
-        let (a, b) = (
-            s.noncontact[0] * (-s.noncontact_exponent).exp(),
-            s.elastic[0] * (-s.elastic_exponent).exp(),
-        );
-        (a + b, a.abs() + b.abs())
-    };
     for z0 in [3.0f64, 0.3, 0.03] {
         let ell = spacing(0.01) / z0;
         let c_0 = 2.0 * ell.powf(-1.5);
@@ -857,7 +856,7 @@ fn the_law_is_continuous_in_tabor_at_a_hundredth() {
         let (below, above) = (law(0.01 * (1.0 - 1e-10)), law(0.01 * (1.0 + 1e-10)));
         assert_eq!((below.curves().count(), above.curves().count()), (6, 4));
         for h in [-1.0, 0.5, 2.0] {
-            let ((a, size), (b, _)) = (value(&below.at(h)), value(&above.at(h)));
+            let ((a, size), (b, _)) = (total_and_size(&below.at(h)), total_and_size(&above.at(h)));
             assert!(
                 (a - b).abs() <= 1e-9 * size,
                 "z0 {z0} h {h}: {a:e} vs {b:e}"
@@ -876,13 +875,6 @@ fn the_law_is_continuous_in_tabor_at_a_hundredth() {
 #[test]
 fn the_law_is_continuous_in_tabor_across_the_cusp() {
     use wearopt::model::lennard_jones::rough::CUSP_TABOR;
-    let value = |s: &wearopt::model::lennard_jones::rough::Shares| {
-        let (a, b) = (
-            s.noncontact[0] * (-s.noncontact_exponent).exp(),
-            s.elastic[0] * (-s.elastic_exponent).exp(),
-        );
-        (a + b, a.abs() + b.abs())
-    };
     let mut count = 0;
     for ell in [2.0f64, 10.0, 30.0] {
         let c_0 = 2.0 * ell.powf(-1.5);
@@ -892,7 +884,8 @@ fn the_law_is_continuous_in_tabor_across_the_cusp() {
             let (below, above) = (law(mu * (1.0 - 1e-10)), law(mu * (1.0 + 1e-10)));
             count += below.curves().count().max(above.curves().count());
             for h in [-1.0, 0.5, 2.0] {
-                let ((a, size), (b, _)) = (value(&below.at(h)), value(&above.at(h)));
+                let ((a, size), (b, _)) =
+                    (total_and_size(&below.at(h)), total_and_size(&above.at(h)));
                 assert!(
                     (a - b).abs() <= 1e-9 * size,
                     "ℓ {ell} μ {mu} h {h}: {a:e} vs {b:e}"

@@ -3,7 +3,9 @@
 //! against the closed-form limits at its ends.
 
 use wearopt::model::asperity_curve::lennard_jones_loading;
-use wearopt::model::lennard_jones::table::{lobatto, solved_curves, APPROACH_DEGREE, AT_HUNDREDTH};
+use wearopt::model::lennard_jones::table::{
+    lobatto, solved_curves, APPROACH_DEGREE, AT_HUNDREDTH, HUNDREDTH,
+};
 use wearopt::model::lennard_jones::SphereSettings;
 
 use crate::common::Scope;
@@ -22,7 +24,7 @@ fn the_table_covers_its_grid() {
     let c = solved_curves();
     assert!(c.len() >= 60, "{} curves", c.len());
     assert!((c[0].tabor / (0.01 * 500f64.powf(-98.0 / 132.0)) - 1.0).abs() < 1e-12);
-    assert!((c[AT_HUNDREDTH].tabor - 0.01).abs() < 1e-12);
+    assert_eq!(c[AT_HUNDREDTH].tabor, HUNDREDTH);
     assert!((c[c.len() - 1].tabor - 5.0 * 20f64.sqrt()).abs() < 1e-9);
     assert!(c.iter().any(|curve| curve.tabor == 5.0));
     for w in c.windows(2) {

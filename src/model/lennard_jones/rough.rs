@@ -197,7 +197,7 @@ fn stencil(tabor: f64, skip: Option<usize>) -> Option<Vec<(usize, f64, f64)>> {
     // 9.2e-5 at z0 = 3, 2.8e-6 at 1, 3.7e-8 at 0.3; six: 1.7e-6, 7.9e-9,
     // 2.7e-10). The switch lies at the curve of μ = 0.01, which both stencils
     // pass through: P̄ is continuous there.
-    let below = tabor < c[super::table::AT_HUNDREDTH].tabor;
+    let below = tabor < super::table::HUNDREDTH;
     let sparse = (tabor > SPARSE_ABOVE && tabor <= super::table::solved_range().1) || below;
     let width = if sparse { 6 } else { 4 };
     let first = above.saturating_sub(width / 2).min(kept.len() - width);

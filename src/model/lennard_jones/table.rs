@@ -1167,7 +1167,7 @@ pub fn contact_breaks(switch: f64, max_interference: f64, scale: f64) -> Vec<f64
 /// load, steep as (1 − δ̂/ẑ0)⁻⁸, bends over a share of ẑ0: the panels keep
 /// the share of ẑ0 that resolves it at μ = 0.01.
 pub fn breaks_scale(tabor: f64) -> f64 {
-    (0.01 / tabor).max(1.0)
+    (HUNDREDTH / tabor).max(1.0)
 }
 
 /// The interferences the contact part is sampled at: every panel's Lobatto
@@ -1568,8 +1568,13 @@ pub fn tabor_range() -> (f64, f64) {
     (c[0].tabor, c[c.len() - 1].tabor)
 }
 
-/// The index of the table's curve at μ = 0.01, where the grid of 49 curves a
-/// decade began until 2026-12-03; the 98 below it reach μ = 9.91e-5.
+/// μ = 0.01, where the grid of 49 curves a decade began until 2026-12-03.
+/// Below it the contact panels stretch with ẑ0 ([`breaks_scale`]) and the
+/// rough-surface law interpolates from six curves, not four.
+pub const HUNDREDTH: f64 = 0.01;
+
+/// The index of the table's curve at [`HUNDREDTH`]; the 98 below it reach
+/// μ = 9.91e-5.
 pub const AT_HUNDREDTH: usize = 98;
 
 /// The tabulated curve `index`'s [`Curve::pull_off`] (found once).
